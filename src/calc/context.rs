@@ -1,0 +1,95 @@
+//! What a calculation carries while it runs: its deadline, the effect decisions, the solver
+//! report and the warnings; and the ways it can fail.
+
+use std::collections::BTreeMap;
+use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+use serde::Serialize;
+use utoipa::ToSchema;
+
+use crate::effects::Decision;
+use crate::fidelity::SolverReport;
+
+/// A note on a result that is valid but deserves the user's attention (a model used outside
+/// the range its source gives, an assumed property).
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
+pub struct Warning {
+    /// Stable machine-readable code, e.g. `barus_above_70_mpa`.
+    #[schema(example = "barus_above_70_mpa")]
+    pub code: &'static str,
+    pub message: String,
+}
+
+/// Why a calculation did not produce a result. Each variant is, by construction, either the
+/// user's fault (4xx) or ours (5xx).
+#[derive(Debug, Clone, PartialEq, thiserror::Error)]
+pub enum CalcError {
+    /// The input is valid field by field but describes an impossible or out-of-model case (422).
+    #[error("{message}")]
+    Impossible { pointer: String, message: String },
+    /// An iteration hit its cap without converging (422, with its residual).
+    #[error("{method} did not converge in {iterations} iterations (residual {residual:e})")]
+    NotConverged { method: &'static str, iterations: u32, residual: f64 },
+    /// The deadline passed or the request was cancelled (504).
+    #[error("deadline exceeded")]
+    DeadlineExceeded,
+    /// A bug: something that must not happen did (500; the detail is logged, not sent).
+    #[error("internal error: {0}")]
+    Internal(String),
+}
+
+impl CalcError {
+    pub fn impossible(pointer: &str, message: impl Into<String>) -> Self {
+        CalcError::Impossible { pointer: pointer.to_owned(), message: message.into() }
+    }
+}
+
+/// The running calculation's surroundings.
+#[derive(Debug)]
+pub struct Context {
+    deadline: Instant,
+    cancelled: Arc<AtomicBool>,
+    pub(crate) effects: BTreeMap<&'static str, Decision>,
+    pub(crate) warnings: Vec<Warning>,
+    pub(crate) report: Option<SolverReport>,
+}
+
+impl Context {
+    /// A context that stops at `deadline` or when `cancelled` is set by the caller.
+    pub fn new(deadline: Instant, cancelled: Arc<AtomicBool>) -> Self {
+        Context {
+            deadline,
+            cancelled,
+            effects: BTreeMap::new(),
+            warnings: Vec::new(),
+            report: None,
+        }
+    }
+
+    /// Long loops call this every few iterations so a late or cancelled request stops computing.
+    pub fn check_deadline(&self) -> Result<(), CalcError> {
+        if self.cancelled.load(Ordering::Relaxed) || Instant::now() >= self.deadline {
+            Err(CalcError::DeadlineExceeded)
+        } else {
+            Ok(())
+        }
+    }
+
+    /// Record the decision on one effect.
+    pub fn decide(&mut self, effect: &'static str, decision: Decision) {
+        self.effects.insert(effect, decision);
+    }
+
+    pub fn warn(&mut self, code: &'static str, message: impl Into<String>) {
+        if !self.warnings.iter().any(|w| w.code == code) {
+            self.warnings.push(Warning { code, message: message.into() });
+        }
+    }
+
+    /// Set the solver report (its `elapsed_ms` is filled in by the caller).
+    pub fn report(&mut self, report: SolverReport) {
+        self.report = Some(report);
+    }
+}

@@ -1,0 +1,99 @@
+//! Numbers with an invariant, parsed once at the door. Code holding one never re-checks it:
+//! NaN, ±∞ and out-of-range values become a 422 naming the field before any physics runs.
+//! In the OpenAPI each field using them says `value_type = f64` with its own range and example.
+
+use serde::Deserialize;
+
+/// A finite number > 0.
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct Positive(f64);
+
+impl Positive {
+    pub fn get(self) -> f64 {
+        self.0
+    }
+}
+
+impl TryFrom<f64> for Positive {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && v > 0.0 {
+            Ok(Positive(v))
+        } else {
+            Err(format!("must be a finite number > 0, got {v}"))
+        }
+    }
+}
+
+/// A finite number ≥ 0.
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct NonNegative(f64);
+
+impl NonNegative {
+    pub fn get(self) -> f64 {
+        self.0
+    }
+}
+
+impl TryFrom<f64> for NonNegative {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && v >= 0.0 {
+            Ok(NonNegative(v))
+        } else {
+            Err(format!("must be a finite number >= 0, got {v}"))
+        }
+    }
+}
+
+/// A temperature in °C, finite and above absolute zero; at most 1000 °C (no lubricant model here
+/// means anything beyond).
+#[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct Celsius(f64);
+
+impl Celsius {
+    pub const MIN: f64 = -273.0;
+    pub const MAX: f64 = 1000.0;
+
+    pub fn get(self) -> f64 {
+        self.0
+    }
+    /// Absolute temperature in K.
+    pub fn kelvin(self) -> f64 {
+        self.0 + 273.15
+    }
+}
+
+impl TryFrom<f64> for Celsius {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && (Self::MIN..=Self::MAX).contains(&v) {
+            Ok(Celsius(v))
+        } else {
+            Err(format!("must be a temperature in °C within [{}, {}], got {v}", Self::MIN, Self::MAX))
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn positive_refuses_zero_negative_and_non_finite() {
+        for bad in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(Positive::try_from(bad).is_err(), "{bad}");
+        }
+        assert_eq!(Positive::try_from(2.5).unwrap().get(), 2.5);
+    }
+
+    #[test]
+    fn celsius_is_bounded() {
+        assert!(Celsius::try_from(-300.0).is_err());
+        assert!(Celsius::try_from(1e6).is_err());
+        assert!((Celsius::try_from(40.0).unwrap().kelvin() - 313.15).abs() < 1e-12);
+    }
+}

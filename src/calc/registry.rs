@@ -1,0 +1,265 @@
+//! The list of calculations and the one path every request takes through them:
+//! bytes → parsed input → validated case → physics → envelope bytes.
+
+use std::borrow::Cow;
+use std::collections::BTreeMap;
+use std::sync::atomic::AtomicBool;
+use std::sync::Arc;
+use std::time::Instant;
+
+use serde::Serialize;
+use utoipa::openapi::{RefOr, Schema};
+use utoipa::{PartialSchema, ToSchema};
+
+use super::{lubricant, CalcError, Calculation, Context, Validate, Warning};
+use crate::effects::Decision;
+use crate::fidelity::{Level, SolverReport};
+
+/// Every calculation the service offers. Adding a room is one line here.
+pub static REGISTRY: &[Entry] = &[
+    Entry::of::<lubricant::viscosity::Viscosity>(),
+    Entry::of::<lubricant::viscosity_index::ViscosityIndex>(),
+    Entry::of::<lubricant::properties::Properties>(),
+];
+
+/// The calculation registered at `path`.
+pub fn find(path: &str) -> Option<&'static Entry> {
+    REGISTRY.iter().find(|e| e.path == path)
+}
+
+/// A type-erased calculation: what the door, the listing and the CLI need of it.
+pub struct Entry {
+    pub path: &'static str,
+    pub summary: &'static str,
+    pub description: &'static str,
+    pub fidelity: &'static [Level],
+    pub effects: &'static [&'static str],
+    pub example: &'static str,
+    /// Parse, validate and run one request body; the envelope comes back serialised.
+    pub execute: fn(&[u8], Instant, Arc<AtomicBool>) -> Result<Executed, Failure>,
+    /// Names of the input and output schemas.
+    pub schema_names: fn() -> (Cow<'static, str>, Cow<'static, str>),
+    /// Push the input and output schemas and everything they reference.
+    pub schemas: fn(&mut Vec<(String, RefOr<Schema>)>),
+}
+
+impl Entry {
+    pub const fn of<C: Calculation>() -> Entry {
+        Entry {
+            path: C::PATH,
+            summary: C::SUMMARY,
+            description: C::DESCRIPTION,
+            fidelity: C::FIDELITY,
+            effects: C::EFFECTS,
+            example: C::EXAMPLE,
+            execute: execute::<C>,
+            schema_names: || (C::Input::name(), C::Output::name()),
+            schemas: |out| {
+                out.push((C::Input::name().into_owned(), C::Input::schema()));
+                C::Input::schemas(out);
+                out.push((C::Output::name().into_owned(), C::Output::schema()));
+                C::Output::schemas(out);
+            },
+        }
+    }
+}
+
+/// A finished calculation: the envelope as JSON, and the solver time for the metrics.
+#[derive(Debug)]
+pub struct Executed {
+    pub body: Vec<u8>,
+    pub solver_ms: f64,
+}
+
+/// One invalid field: a JSON pointer (RFC 6901) into the request and what is wrong with it.
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
+pub struct FieldError {
+    #[schema(example = "/lubricant/viscosity_pa_s")]
+    pub pointer: String,
+    #[schema(example = "must be a finite number > 0")]
+    pub message: String,
+}
+
+impl FieldError {
+    pub fn new(pointer: impl Into<String>, message: impl Into<String>) -> Self {
+        FieldError { pointer: pointer.into(), message: message.into() }
+    }
+}
+
+/// Why a request produced no result.
+#[derive(Debug, Clone, PartialEq)]
+pub enum Failure {
+    /// The body is not JSON (400).
+    Unreadable(String),
+    /// The JSON does not match the input schema or breaks a rule (422).
+    Invalid(Vec<FieldError>),
+    /// The calculation refused or failed.
+    Calc(CalcError),
+}
+
+/// The response body of every calculation.
+#[derive(Serialize)]
+pub struct Envelope<'a, T> {
+    pub result: &'a T,
+    pub effects: &'a BTreeMap<&'static str, Decision>,
+    pub solver: &'a SolverReport,
+    pub warnings: &'a [Warning],
+}
+
+/// The one path of every calculation. Runs synchronously: the door calls it on the blocking pool.
+pub fn execute<C: Calculation>(
+    body: &[u8],
+    deadline: Instant,
+    cancelled: Arc<AtomicBool>,
+) -> Result<Executed, Failure> {
+    let input: C::Input = parse(body)?;
+    let case = input.validate().map_err(Failure::Invalid)?;
+    let mut ctx = Context::new(deadline, cancelled);
+    let started = Instant::now();
+    let output = C::run(case, &mut ctx).map_err(Failure::Calc)?;
+    let solver_ms = started.elapsed().as_secs_f64() * 1e3;
+    let mut report = ctx.report.take().unwrap_or_else(|| SolverReport::closed_form("closed_form"));
+    report.elapsed_ms = solver_ms;
+    let envelope = Envelope {
+        result: &output,
+        effects: &ctx.effects,
+        solver: &report,
+        warnings: &ctx.warnings,
+    };
+    let body = finite_json::to_vec(&envelope).map_err(Failure::Calc)?;
+    Ok(Executed { body, solver_ms })
+}
+
+/// Deserialize with the path of the first error kept, so a 422 names its field.
+fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
+    use serde_json::error::Category;
+    let mut de = serde_json::Deserializer::from_slice(body);
+    let value: Result<T, _> = serde_path_to_error::deserialize(&mut de);
+    if value.is_ok() {
+        if let Err(e) = de.end() {
+            return Err(Failure::Unreadable(format!("request body is not valid JSON: {e}")));
+        }
+    }
+    match value {
+        Ok(v) => Ok(v),
+        Err(err) => {
+            let inner = err.inner();
+            match inner.classify() {
+                Category::Data => {
+                    let message = strip_location(&inner.to_string());
+                    let pointer = pointer_of(err.path(), &message);
+                    Err(Failure::Invalid(vec![FieldError { pointer, message }]))
+                }
+                _ => Err(Failure::Unreadable(format!("request body is not valid JSON: {inner}"))),
+            }
+        }
+    }
+}
+
+/// serde_json appends " at line L column C"; the pointer says where, so drop it.
+fn strip_location(message: &str) -> String {
+    match message.rfind(" at line ") {
+        Some(i) => message[..i].to_owned(),
+        None => message.to_owned(),
+    }
+}
+
+/// A JSON pointer from serde's path; an unknown or missing field points at the field itself.
+fn pointer_of(path: &serde_path_to_error::Path, message: &str) -> String {
+    use serde_path_to_error::Segment;
+    let mut pointer = String::new();
+    for segment in path.iter() {
+        match segment {
+            Segment::Seq { index } => pointer.push_str(&format!("/{index}")),
+            Segment::Map { key } => push_key(&mut pointer, key),
+            Segment::Enum { variant } => push_key(&mut pointer, variant),
+            Segment::Unknown => {}
+        }
+    }
+    for prefix in ["unknown field `", "missing field `"] {
+        if let Some(rest) = message.strip_prefix(prefix) {
+            if let Some(end) = rest.find('`') {
+                push_key(&mut pointer, &rest[..end]);
+            }
+        }
+    }
+    pointer
+}
+
+fn push_key(pointer: &mut String, key: &str) {
+    pointer.push('/');
+    pointer.push_str(&key.replace('~', "~0").replace('/', "~1"));
+}
+
+/// JSON output that refuses non-finite numbers. serde_json writes NaN and ±∞ as `null`;
+/// responses never contain `null` (absent values are omitted), so a `null` reaching the
+/// formatter can only be a non-finite number, and becomes an internal error instead of a body.
+pub mod finite_json {
+    use std::io;
+
+    use serde::Serialize;
+    use serde_json::ser::{CompactFormatter, Formatter};
+
+    use crate::calc::CalcError;
+
+    struct NoNull;
+
+    impl Formatter for NoNull {
+        fn write_null<W: ?Sized + io::Write>(&mut self, _: &mut W) -> io::Result<()> {
+            Err(io::Error::other("non-finite number (or null) in a response"))
+        }
+        fn write_f64<W: ?Sized + io::Write>(&mut self, w: &mut W, value: f64) -> io::Result<()> {
+            CompactFormatter.write_f64(w, value)
+        }
+    }
+
+    /// Serialise `value`, failing on any NaN, infinity or null inside it.
+    pub fn to_vec<T: Serialize + ?Sized>(value: &T) -> Result<Vec<u8>, CalcError> {
+        let mut out = Vec::with_capacity(256);
+        let mut ser = serde_json::Serializer::with_formatter(&mut out, NoNull);
+        value
+            .serialize(&mut ser)
+            .map_err(|e| CalcError::Internal(format!("response serialisation: {e}")))?;
+        Ok(out)
+    }
+
+    #[cfg(test)]
+    mod tests {
+        use super::*;
+
+        #[test]
+        fn finite_numbers_pass() {
+            assert_eq!(to_vec(&[1.5, -2.0]).unwrap(), b"[1.5,-2.0]");
+        }
+
+        #[test]
+        fn nan_infinity_and_null_are_refused() {
+            assert!(to_vec(&[f64::NAN]).is_err());
+            assert!(to_vec(&[f64::INFINITY]).is_err());
+            assert!(to_vec(&[f64::NEG_INFINITY]).is_err());
+            assert!(to_vec(&None::<f64>).is_err());
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_path_is_unique_and_versioned() {
+        for (i, e) in REGISTRY.iter().enumerate() {
+            assert!(e.path.starts_with("/v1/"), "{}", e.path);
+            assert!(REGISTRY[i + 1..].iter().all(|o| o.path != e.path), "{}", e.path);
+        }
+    }
+
+    #[test]
+    fn every_example_runs() {
+        for e in REGISTRY {
+            let far = Instant::now() + std::time::Duration::from_secs(10);
+            let out = (e.execute)(e.example.as_bytes(), far, Arc::default());
+            assert!(out.is_ok(), "{}: {:?}", e.path, out.err());
+        }
+    }
+}

@@ -1,0 +1,90 @@
+//! The service's own endpoints: health, readiness, metrics, the calculation listing, and the
+//! problem answers for unknown routes and methods.
+
+use std::sync::atomic::Ordering;
+
+use axum::extract::State;
+use axum::http::{header, StatusCode, Uri};
+use axum::response::{IntoResponse, Response};
+use axum::Json;
+use serde::Serialize;
+use utoipa::ToSchema;
+
+use super::{AppState, Problem};
+use crate::calc::REGISTRY;
+use crate::fidelity::Level;
+
+/// `GET /health`: the process is up.
+pub async fn health() -> Json<serde_json::Value> {
+    Json(serde_json::json!({ "status": "ok" }))
+}
+
+/// `GET /ready`: the replica takes traffic (503 once shutdown has begun).
+pub async fn ready(State(state): State<AppState>) -> Response {
+    if state.ready.load(Ordering::Relaxed) {
+        Json(serde_json::json!({ "status": "ready" })).into_response()
+    } else {
+        Problem::new(StatusCode::SERVICE_UNAVAILABLE, "shutting-down", "Shutting down", "this replica is draining").into_response()
+    }
+}
+
+/// `GET /metrics`: Prometheus text format.
+pub async fn metrics(State(state): State<AppState>) -> Response {
+    ([(header::CONTENT_TYPE, "text/plain; version=0.0.4")], state.metrics.render()).into_response()
+}
+
+/// One calculation in the listing.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct CalculationInfo {
+    #[schema(example = "/v1/lubricants/viscosity")]
+    pub path: &'static str,
+    #[schema(example = "POST")]
+    pub method: &'static str,
+    pub summary: &'static str,
+    pub fidelity_levels: Vec<Level>,
+    /// Effects the calculation understands, each `auto`/`on`/`off` under `effects` in the request.
+    pub effects: Vec<&'static str>,
+    /// A request body that works as pasted.
+    #[schema(value_type = Object)]
+    pub example: serde_json::Value,
+}
+
+/// The listing.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct CalculationList {
+    pub calculations: Vec<CalculationInfo>,
+}
+
+pub fn calculation_list() -> CalculationList {
+    CalculationList {
+        calculations: REGISTRY
+            .iter()
+            .map(|e| CalculationInfo {
+                path: e.path,
+                method: "POST",
+                summary: e.summary,
+                fidelity_levels: e.fidelity.to_vec(),
+                effects: e.effects.to_vec(),
+                example: serde_json::from_str(e.example).unwrap_or_default(),
+            })
+            .collect(),
+    }
+}
+
+/// `GET /v1/calculations`.
+pub async fn calculations() -> Json<CalculationList> {
+    Json(calculation_list())
+}
+
+pub async fn not_found(uri: Uri) -> Problem {
+    Problem::not_found(uri.path())
+}
+
+pub async fn method_not_allowed(uri: Uri) -> Problem {
+    Problem::new(
+        StatusCode::METHOD_NOT_ALLOWED,
+        "method-not-allowed",
+        "Method not allowed",
+        format!("{} does not take this method; calculations take POST with a JSON body", uri.path()),
+    )
+}

@@ -1,0 +1,136 @@
+//! The door: routes, middleware and the one generic handler every calculation goes through.
+//! Thin glue: parsing, validation and physics live in `crate::calc`.
+
+mod calculate;
+mod meta;
+pub mod metrics;
+pub mod openapi;
+mod problem;
+
+use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::Arc;
+use std::time::Instant;
+
+use axum::extract::{DefaultBodyLimit, MatchedPath, Request, State};
+use axum::http::{HeaderValue, StatusCode};
+use axum::middleware::{self, Next};
+use axum::response::{IntoResponse, Response};
+use axum::routing::{get, post};
+use axum::Router;
+use tokio::sync::Semaphore;
+use tower::ServiceBuilder;
+use tower_http::catch_panic::CatchPanicLayer;
+use tower_http::request_id::{MakeRequestId, PropagateRequestIdLayer, RequestId, SetRequestIdLayer};
+use tower_http::trace::TraceLayer;
+
+pub use problem::{InternalCause, Problem};
+
+use crate::calc::REGISTRY;
+use crate::config::Config;
+use metrics::Metrics;
+
+/// Shared state of one server.
+#[derive(Clone)]
+pub struct AppState {
+    pub config: Arc<Config>,
+    pub metrics: Arc<Metrics>,
+    /// Calculations running at once; a request that finds none free is shed with 503.
+    pub permits: Arc<Semaphore>,
+    /// False once shutdown has begun: `/ready` then answers 503 so balancers drain this replica.
+    pub ready: Arc<AtomicBool>,
+}
+
+impl AppState {
+    pub fn new(config: Config) -> AppState {
+        AppState {
+            permits: Arc::new(Semaphore::new(config.max_concurrent)),
+            config: Arc::new(config),
+            metrics: Arc::new(Metrics::default()),
+            ready: Arc::new(AtomicBool::new(true)),
+        }
+    }
+}
+
+/// The whole service for `config`.
+pub fn router(config: Config) -> Router {
+    router_with_state(AppState::new(config))
+}
+
+/// The whole service around an existing state (the binary keeps a handle to flip `ready`).
+pub fn router_with_state(state: AppState) -> Router {
+    let mut app = Router::new()
+        .route("/health", get(meta::health))
+        .route("/ready", get(meta::ready))
+        .route("/metrics", get(meta::metrics))
+        .route("/v1/calculations", get(meta::calculations));
+    for entry in REGISTRY {
+        app = app.route(
+            entry.path,
+            post(move |state, headers, body| calculate::run(entry, state, headers, body)),
+        );
+    }
+    let app = app
+        .merge(openapi::docs_router())
+        .fallback(meta::not_found)
+        .method_not_allowed_fallback(meta::method_not_allowed);
+
+    let max_body = state.config.max_body_bytes;
+    // Outermost first: the id exists before the span that logs it; panics become a problem
+    // response before the observer counts it; the body limit applies to every extractor.
+    let layers = ServiceBuilder::new()
+        .layer(SetRequestIdLayer::x_request_id(Counter::default()))
+        .layer(TraceLayer::new_for_http().make_span_with(|req: &Request| {
+            let id = req.headers().get("x-request-id").and_then(|v| v.to_str().ok()).unwrap_or("-");
+            tracing::info_span!("request", id = %id, method = %req.method(), uri = %req.uri())
+        }))
+        .layer(PropagateRequestIdLayer::x_request_id())
+        .layer(middleware::from_fn_with_state(state.clone(), observe))
+        .layer(CatchPanicLayer::custom(|_| Problem::internal().into_response()))
+        .layer(DefaultBodyLimit::max(max_body));
+    app.layer(layers).with_state(state)
+}
+
+/// Request ids: a process-unique counter, prefixed with the start time so restarts differ.
+#[derive(Clone)]
+struct Counter {
+    prefix: u64,
+    next: Arc<AtomicU64>,
+}
+
+impl Default for Counter {
+    fn default() -> Self {
+        let prefix = std::time::SystemTime::now()
+            .duration_since(std::time::UNIX_EPOCH)
+            .map_or(0, |d| d.as_secs() & 0xff_ffff);
+        Counter { prefix, next: Arc::new(AtomicU64::new(1)) }
+    }
+}
+
+impl MakeRequestId for Counter {
+    fn make_request_id<B>(&mut self, _: &axum::http::Request<B>) -> Option<RequestId> {
+        let n = self.next.fetch_add(1, Ordering::Relaxed);
+        HeaderValue::from_str(&format!("{:06x}-{n:08x}", self.prefix)).ok().map(RequestId::new)
+    }
+}
+
+/// Solver time of a calculation response, for the metrics (a response extension).
+#[derive(Debug, Clone, Copy)]
+pub struct SolverSeconds(pub f64);
+
+/// Count every response, time it, and log the internal cause of any 500.
+async fn observe(State(state): State<AppState>, req: Request, next: Next) -> Response {
+    let route = req
+        .extensions()
+        .get::<MatchedPath>()
+        .map_or_else(|| "unmatched".to_owned(), |p| p.as_str().to_owned());
+    let started = Instant::now();
+    let res = next.run(req).await;
+    let status = res.status();
+    if status == StatusCode::INTERNAL_SERVER_ERROR {
+        let cause = res.extensions().get::<InternalCause>().map_or("panic or unknown", |c| c.0.as_str());
+        tracing::error!(route = %route, cause = %cause, "internal error");
+    }
+    let solver = res.extensions().get::<SolverSeconds>().map(|s| s.0);
+    state.metrics.record(&route, status.as_u16(), started.elapsed().as_secs_f64(), solver);
+    res
+}

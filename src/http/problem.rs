@@ -1,0 +1,121 @@
+//! Errors as `application/problem+json` (RFC 9457). One `match` maps every failure to its status;
+//! a 500 names nothing internal (the cause rides along as a response extension and is logged).
+
+use axum::http::{header, HeaderValue, StatusCode};
+use axum::response::{IntoResponse, Response};
+use serde::Serialize;
+use utoipa::ToSchema;
+
+use crate::calc::{CalcError, Failure, FieldError};
+
+/// A problem report (RFC 9457).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct Problem {
+    /// A URI naming the kind of problem, e.g. `https://stribeck.dev/problems/invalid-input`.
+    #[serde(rename = "type")]
+    pub kind: String,
+    pub title: String,
+    pub status: u16,
+    pub detail: String,
+    /// For invalid input: every invalid field with its JSON pointer.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub errors: Vec<FieldError>,
+    /// For a solver that did not converge: its final residual.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub residual: Option<f64>,
+    /// For 503: seconds to wait before retrying.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub retry_after_s: Option<u32>,
+}
+
+/// The cause of a 500, for the logging middleware; never sent to the client.
+#[derive(Debug, Clone)]
+pub struct InternalCause(pub String);
+
+impl Problem {
+    pub fn new(status: StatusCode, slug: &str, title: &str, detail: impl Into<String>) -> Problem {
+        Problem {
+            kind: format!("https://stribeck.dev/problems/{slug}"),
+            title: title.to_owned(),
+            status: status.as_u16(),
+            detail: detail.into(),
+            errors: Vec::new(),
+            residual: None,
+            retry_after_s: None,
+        }
+    }
+
+    pub fn not_found(path: &str) -> Problem {
+        Problem::new(StatusCode::NOT_FOUND, "not-found", "Not found", format!("no resource at {path}; GET /v1/calculations lists them"))
+    }
+
+    pub fn overloaded() -> Problem {
+        let mut p = Problem::new(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "overloaded",
+            "Service overloaded",
+            "too many calculations are running; retry after the given delay",
+        );
+        p.retry_after_s = Some(1);
+        p
+    }
+
+    pub fn internal() -> Problem {
+        Problem::new(StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal error", "the calculation failed on our side; it has been logged")
+    }
+
+    /// The problem for a failed calculation, and the internal cause to log for a 500.
+    pub fn from_failure(failure: Failure) -> (Problem, Option<String>) {
+        match failure {
+            Failure::Unreadable(detail) => {
+                (Problem::new(StatusCode::BAD_REQUEST, "unreadable", "Unreadable request body", detail), None)
+            }
+            Failure::Invalid(errors) => {
+                let detail = errors
+                    .iter()
+                    .map(|e| format!("{}: {}", if e.pointer.is_empty() { "(body)" } else { &e.pointer }, e.message))
+                    .collect::<Vec<_>>()
+                    .join("; ");
+                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "invalid-input", "Invalid input", detail);
+                p.errors = errors;
+                (p, None)
+            }
+            Failure::Calc(CalcError::Impossible { pointer, message }) => {
+                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "outside-model", "Physically impossible or outside the model", message.clone());
+                p.errors = vec![FieldError { pointer, message }];
+                (p, None)
+            }
+            Failure::Calc(e @ CalcError::NotConverged { residual, .. }) => {
+                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "not-converged", "Solver did not converge", e.to_string());
+                p.residual = Some(residual).filter(|r| r.is_finite());
+                (p, None)
+            }
+            Failure::Calc(CalcError::DeadlineExceeded) => (Problem::deadline(), None),
+            Failure::Calc(CalcError::Internal(cause)) => (Problem::internal(), Some(cause)),
+        }
+    }
+
+    pub fn deadline() -> Problem {
+        Problem::new(
+            StatusCode::GATEWAY_TIMEOUT,
+            "deadline-exceeded",
+            "Deadline exceeded",
+            "the calculation did not finish within the server's deadline and was stopped; lower the fidelity or the size of the request",
+        )
+    }
+}
+
+impl IntoResponse for Problem {
+    fn into_response(self) -> Response {
+        let status = StatusCode::from_u16(self.status).unwrap_or(StatusCode::INTERNAL_SERVER_ERROR);
+        let retry = self.retry_after_s;
+        let body = serde_json::to_vec(&self).unwrap_or_else(|_| b"{}".to_vec());
+        let mut res = (status, body).into_response();
+        res.headers_mut()
+            .insert(header::CONTENT_TYPE, HeaderValue::from_static("application/problem+json"));
+        if let Some(s) = retry {
+            res.headers_mut().insert(header::RETRY_AFTER, HeaderValue::from(s));
+        }
+        res
+    }
+}

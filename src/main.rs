@@ -1,0 +1,168 @@
+//! The `stribeck` binary: glue around the library.
+//!
+//! - `stribeck` / `stribeck serve`: the HTTP service (configured by `STRIBECK_*`).
+//! - `stribeck run <path> < request.json`: one calculation, envelope on stdout, no server.
+//! - `stribeck openapi`: the OpenAPI document (what `openapi/openapi.json` holds).
+
+use std::future::IntoFuture;
+use std::io::Read;
+use std::process::ExitCode;
+use std::sync::atomic::Ordering;
+use std::time::{Duration, Instant};
+
+use clap::{Parser, Subcommand};
+use stribeck::calc::{self, Failure};
+use stribeck::config::Config;
+use stribeck::http::{self, AppState, Problem};
+
+#[derive(Parser)]
+#[command(name = "stribeck", version, about = "Bearing design and lubrication engineering over HTTP")]
+struct Cli {
+    #[command(subcommand)]
+    command: Option<Command>,
+}
+
+#[derive(Subcommand)]
+enum Command {
+    /// Serve the API (the default).
+    Serve,
+    /// Run one calculation on a JSON request from stdin and print the envelope.
+    Run {
+        /// The calculation's path, e.g. /v1/lubricants/viscosity.
+        path: String,
+    },
+    /// Print the OpenAPI document.
+    Openapi,
+    /// List the calculations.
+    List,
+}
+
+fn main() -> ExitCode {
+    let cli = Cli::parse();
+    let config = match Config::from_env() {
+        Ok(c) => c,
+        Err(e) => {
+            eprintln!("stribeck: configuration: {e}");
+            return ExitCode::from(2);
+        }
+    };
+    match cli.command.unwrap_or(Command::Serve) {
+        Command::Serve => serve(config),
+        Command::Run { path } => run_one(&path, &config),
+        Command::Openapi => {
+            print!("{}", http::openapi::document_json());
+            ExitCode::SUCCESS
+        }
+        Command::List => {
+            for e in calc::REGISTRY {
+                println!("POST {:40} {}", e.path, e.summary);
+            }
+            ExitCode::SUCCESS
+        }
+    }
+}
+
+/// Exit codes of `stribeck run`: 0 result, 2 usage, 3 invalid input, 4 not computable, 5 internal.
+fn run_one(path: &str, config: &Config) -> ExitCode {
+    let Some(entry) = calc::find(path) else {
+        eprintln!("stribeck: no calculation at {path}; `stribeck list` shows them");
+        return ExitCode::from(2);
+    };
+    let mut body = Vec::new();
+    if let Err(e) = std::io::stdin().read_to_end(&mut body) {
+        eprintln!("stribeck: reading stdin: {e}");
+        return ExitCode::from(2);
+    }
+    match (entry.execute)(&body, Instant::now() + config.deadline, Default::default()) {
+        Ok(done) => {
+            println!("{}", String::from_utf8_lossy(&done.body));
+            ExitCode::SUCCESS
+        }
+        Err(failure) => {
+            let code = match &failure {
+                Failure::Unreadable(_) | Failure::Invalid(_) => 3,
+                Failure::Calc(calc::CalcError::Internal(_)) => 5,
+                Failure::Calc(_) => 4,
+            };
+            let (problem, cause) = Problem::from_failure(failure);
+            if let Some(cause) = cause {
+                eprintln!("stribeck: internal error: {cause}");
+            }
+            println!("{}", serde_json::to_string(&problem).unwrap_or_default());
+            ExitCode::from(code)
+        }
+    }
+}
+
+fn serve(config: Config) -> ExitCode {
+    stribeck::telemetry::init(config.log);
+    let runtime = tokio::runtime::Builder::new_multi_thread()
+        .enable_all()
+        .max_blocking_threads(config.workers)
+        .build();
+    let runtime = match runtime {
+        Ok(r) => r,
+        Err(e) => {
+            eprintln!("stribeck: starting the runtime: {e}");
+            return ExitCode::FAILURE;
+        }
+    };
+    match runtime.block_on(serve_async(config)) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            tracing::error!("{e}");
+            eprintln!("stribeck: {e}");
+            ExitCode::FAILURE
+        }
+    }
+}
+
+/// How long in-flight requests may take to drain after SIGINT/SIGTERM.
+const DRAIN: Duration = Duration::from_secs(30);
+
+async fn serve_async(config: Config) -> Result<(), String> {
+    let addr = config.addr;
+    let listener = tokio::net::TcpListener::bind(addr).await.map_err(|e| format!("binding {addr}: {e}"))?;
+    tracing::info!(%addr, docs = %format!("http://{addr}/docs"), "stribeck listening");
+    let state = AppState::new(config);
+    let ready = state.ready.clone();
+    let app = http::router_with_state(state);
+    let (stop_tx, stop_rx) = tokio::sync::oneshot::channel::<()>();
+    let server = axum::serve(listener, app).with_graceful_shutdown(async {
+        let _ = stop_rx.await;
+    });
+    let mut server = std::pin::pin!(server.into_future());
+    tokio::select! {
+        r = &mut server => return r.map_err(|e| e.to_string()),
+        _ = shutdown_signal() => {}
+    }
+    // Stop taking traffic, let in-flight requests finish, but never hang on them.
+    ready.store(false, Ordering::Relaxed);
+    tracing::info!("shutting down: draining for at most {DRAIN:?}");
+    let _ = stop_tx.send(());
+    match tokio::time::timeout(DRAIN, server).await {
+        Ok(r) => r.map_err(|e| e.to_string()),
+        Err(_) => {
+            tracing::warn!("drain took longer than {DRAIN:?}; exiting");
+            Ok(())
+        }
+    }
+}
+
+async fn shutdown_signal() {
+    let ctrl_c = async {
+        let _ = tokio::signal::ctrl_c().await;
+    };
+    #[cfg(unix)]
+    let term = async {
+        match tokio::signal::unix::signal(tokio::signal::unix::SignalKind::terminate()) {
+            Ok(mut s) => {
+                s.recv().await;
+            }
+            Err(_) => std::future::pending::<()>().await,
+        }
+    };
+    #[cfg(not(unix))]
+    let term = std::future::pending::<()>();
+    tokio::select! { _ = ctrl_c => {}, _ = term => {} }
+}

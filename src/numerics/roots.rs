@@ -1,0 +1,147 @@
+//! Bracketed root finding. Brent's method (inverse quadratic interpolation with bisection as a
+//! safeguard): it never leaves the bracket, so it converges whenever f changes sign on [a, b].
+
+/// When to stop: `x_tolerance` on the root (absolute), with an iteration cap that is never
+/// unbounded.
+#[derive(Debug, Clone, Copy)]
+pub struct Stopping {
+    pub x_tolerance: f64,
+    pub max_iterations: u32,
+}
+
+/// How a root search ended without a root.
+#[derive(Debug, Clone, PartialEq)]
+pub enum RootError {
+    /// f(a) and f(b) have the same sign: there is no root in the bracket to find.
+    NoSignChange { a: f64, fa: f64, b: f64, fb: f64 },
+    /// f returned NaN or ±∞ at x.
+    NonFinite { x: f64 },
+    /// The cap was reached; the last bracket width is the residual.
+    NotConverged { iterations: u32, width: f64 },
+}
+
+/// A root and the work it took.
+#[derive(Debug, Clone, Copy, PartialEq)]
+#[must_use]
+pub struct Root {
+    pub x: f64,
+    pub iterations: u32,
+}
+
+/// Find x in [a, b] with f(x) = 0, given f(a)·f(b) ≤ 0 (Brent 1973, *Algorithms for
+/// Minimization without Derivatives*, ch. 4).
+pub fn brent(
+    mut f: impl FnMut(f64) -> f64,
+    a: f64,
+    b: f64,
+    stop: Stopping,
+) -> Result<Root, RootError> {
+    let (mut a, mut b) = (a, b);
+    let (mut fa, mut fb) = (f(a), f(b));
+    for (x, fx) in [(a, fa), (b, fb)] {
+        if !fx.is_finite() {
+            return Err(RootError::NonFinite { x });
+        }
+    }
+    if fa == 0.0 {
+        return Ok(Root { x: a, iterations: 0 });
+    }
+    if fb == 0.0 {
+        return Ok(Root { x: b, iterations: 0 });
+    }
+    if fa.signum() == fb.signum() {
+        return Err(RootError::NoSignChange { a, fa, b, fb });
+    }
+    let (mut c, mut fc) = (a, fa);
+    let mut d = b - a;
+    let mut e = d;
+    for iteration in 1..=stop.max_iterations {
+        if fb.signum() == fc.signum() {
+            c = a;
+            fc = fa;
+            d = b - a;
+            e = d;
+        }
+        if fc.abs() < fb.abs() {
+            (a, b, c) = (b, c, b);
+            (fa, fb, fc) = (fb, fc, fb);
+        }
+        let tol = 2.0 * f64::EPSILON * b.abs() + 0.5 * stop.x_tolerance;
+        let m = 0.5 * (c - b);
+        if m.abs() <= tol || fb == 0.0 {
+            return Ok(Root { x: b, iterations: iteration });
+        }
+        if e.abs() >= tol && fa.abs() > fb.abs() {
+            let s = fb / fa;
+            let (mut p, mut q) = if a == c {
+                (2.0 * m * s, 1.0 - s)
+            } else {
+                let q = fa / fc;
+                let r = fb / fc;
+                (
+                    s * (2.0 * m * q * (q - r) - (b - a) * (r - 1.0)),
+                    (q - 1.0) * (r - 1.0) * (s - 1.0),
+                )
+            };
+            if p > 0.0 {
+                q = -q;
+            } else {
+                p = -p;
+            }
+            if 2.0 * p < (3.0 * m * q - (tol * q).abs()).min((e * q).abs()) {
+                e = d;
+                d = p / q;
+            } else {
+                d = m;
+                e = m;
+            }
+        } else {
+            d = m;
+            e = m;
+        }
+        a = b;
+        fa = fb;
+        b += if d.abs() > tol { d } else { tol.copysign(m) };
+        fb = f(b);
+        if !fb.is_finite() {
+            return Err(RootError::NonFinite { x: b });
+        }
+    }
+    Err(RootError::NotConverged { iterations: stop.max_iterations, width: (c - b).abs() })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    const STOP: Stopping = Stopping { x_tolerance: 1e-12, max_iterations: 100 };
+
+    #[test]
+    fn finds_the_cube_root_of_two() {
+        let r = brent(|x| x * x * x - 2.0, 0.0, 2.0, STOP).unwrap();
+        assert!((r.x - 2f64.cbrt()).abs() < 1e-11);
+    }
+
+    #[test]
+    fn refuses_a_bracket_without_sign_change() {
+        let r = brent(|x| x * x + 1.0, -1.0, 1.0, STOP);
+        assert!(matches!(r, Err(RootError::NoSignChange { .. })));
+    }
+
+    #[test]
+    fn reports_a_capped_run_as_not_converged() {
+        let stop = Stopping { x_tolerance: 0.0, max_iterations: 3 };
+        let r = brent(|x| x.exp() - 5.0, -10.0, 10.0, stop);
+        assert!(matches!(r, Err(RootError::NotConverged { iterations: 3, .. })));
+    }
+
+    proptest! {
+        #[test]
+        fn root_stays_in_bracket_and_solves(k in -50.0f64..50.0, a in -100.0f64..-60.0, b in 60.0f64..100.0) {
+            let r = brent(|x| (x - k).tanh(), a, b, STOP).unwrap();
+            prop_assert!(r.x >= a && r.x <= b);
+            prop_assert!((r.x - k).abs() < 1e-9);
+        }
+    }
+}
