@@ -32,6 +32,7 @@ pub struct Criterion {
 /// Whether an effect was applied to this request, and why.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct Decision {
+    /// Whether the effect is part of this result.
     pub applied: bool,
     pub mode: Mode,
     /// One sentence: why it was or was not applied.

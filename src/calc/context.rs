@@ -19,6 +19,7 @@ pub struct Warning {
     /// Stable machine-readable code, e.g. `barus_above_70_mpa`.
     #[schema(example = "barus_above_70_mpa")]
     pub code: &'static str,
+    /// What to look at, with the numbers.
     pub message: String,
 }
 

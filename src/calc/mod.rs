@@ -8,7 +8,7 @@ mod context;
 mod registry;
 
 pub use context::{CalcError, Context, Warning};
-pub use registry::{execute, find, Entry, Envelope, Failure, FieldError, REGISTRY};
+pub use registry::{execute, find, Entry, Envelope, Executed, Failure, FieldError, REGISTRY};
 
 use serde::de::DeserializeOwned;
 use serde::Serialize;

@@ -74,8 +74,10 @@ pub struct Executed {
 /// One invalid field: a JSON pointer (RFC 6901) into the request and what is wrong with it.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct FieldError {
+    /// JSON pointer (RFC 6901) to the field in the request; empty for the whole body.
     #[schema(example = "/lubricant/viscosity_pa_s")]
     pub pointer: String,
+    /// What is wrong with it, with the valid range.
     #[schema(example = "must be a finite number > 0")]
     pub message: String,
 }
@@ -164,7 +166,8 @@ fn strip_location(message: &str) -> String {
     }
 }
 
-/// A JSON pointer from serde's path; an unknown or missing field points at the field itself.
+/// A JSON pointer from serde's path. serde's path of an unknown field already ends at the field;
+/// a missing field's ends at its parent, so the field's name is added.
 fn pointer_of(path: &serde_path_to_error::Path, message: &str) -> String {
     use serde_path_to_error::Segment;
     let mut pointer = String::new();
@@ -176,11 +179,9 @@ fn pointer_of(path: &serde_path_to_error::Path, message: &str) -> String {
             Segment::Unknown => {}
         }
     }
-    for prefix in ["unknown field `", "missing field `"] {
-        if let Some(rest) = message.strip_prefix(prefix) {
-            if let Some(end) = rest.find('`') {
-                push_key(&mut pointer, &rest[..end]);
-            }
+    if let Some(rest) = message.strip_prefix("missing field `") {
+        if let Some(end) = rest.find('`') {
+            push_key(&mut pointer, &rest[..end]);
         }
     }
     pointer

@@ -36,11 +36,15 @@ pub async fn metrics(State(state): State<AppState>) -> Response {
 /// One calculation in the listing.
 #[derive(Debug, Serialize, ToSchema)]
 pub struct CalculationInfo {
+    /// The calculation's URL path.
     #[schema(example = "/v1/lubricants/viscosity")]
     pub path: &'static str,
+    /// HTTP method (always POST with a JSON body).
     #[schema(example = "POST")]
     pub method: &'static str,
+    /// What it computes, in one line.
     pub summary: &'static str,
+    /// Fidelity levels it accepts.
     pub fidelity_levels: Vec<Level>,
     /// Effects the calculation understands, each `auto`/`on`/`off` under `effects` in the request.
     pub effects: Vec<&'static str>,
@@ -52,6 +56,7 @@ pub struct CalculationInfo {
 /// The listing.
 #[derive(Debug, Serialize, ToSchema)]
 pub struct CalculationList {
+    /// Every calculation the service offers.
     pub calculations: Vec<CalculationInfo>,
 }
 

@@ -25,7 +25,7 @@ use tower_http::trace::TraceLayer;
 
 pub use problem::{InternalCause, Problem};
 
-use crate::calc::REGISTRY;
+use crate::calc::{Entry, REGISTRY};
 use crate::config::Config;
 use metrics::Metrics;
 
@@ -58,12 +58,18 @@ pub fn router(config: Config) -> Router {
 
 /// The whole service around an existing state (the binary keeps a handle to flip `ready`).
 pub fn router_with_state(state: AppState) -> Router {
+    router_with(state, REGISTRY)
+}
+
+/// The service with a given list of calculations (tests add their own to reach failure paths
+/// no real calculation should have).
+pub fn router_with(state: AppState, calculations: &'static [Entry]) -> Router {
     let mut app = Router::new()
         .route("/health", get(meta::health))
         .route("/ready", get(meta::ready))
         .route("/metrics", get(meta::metrics))
         .route("/v1/calculations", get(meta::calculations));
-    for entry in REGISTRY {
+    for entry in calculations {
         app = app.route(
             entry.path,
             post(move |state, headers, body| calculate::run(entry, state, headers, body)),

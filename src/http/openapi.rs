@@ -74,7 +74,12 @@ fn envelope(output: &str) -> Schema {
                 .additional_properties(Some(schema_ref("Decision"))),
         )
         .property("solver", schema_ref("SolverReport"))
-        .property("warnings", ArrayBuilder::new().items(schema_ref("Warning")))
+        .property(
+            "warnings",
+            ArrayBuilder::new()
+                .description(Some("Notes on a valid result: a model used outside its source's range, an assumed property."))
+                .items(schema_ref("Warning")),
+        )
         .required("result")
         .required("effects")
         .required("solver")

@@ -14,8 +14,11 @@ pub struct Problem {
     /// A URI naming the kind of problem, e.g. `https://stribeck.dev/problems/invalid-input`.
     #[serde(rename = "type")]
     pub kind: String,
+    /// Short summary of the kind of problem.
     pub title: String,
+    /// The HTTP status code.
     pub status: u16,
+    /// What went wrong in this request.
     pub detail: String,
     /// For invalid input: every invalid field with its JSON pointer.
     #[serde(skip_serializing_if = "Vec::is_empty")]

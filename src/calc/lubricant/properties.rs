@@ -94,6 +94,7 @@ pub struct PropertiesOutput {
     /// Absent where the formula leaves its domain (a constant-viscosity oil, for one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub roelands_pressure_viscosity_index_fein: Option<f64>,
+    /// One entry per requested temperature, in order.
     pub points: Vec<PropertyPoint>,
 }
 

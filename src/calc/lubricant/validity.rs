@@ -1,7 +1,7 @@
 //! Where the viscosity laws stop holding: warnings for the user, and 422s where a law has no
 //! value at all.
 
-use super::model::{Lubricant, TemperatureLaw};
+use super::model::{Lubricant, PressureLaw, TemperatureLaw};
 use crate::calc::{CalcError, Context};
 
 /// Barus' law holds to about 70 MPa (10 000 psi; Khonsari & Booser §2.5).
@@ -45,6 +45,20 @@ pub fn check_temperatures(ctx: &mut Context, lub: &Lubricant, temperatures_c: &[
             "/temperatures_c",
             format!("the viscosity law leaves the floating-point range at {t} °C"),
         ));
+    }
+    Ok(())
+}
+
+/// Roelands' law needs log10 μ0 + 1.2 > 0 (μ0 above 10^-1.2 ≈ 0.063 mPa·s, μ0 in mPa·s); below
+/// that its viscosity would fall with pressure.
+pub fn check_pressure_law(lub: &Lubricant, temperatures_c: &[f64]) -> Result<(), CalcError> {
+    if let Some(PressureLaw::Roelands { .. }) = lub.pressure_law {
+        if let Some(i) = temperatures_c.iter().position(|&t| (lub.viscosity_pa_s(t) * 1e3).log10() + 1.2 <= 0.0) {
+            return Err(CalcError::impossible(
+                &format!("/temperatures_c/{i}"),
+                "Roelands' pressure–viscosity law needs a viscosity above 6.3e-5 Pa·s at the temperature; use the Barus coefficient for so thin a fluid",
+            ));
+        }
     }
     Ok(())
 }

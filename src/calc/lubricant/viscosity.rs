@@ -147,9 +147,12 @@ Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density
     fn run(case: ViscosityCase, ctx: &mut Context) -> Result<ViscosityOutput, CalcError> {
         let lub = &case.lubricant;
         let p_max = case.pressures_pa.iter().cloned().fold(0.0, f64::max);
+        validity::check_temperatures(ctx, lub, &case.temperatures_c)?;
+        if lub.pressure_law.is_some() && p_max > 0.0 && case.effects.piezoviscosity != Mode::Off {
+            validity::check_pressure_law(lub, &case.temperatures_c)?;
+        }
         let pressure_law = decide_piezoviscosity(ctx, lub, &case.temperatures_c, p_max, case.effects.piezoviscosity);
         let compressible = decide_compressibility(ctx, p_max, case.effects.compressibility);
-        validity::check_temperatures(ctx, lub, &case.temperatures_c)?;
         if let (Some(PressureLaw::Barus { .. }), true) = (pressure_law, p_max > validity::BARUS_LIMIT_PA) {
             ctx.warn(
                 "barus_above_70_mpa",

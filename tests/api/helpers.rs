@@ -1,0 +1,130 @@
+//! Spawn the real service on 127.0.0.1:0 and talk to it over HTTP.
+
+use std::path::{Path, PathBuf};
+
+use serde_json::Value;
+use stribeck::calc::Entry;
+use stribeck::config::Config;
+use stribeck::http::{self, AppState};
+
+pub struct TestApp {
+    pub base: String,
+    pub client: reqwest::Client,
+}
+
+pub struct Reply {
+    pub status: u16,
+    pub content_type: String,
+    pub headers: reqwest::header::HeaderMap,
+    pub body: Value,
+    pub text: String,
+}
+
+/// A config for tests: defaults, on an ephemeral port.
+pub fn test_config() -> Config {
+    Config { addr: ([127, 0, 0, 1], 0).into(), ..Config::default() }
+}
+
+pub async fn spawn_app() -> TestApp {
+    spawn_with(test_config(), None).await
+}
+
+pub async fn spawn_with(config: Config, calculations: Option<&'static [Entry]>) -> TestApp {
+    let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
+    let base = format!("http://{}", listener.local_addr().unwrap());
+    let state = AppState::new(config);
+    let app = match calculations {
+        Some(list) => http::router_with(state, list),
+        None => http::router_with_state(state),
+    };
+    tokio::spawn(async move { axum::serve(listener, app).await.unwrap() });
+    TestApp { base, client: reqwest::Client::new() }
+}
+
+impl TestApp {
+    pub async fn post_json(&self, path: &str, body: &Value) -> Reply {
+        self.post_raw(path, serde_json::to_vec(body).unwrap(), Some("application/json"), &[]).await
+    }
+
+    pub async fn post_raw(
+        &self,
+        path: &str,
+        body: Vec<u8>,
+        content_type: Option<&str>,
+        headers: &[(&str, &str)],
+    ) -> Reply {
+        let mut req = self.client.post(format!("{}{path}", self.base)).body(body);
+        if let Some(ct) = content_type {
+            req = req.header("content-type", ct);
+        }
+        for (k, v) in headers {
+            req = req.header(*k, *v);
+        }
+        Reply::from(req.send().await.expect("request sent")).await
+    }
+
+    pub async fn get(&self, path: &str) -> Reply {
+        Reply::from(self.client.get(format!("{}{path}", self.base)).send().await.unwrap()).await
+    }
+}
+
+impl Reply {
+    async fn from(res: reqwest::Response) -> Reply {
+        let status = res.status().as_u16();
+        let headers = res.headers().clone();
+        let content_type = headers
+            .get("content-type")
+            .and_then(|v| v.to_str().ok())
+            .unwrap_or("")
+            .to_owned();
+        let text = res.text().await.unwrap();
+        let body = serde_json::from_str(&text).unwrap_or(Value::Null);
+        Reply { status, content_type, headers, body, text }
+    }
+
+    /// Assert a problem+json answer with this status, and return its body.
+    pub fn problem(&self, status: u16) -> &Value {
+        assert_eq!(self.status, status, "body: {}", self.text);
+        assert_eq!(self.content_type, "application/problem+json", "body: {}", self.text);
+        assert_eq!(self.body["status"], status);
+        assert!(self.body["type"].is_string() && self.body["title"].is_string() && self.body["detail"].is_string());
+        &self.body
+    }
+
+    /// The pointers named in a 422's `errors`.
+    pub fn pointers(&self) -> Vec<String> {
+        self.body["errors"]
+            .as_array()
+            .map(|a| a.iter().filter_map(|e| e["pointer"].as_str().map(str::to_owned)).collect())
+            .unwrap_or_default()
+    }
+}
+
+/// Every reference case under tests/data.
+pub fn case_files() -> Vec<PathBuf> {
+    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                walk(&path, out);
+            } else if path.extension().is_some_and(|e| e == "json") {
+                out.push(path);
+            }
+        }
+    }
+    let mut out = Vec::new();
+    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data"), &mut out);
+    out.sort();
+    out
+}
+
+/// Every number in a JSON value is finite, and no value is null.
+pub fn assert_all_finite(v: &Value, at: &str) {
+    match v {
+        Value::Null => panic!("null at {at}"),
+        Value::Number(n) => assert!(n.as_f64().is_some_and(f64::is_finite), "non-finite at {at}"),
+        Value::Array(a) => a.iter().enumerate().for_each(|(i, x)| assert_all_finite(x, &format!("{at}/{i}"))),
+        Value::Object(o) => o.iter().for_each(|(k, x)| assert_all_finite(x, &format!("{at}/{k}"))),
+        _ => {}
+    }
+}

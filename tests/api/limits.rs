@@ -1,0 +1,155 @@
+//! The service protects itself: a late calculation is stopped (504), a flood is shed (503), a
+//! panicking or non-finite calculation answers 500 without internals, and the server keeps serving.
+
+use serde::{Deserialize, Serialize};
+use serde_json::json;
+use stribeck::calc::{CalcError, Calculation, Context, Entry, FieldError, Validate};
+use stribeck::config::Config;
+use stribeck::fidelity::Level;
+use utoipa::ToSchema;
+
+use crate::helpers::{spawn_app, spawn_with, test_config};
+
+const PATH: &str = "/v1/lubricants/viscosity";
+
+/// The largest grid the viscosity room accepts: 1000 temperatures × 100 pressures, 100 000
+/// points, all under a Roelands law — a solver run of tens of milliseconds.
+fn heavy_request() -> serde_json::Value {
+    let temps: Vec<f64> = (0..1000).map(|i| 20.0 + 0.1 * f64::from(i)).collect();
+    let pressures: Vec<f64> = (0..100).map(|i| 1e7 * f64::from(i)).collect();
+    json!({
+        "lubricant": {"kinematic_viscosity_40c_mm2_s": 32.0, "kinematic_viscosity_100c_mm2_s": 5.4, "roelands_pressure_viscosity_index": 0.6},
+        "temperatures_c": temps,
+        "pressures_pa": pressures
+    })
+}
+
+#[tokio::test]
+async fn a_calculation_past_its_deadline_is_504_and_the_server_keeps_serving() {
+    let app = spawn_app().await;
+    let body = serde_json::to_vec(&heavy_request()).unwrap();
+    let r = app
+        .post_raw(PATH, body, Some("application/json"), &[("x-stribeck-deadline-ms", "1")])
+        .await;
+    r.problem(504);
+    // Still serving, calculations included.
+    assert_eq!(app.get("/health").await.status, 200);
+    let ok = app.post_json(PATH, &json!({"lubricant": {"viscosity_pa_s": 0.03}, "temperatures_c": [40.0]})).await;
+    assert_eq!(ok.status, 200, "{}", ok.text);
+    let full = app.post_json(PATH, &heavy_request()).await;
+    assert_eq!(full.status, 200, "without the short deadline the same request completes");
+    assert_eq!(full.body["result"]["points"].as_array().unwrap().len(), 100_000);
+}
+
+#[tokio::test]
+async fn a_flood_past_the_concurrency_limit_is_shed_with_503() {
+    let app = spawn_with(Config { max_concurrent: 2, ..test_config() }, None).await;
+    let body = serde_json::to_vec(&heavy_request()).unwrap();
+    let replies = futures_join(&app, &body, 16).await;
+    let shed = replies.iter().filter(|r| r.status == 503).count();
+    let ok = replies.iter().filter(|r| r.status == 200).count();
+    assert_eq!(shed + ok, replies.len(), "only 200 or 503: {:?}", replies.iter().map(|r| r.status).collect::<Vec<_>>());
+    assert!(shed >= 1 && ok >= 1, "{ok} ok, {shed} shed");
+    for r in replies.iter().filter(|r| r.status == 503) {
+        r.problem(503);
+        assert!(r.headers.get("retry-after").is_some());
+    }
+}
+
+async fn futures_join(app: &crate::helpers::TestApp, body: &[u8], n: usize) -> Vec<crate::helpers::Reply> {
+    let mut tasks = tokio::task::JoinSet::new();
+    for _ in 0..n {
+        let client = app.client.clone();
+        let url = format!("{}{PATH}", app.base);
+        let body = body.to_vec();
+        tasks.spawn(async move {
+            client.post(url).header("content-type", "application/json").body(body).send().await.unwrap()
+        });
+    }
+    let mut out = Vec::new();
+    while let Some(res) = tasks.join_next().await {
+        let res = res.unwrap();
+        let status = res.status().as_u16();
+        let headers = res.headers().clone();
+        let text = res.text().await.unwrap();
+        out.push(crate::helpers::Reply {
+            status,
+            content_type: headers.get("content-type").and_then(|v| v.to_str().ok()).unwrap_or("").to_owned(),
+            body: serde_json::from_str(&text).unwrap_or_default(),
+            headers,
+            text,
+        });
+    }
+    out
+}
+
+/// A calculation that misbehaves on purpose, to reach the paths no real one should.
+struct Misbehaving;
+
+#[derive(Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+struct MisbehaveInput {
+    /// `panic` or `nan`.
+    how: String,
+}
+
+impl Validate for MisbehaveInput {
+    type Valid = String;
+    fn validate(self) -> Result<String, Vec<FieldError>> {
+        Ok(self.how)
+    }
+}
+
+#[derive(Serialize, ToSchema)]
+struct MisbehaveOutput {
+    value: f64,
+}
+
+impl Calculation for Misbehaving {
+    const PATH: &'static str = "/v1/test/misbehave";
+    const SUMMARY: &'static str = "test only";
+    const DESCRIPTION: &'static str = "test only";
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm];
+    const EFFECTS: &'static [&'static str] = &[];
+    const EXAMPLE: &'static str = r#"{"how": "nan"}"#;
+    type Input = MisbehaveInput;
+    type Output = MisbehaveOutput;
+    fn run(how: String, _: &mut Context) -> Result<MisbehaveOutput, CalcError> {
+        if how == "panic" {
+            panic!("secret internal detail 0xDEADBEEF");
+        }
+        Ok(MisbehaveOutput { value: f64::NAN })
+    }
+}
+
+static MISBEHAVING: &[Entry] = &[Entry::of::<Misbehaving>()];
+
+#[tokio::test]
+async fn a_panic_is_500_without_internals_and_the_server_survives() {
+    let app = spawn_with(test_config(), Some(MISBEHAVING)).await;
+    let r = app.post_json(Misbehaving::PATH, &json!({"how": "panic"})).await;
+    r.problem(500);
+    assert!(!r.text.contains("DEADBEEF") && !r.text.contains("secret"), "{}", r.text);
+    assert_eq!(app.get("/health").await.status, 200);
+}
+
+#[tokio::test]
+async fn a_non_finite_result_never_reaches_the_client() {
+    let app = spawn_with(test_config(), Some(MISBEHAVING)).await;
+    let r = app.post_json(Misbehaving::PATH, &json!({"how": "nan"})).await;
+    r.problem(500);
+    assert!(!r.text.to_lowercase().contains("nan") && !r.text.contains("null"), "{}", r.text);
+}
+
+#[tokio::test]
+async fn stribeck_run_uses_the_same_path() {
+    // The registry entry the CLI calls gives the same envelope as HTTP.
+    let app = spawn_app().await;
+    let body = json!({"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86});
+    let http = app.post_json("/v1/lubricants/viscosity-index", &body).await;
+    let entry = stribeck::calc::find("/v1/lubricants/viscosity-index").unwrap();
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(10);
+    let direct = (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()).unwrap();
+    let direct: serde_json::Value = serde_json::from_slice(&direct.body).unwrap();
+    assert_eq!(http.body["result"], direct["result"]);
+}
