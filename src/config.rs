@@ -50,8 +50,12 @@ impl Config {
 
     fn from_lookup(get: impl Fn(&str) -> Option<String>) -> Result<Config, String> {
         fn parse<T: std::str::FromStr>(name: &str, v: Option<String>) -> Result<Option<T>, String> {
-            v.map(|s| s.trim().parse::<T>().map_err(|_| format!("{name}: cannot parse {s:?}")))
-                .transpose()
+            v.map(|s| {
+                s.trim()
+                    .parse::<T>()
+                    .map_err(|_| format!("{name}: cannot parse {s:?}"))
+            })
+            .transpose()
         }
         let mut c = Config::default();
         if let Some(a) = parse("STRIBECK_ADDR", get("STRIBECK_ADDR"))? {
@@ -60,10 +64,12 @@ impl Config {
         if let Some(ms) = parse::<u64>("STRIBECK_DEADLINE_MS", get("STRIBECK_DEADLINE_MS"))? {
             c.deadline = Duration::from_millis(ms.max(1));
         }
-        if let Some(b) = parse::<usize>("STRIBECK_MAX_BODY_BYTES", get("STRIBECK_MAX_BODY_BYTES"))? {
+        if let Some(b) = parse::<usize>("STRIBECK_MAX_BODY_BYTES", get("STRIBECK_MAX_BODY_BYTES"))?
+        {
             c.max_body_bytes = b;
         }
-        if let Some(n) = parse::<usize>("STRIBECK_MAX_CONCURRENT", get("STRIBECK_MAX_CONCURRENT"))? {
+        if let Some(n) = parse::<usize>("STRIBECK_MAX_CONCURRENT", get("STRIBECK_MAX_CONCURRENT"))?
+        {
             c.max_concurrent = n.max(1);
         }
         if let Some(n) = parse::<usize>("STRIBECK_WORKERS", get("STRIBECK_WORKERS"))? {
@@ -72,7 +78,11 @@ impl Config {
         match get("STRIBECK_LOG").as_deref().map(str::trim) {
             None | Some("") | Some("text") => {}
             Some("json") => c.log = LogFormat::Json,
-            Some(other) => return Err(format!("STRIBECK_LOG: expected text or json, got {other:?}")),
+            Some(other) => {
+                return Err(format!(
+                    "STRIBECK_LOG: expected text or json, got {other:?}"
+                ))
+            }
         }
         Ok(c)
     }
@@ -101,13 +111,17 @@ mod tests {
         .unwrap();
         assert_eq!(c.addr.port(), 9000);
         assert_eq!(c.deadline, Duration::from_millis(250));
-        assert_eq!((c.max_body_bytes, c.max_concurrent, c.workers), (1000, 3, 5));
+        assert_eq!(
+            (c.max_body_bytes, c.max_concurrent, c.workers),
+            (1000, 3, 5)
+        );
         assert_eq!(c.log, LogFormat::Json);
     }
 
     #[test]
     fn names_the_bad_variable() {
-        let e = Config::from_lookup(|k| (k == "STRIBECK_DEADLINE_MS").then(|| "soon".to_owned())).unwrap_err();
+        let e = Config::from_lookup(|k| (k == "STRIBECK_DEADLINE_MS").then(|| "soon".to_owned()))
+            .unwrap_err();
         assert!(e.contains("STRIBECK_DEADLINE_MS"), "{e}");
     }
 }

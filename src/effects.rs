@@ -64,12 +64,22 @@ impl Decision {
                 ),
             ),
         };
-        Decision { applied, mode, reason, criterion: Some(criterion) }
+        Decision {
+            applied,
+            mode,
+            reason,
+            criterion: Some(criterion),
+        }
     }
 
     /// The effect cannot apply to this request (for example a law the lubricant lacks).
     pub fn not_applicable(mode: Mode, reason: impl Into<String>) -> Self {
-        Decision { applied: false, mode, reason: reason.into(), criterion: None }
+        Decision {
+            applied: false,
+            mode,
+            reason: reason.into(),
+            criterion: None,
+        }
     }
 }
 
@@ -78,7 +88,11 @@ mod tests {
     use super::*;
 
     fn crit(value: f64) -> Criterion {
-        Criterion { name: "x", value, threshold: 1.0 }
+        Criterion {
+            name: "x",
+            value,
+            threshold: 1.0,
+        }
     }
 
     #[test]

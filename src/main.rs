@@ -16,7 +16,11 @@ use stribeck::config::Config;
 use stribeck::http::{self, AppState, Problem};
 
 #[derive(Parser)]
-#[command(name = "stribeck", version, about = "Bearing design and lubrication engineering over HTTP")]
+#[command(
+    name = "stribeck",
+    version,
+    about = "Bearing design and lubrication engineering over HTTP"
+)]
 struct Cli {
     #[command(subcommand)]
     command: Option<Command>,
@@ -122,7 +126,9 @@ const DRAIN: Duration = Duration::from_secs(30);
 
 async fn serve_async(config: Config) -> Result<(), String> {
     let addr = config.addr;
-    let listener = tokio::net::TcpListener::bind(addr).await.map_err(|e| format!("binding {addr}: {e}"))?;
+    let listener = tokio::net::TcpListener::bind(addr)
+        .await
+        .map_err(|e| format!("binding {addr}: {e}"))?;
     tracing::info!(%addr, docs = %format!("http://{addr}/docs"), "stribeck listening");
     let state = AppState::new(config);
     let ready = state.ready.clone();

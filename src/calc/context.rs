@@ -32,7 +32,11 @@ pub enum CalcError {
     Impossible { pointer: String, message: String },
     /// An iteration hit its cap without converging (422, with its residual).
     #[error("{method} did not converge in {iterations} iterations (residual {residual:e})")]
-    NotConverged { method: &'static str, iterations: u32, residual: f64 },
+    NotConverged {
+        method: &'static str,
+        iterations: u32,
+        residual: f64,
+    },
     /// The deadline passed or the request was cancelled (504).
     #[error("deadline exceeded")]
     DeadlineExceeded,
@@ -43,7 +47,10 @@ pub enum CalcError {
 
 impl CalcError {
     pub fn impossible(pointer: &str, message: impl Into<String>) -> Self {
-        CalcError::Impossible { pointer: pointer.to_owned(), message: message.into() }
+        CalcError::Impossible {
+            pointer: pointer.to_owned(),
+            message: message.into(),
+        }
     }
 }
 
@@ -85,7 +92,10 @@ impl Context {
 
     pub fn warn(&mut self, code: &'static str, message: impl Into<String>) {
         if !self.warnings.iter().any(|w| w.code == code) {
-            self.warnings.push(Warning { code, message: message.into() });
+            self.warnings.push(Warning {
+                code,
+                message: message.into(),
+            });
         }
     }
 

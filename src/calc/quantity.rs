@@ -73,7 +73,11 @@ impl TryFrom<f64> for Celsius {
         if v.is_finite() && (Self::MIN..=Self::MAX).contains(&v) {
             Ok(Celsius(v))
         } else {
-            Err(format!("must be a temperature in °C within [{}, {}], got {v}", Self::MIN, Self::MAX))
+            Err(format!(
+                "must be a temperature in °C within [{}, {}], got {v}",
+                Self::MIN,
+                Self::MAX
+            ))
         }
     }
 }

@@ -27,6 +27,9 @@ pub fn find(path: &str) -> Option<&'static Entry> {
     REGISTRY.iter().find(|e| e.path == path)
 }
 
+/// Parse, validate and run a request body before `deadline` (or until `cancelled`).
+pub type ExecuteFn = fn(&[u8], Instant, Arc<AtomicBool>) -> Result<Executed, Failure>;
+
 /// A type-erased calculation: what the door, the listing and the CLI need of it.
 pub struct Entry {
     pub path: &'static str,
@@ -36,7 +39,7 @@ pub struct Entry {
     pub effects: &'static [&'static str],
     pub example: &'static str,
     /// Parse, validate and run one request body; the envelope comes back serialised.
-    pub execute: fn(&[u8], Instant, Arc<AtomicBool>) -> Result<Executed, Failure>,
+    pub execute: ExecuteFn,
     /// Names of the input and output schemas.
     pub schema_names: fn() -> (Cow<'static, str>, Cow<'static, str>),
     /// Push the input and output schemas and everything they reference.
@@ -84,7 +87,10 @@ pub struct FieldError {
 
 impl FieldError {
     pub fn new(pointer: impl Into<String>, message: impl Into<String>) -> Self {
-        FieldError { pointer: pointer.into(), message: message.into() }
+        FieldError {
+            pointer: pointer.into(),
+            message: message.into(),
+        }
     }
 }
 
@@ -120,7 +126,10 @@ pub fn execute<C: Calculation>(
     let started = Instant::now();
     let output = C::run(case, &mut ctx).map_err(Failure::Calc)?;
     let solver_ms = started.elapsed().as_secs_f64() * 1e3;
-    let mut report = ctx.report.take().unwrap_or_else(|| SolverReport::closed_form("closed_form"));
+    let mut report = ctx
+        .report
+        .take()
+        .unwrap_or_else(|| SolverReport::closed_form("closed_form"));
     report.elapsed_ms = solver_ms;
     let envelope = Envelope {
         result: &output,
@@ -139,7 +148,9 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
     let value: Result<T, _> = serde_path_to_error::deserialize(&mut de);
     if value.is_ok() {
         if let Err(e) = de.end() {
-            return Err(Failure::Unreadable(format!("request body is not valid JSON: {e}")));
+            return Err(Failure::Unreadable(format!(
+                "request body is not valid JSON: {e}"
+            )));
         }
     }
     match value {
@@ -152,7 +163,9 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
                     let pointer = pointer_of(err.path(), &message);
                     Err(Failure::Invalid(vec![FieldError { pointer, message }]))
                 }
-                _ => Err(Failure::Unreadable(format!("request body is not valid JSON: {inner}"))),
+                _ => Err(Failure::Unreadable(format!(
+                    "request body is not valid JSON: {inner}"
+                ))),
             }
         }
     }
@@ -207,7 +220,9 @@ pub mod finite_json {
 
     impl Formatter for NoNull {
         fn write_null<W: ?Sized + io::Write>(&mut self, _: &mut W) -> io::Result<()> {
-            Err(io::Error::other("non-finite number (or null) in a response"))
+            Err(io::Error::other(
+                "non-finite number (or null) in a response",
+            ))
         }
         fn write_f64<W: ?Sized + io::Write>(&mut self, w: &mut W, value: f64) -> io::Result<()> {
             CompactFormatter.write_f64(w, value)
@@ -251,7 +266,11 @@ mod tests {
     fn every_path_is_unique_and_versioned() {
         for (i, e) in REGISTRY.iter().enumerate() {
             assert!(e.path.starts_with("/v1/"), "{}", e.path);
-            assert!(REGISTRY[i + 1..].iter().all(|o| o.path != e.path), "{}", e.path);
+            assert!(
+                REGISTRY[i + 1..].iter().all(|o| o.path != e.path),
+                "{}",
+                e.path
+            );
         }
     }
 

@@ -45,8 +45,13 @@ pub async fn run(
             .into_response()
         }
         Err(rejection) => {
-            return Problem::new(StatusCode::BAD_REQUEST, "unreadable", "Unreadable request body", rejection.body_text())
-                .into_response()
+            return Problem::new(
+                StatusCode::BAD_REQUEST,
+                "unreadable",
+                "Unreadable request body",
+                rejection.body_text(),
+            )
+            .into_response()
         }
     };
     let Ok(permit) = state.permits.clone().try_acquire_owned() else {
@@ -64,7 +69,9 @@ pub async fn run(
         let _permit = permit;
         span.in_scope(|| (entry.execute)(&body, deadline, flag))
     });
-    let outcome = tokio::time::timeout(budget, task).instrument(tracing::Span::current()).await;
+    let outcome = tokio::time::timeout(budget, task)
+        .instrument(tracing::Span::current())
+        .await;
     match outcome {
         Err(_elapsed) => {
             cancelled.store(true, Ordering::Relaxed);
@@ -72,13 +79,18 @@ pub async fn run(
         }
         Ok(Err(join)) => {
             let mut res = Problem::internal().into_response();
-            res.extensions_mut().insert(InternalCause(format!("solver task failed: {join}")));
+            res.extensions_mut()
+                .insert(InternalCause(format!("solver task failed: {join}")));
             res
         }
         Ok(Ok(Ok(done))) => {
             let mut res = (StatusCode::OK, done.body).into_response();
-            res.headers_mut().insert(header::CONTENT_TYPE, HeaderValue::from_static("application/json"));
-            res.extensions_mut().insert(SolverSeconds(done.solver_ms / 1e3));
+            res.headers_mut().insert(
+                header::CONTENT_TYPE,
+                HeaderValue::from_static("application/json"),
+            );
+            res.extensions_mut()
+                .insert(SolverSeconds(done.solver_ms / 1e3));
             res
         }
         Ok(Ok(Err(failure))) => {

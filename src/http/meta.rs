@@ -24,13 +24,23 @@ pub async fn ready(State(state): State<AppState>) -> Response {
     if state.ready.load(Ordering::Relaxed) {
         Json(serde_json::json!({ "status": "ready" })).into_response()
     } else {
-        Problem::new(StatusCode::SERVICE_UNAVAILABLE, "shutting-down", "Shutting down", "this replica is draining").into_response()
+        Problem::new(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "shutting-down",
+            "Shutting down",
+            "this replica is draining",
+        )
+        .into_response()
     }
 }
 
 /// `GET /metrics`: Prometheus text format.
 pub async fn metrics(State(state): State<AppState>) -> Response {
-    ([(header::CONTENT_TYPE, "text/plain; version=0.0.4")], state.metrics.render()).into_response()
+    (
+        [(header::CONTENT_TYPE, "text/plain; version=0.0.4")],
+        state.metrics.render(),
+    )
+        .into_response()
 }
 
 /// One calculation in the listing.
@@ -90,6 +100,9 @@ pub async fn method_not_allowed(uri: Uri) -> Problem {
         StatusCode::METHOD_NOT_ALLOWED,
         "method-not-allowed",
         "Method not allowed",
-        format!("{} does not take this method; calculations take POST with a JSON body", uri.path()),
+        format!(
+            "{} does not take this method; calculations take POST with a JSON body",
+            uri.path()
+        ),
     )
 }

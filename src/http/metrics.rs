@@ -7,7 +7,9 @@ use std::fmt::Write;
 use std::sync::Mutex;
 
 /// Upper bounds of the histogram buckets, seconds.
-const BUCKETS_S: [f64; 14] = [0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0];
+const BUCKETS_S: [f64; 14] = [
+    0.0005, 0.001, 0.0025, 0.005, 0.01, 0.025, 0.05, 0.1, 0.25, 0.5, 1.0, 2.5, 5.0, 10.0,
+];
 
 #[derive(Debug, Default, Clone)]
 struct Histogram {
@@ -31,7 +33,11 @@ impl Histogram {
         for (bound, n) in BUCKETS_S.iter().zip(self.counts.iter()) {
             let _ = writeln!(out, "{name}_bucket{{route=\"{route}\",le=\"{bound}\"}} {n}");
         }
-        let _ = writeln!(out, "{name}_bucket{{route=\"{route}\",le=\"+Inf\"}} {}", self.count);
+        let _ = writeln!(
+            out,
+            "{name}_bucket{{route=\"{route}\",le=\"+Inf\"}} {}",
+            self.count
+        );
         let _ = writeln!(out, "{name}_sum{{route=\"{route}\"}} {}", self.sum);
         let _ = writeln!(out, "{name}_count{{route=\"{route}\"}} {}", self.count);
     }
@@ -55,7 +61,10 @@ impl Metrics {
     pub fn record(&self, route: &str, status: u16, seconds: f64, solver_seconds: Option<f64>) {
         let mut m = self.inner.lock().unwrap_or_else(|e| e.into_inner());
         *m.requests.entry((route.to_owned(), status)).or_default() += 1;
-        m.latency.entry(route.to_owned()).or_default().observe(seconds);
+        m.latency
+            .entry(route.to_owned())
+            .or_default()
+            .observe(seconds);
         if let Some(s) = solver_seconds {
             m.solver.entry(route.to_owned()).or_default().observe(s);
         }
@@ -68,14 +77,21 @@ impl Metrics {
         out.push_str("# HELP stribeck_requests_total Requests answered, by route and status.\n");
         out.push_str("# TYPE stribeck_requests_total counter\n");
         for ((route, status), n) in &m.requests {
-            let _ = writeln!(out, "stribeck_requests_total{{route=\"{route}\",status=\"{status}\"}} {n}");
+            let _ = writeln!(
+                out,
+                "stribeck_requests_total{{route=\"{route}\",status=\"{status}\"}} {n}"
+            );
         }
-        out.push_str("# HELP stribeck_request_duration_seconds Wall time from request to response.\n");
+        out.push_str(
+            "# HELP stribeck_request_duration_seconds Wall time from request to response.\n",
+        );
         out.push_str("# TYPE stribeck_request_duration_seconds histogram\n");
         for (route, h) in &m.latency {
             h.render(&mut out, "stribeck_request_duration_seconds", route);
         }
-        out.push_str("# HELP stribeck_solver_duration_seconds Time spent in the calculation itself.\n");
+        out.push_str(
+            "# HELP stribeck_solver_duration_seconds Time spent in the calculation itself.\n",
+        );
         out.push_str("# TYPE stribeck_solver_duration_seconds histogram\n");
         for (route, h) in &m.solver {
             h.render(&mut out, "stribeck_solver_duration_seconds", route);
@@ -95,9 +111,21 @@ mod tests {
         m.record("/a", 200, 0.2, None);
         m.record("/a", 422, 0.0001, None);
         let text = m.render();
-        assert!(text.contains("stribeck_requests_total{route=\"/a\",status=\"200\"} 2"), "{text}");
-        assert!(text.contains("stribeck_request_duration_seconds_bucket{route=\"/a\",le=\"0.0025\"} 2"), "{text}");
-        assert!(text.contains("stribeck_request_duration_seconds_count{route=\"/a\"} 3"), "{text}");
-        assert!(text.contains("stribeck_solver_duration_seconds_count{route=\"/a\"} 1"), "{text}");
+        assert!(
+            text.contains("stribeck_requests_total{route=\"/a\",status=\"200\"} 2"),
+            "{text}"
+        );
+        assert!(
+            text.contains("stribeck_request_duration_seconds_bucket{route=\"/a\",le=\"0.0025\"} 2"),
+            "{text}"
+        );
+        assert!(
+            text.contains("stribeck_request_duration_seconds_count{route=\"/a\"} 3"),
+            "{text}"
+        );
+        assert!(
+            text.contains("stribeck_solver_duration_seconds_count{route=\"/a\"} 1"),
+            "{text}"
+        );
     }
 }

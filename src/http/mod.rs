@@ -20,7 +20,9 @@ use axum::Router;
 use tokio::sync::Semaphore;
 use tower::ServiceBuilder;
 use tower_http::catch_panic::CatchPanicLayer;
-use tower_http::request_id::{MakeRequestId, PropagateRequestIdLayer, RequestId, SetRequestIdLayer};
+use tower_http::request_id::{
+    MakeRequestId, PropagateRequestIdLayer, RequestId, SetRequestIdLayer,
+};
 use tower_http::trace::TraceLayer;
 
 pub use problem::{InternalCause, Problem};
@@ -86,12 +88,18 @@ pub fn router_with(state: AppState, calculations: &'static [Entry]) -> Router {
     let layers = ServiceBuilder::new()
         .layer(SetRequestIdLayer::x_request_id(Counter::default()))
         .layer(TraceLayer::new_for_http().make_span_with(|req: &Request| {
-            let id = req.headers().get("x-request-id").and_then(|v| v.to_str().ok()).unwrap_or("-");
+            let id = req
+                .headers()
+                .get("x-request-id")
+                .and_then(|v| v.to_str().ok())
+                .unwrap_or("-");
             tracing::info_span!("request", id = %id, method = %req.method(), uri = %req.uri())
         }))
         .layer(PropagateRequestIdLayer::x_request_id())
         .layer(middleware::from_fn_with_state(state.clone(), observe))
-        .layer(CatchPanicLayer::custom(|_| Problem::internal().into_response()))
+        .layer(CatchPanicLayer::custom(|_| {
+            Problem::internal().into_response()
+        }))
         .layer(DefaultBodyLimit::max(max_body));
     app.layer(layers).with_state(state)
 }
@@ -108,14 +116,19 @@ impl Default for Counter {
         let prefix = std::time::SystemTime::now()
             .duration_since(std::time::UNIX_EPOCH)
             .map_or(0, |d| d.as_secs() & 0xff_ffff);
-        Counter { prefix, next: Arc::new(AtomicU64::new(1)) }
+        Counter {
+            prefix,
+            next: Arc::new(AtomicU64::new(1)),
+        }
     }
 }
 
 impl MakeRequestId for Counter {
     fn make_request_id<B>(&mut self, _: &axum::http::Request<B>) -> Option<RequestId> {
         let n = self.next.fetch_add(1, Ordering::Relaxed);
-        HeaderValue::from_str(&format!("{:06x}-{n:08x}", self.prefix)).ok().map(RequestId::new)
+        HeaderValue::from_str(&format!("{:06x}-{n:08x}", self.prefix))
+            .ok()
+            .map(RequestId::new)
     }
 }
 
@@ -133,10 +146,18 @@ async fn observe(State(state): State<AppState>, req: Request, next: Next) -> Res
     let res = next.run(req).await;
     let status = res.status();
     if status == StatusCode::INTERNAL_SERVER_ERROR {
-        let cause = res.extensions().get::<InternalCause>().map_or("panic or unknown", |c| c.0.as_str());
+        let cause = res
+            .extensions()
+            .get::<InternalCause>()
+            .map_or("panic or unknown", |c| c.0.as_str());
         tracing::error!(route = %route, cause = %cause, "internal error");
     }
     let solver = res.extensions().get::<SolverSeconds>().map(|s| s.0);
-    state.metrics.record(&route, status.as_u16(), started.elapsed().as_secs_f64(), solver);
+    state.metrics.record(
+        &route,
+        status.as_u16(),
+        started.elapsed().as_secs_f64(),
+        solver,
+    );
     res
 }

@@ -8,18 +8,18 @@ use utoipa::openapi::path::{HttpMethod, OperationBuilder, PathItem};
 use utoipa::openapi::request_body::RequestBodyBuilder;
 use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Ref};
 use utoipa::openapi::{
-    ComponentsBuilder, ContentBuilder, InfoBuilder, OpenApi, OpenApiBuilder, PathsBuilder, Required,
-    ResponseBuilder, Schema, RefOr,
+    ComponentsBuilder, ContentBuilder, InfoBuilder, OpenApi, OpenApiBuilder, PathsBuilder, RefOr,
+    Required, ResponseBuilder, Schema,
 };
 use utoipa::{PartialSchema, ToSchema};
 use utoipa_swagger_ui::SwaggerUi;
 
 use super::meta::{CalculationInfo, CalculationList};
 use super::AppState;
+use super::Problem;
 use crate::calc::{FieldError, Warning, REGISTRY};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{Level, SolverReport};
-use super::Problem;
 
 const DESCRIPTION: &str = "Stribeck: bearing design and lubrication engineering over HTTP.\n\n\
 Units are SI and named in each field (`_m`, `_pa`, `_pa_s`, `_c` for °C, `_rpm`). Every calculation answers with \
@@ -52,14 +52,22 @@ fn schema_ref(name: &str) -> RefOr<Schema> {
 fn problem_response(description: &str) -> utoipa::openapi::Response {
     ResponseBuilder::new()
         .description(description)
-        .content("application/problem+json", ContentBuilder::new().schema(Some(schema_ref("Problem"))).build())
+        .content(
+            "application/problem+json",
+            ContentBuilder::new()
+                .schema(Some(schema_ref("Problem")))
+                .build(),
+        )
         .build()
 }
 
 fn json_response(description: &str, schema: RefOr<Schema>) -> utoipa::openapi::Response {
     ResponseBuilder::new()
         .description(description)
-        .content("application/json", ContentBuilder::new().schema(Some(schema)).build())
+        .content(
+            "application/json",
+            ContentBuilder::new().schema(Some(schema)).build(),
+        )
         .build()
 }
 
@@ -89,7 +97,9 @@ fn envelope(output: &str) -> Schema {
 
 fn build() -> OpenApi {
     let mut schemas: Vec<(String, RefOr<Schema>)> = Vec::new();
-    let mut push = |name: std::borrow::Cow<'static, str>, schema: RefOr<Schema>| schemas.push((name.into_owned(), schema));
+    let mut push = |name: std::borrow::Cow<'static, str>, schema: RefOr<Schema>| {
+        schemas.push((name.into_owned(), schema))
+    };
     push(Problem::name(), Problem::schema());
     push(FieldError::name(), FieldError::schema());
     push(Warning::name(), Warning::schema());
@@ -107,10 +117,17 @@ fn build() -> OpenApi {
         let (input, output) = (entry.schema_names)();
         let envelope_name = format!("{output}Envelope");
         schemas.push((envelope_name.clone(), envelope(&output).into()));
-        let example: serde_json::Value = serde_json::from_str(entry.example).expect("registered examples are JSON");
+        let example: serde_json::Value =
+            serde_json::from_str(entry.example).expect("registered examples are JSON");
         let body = RequestBodyBuilder::new()
             .required(Some(Required::True))
-            .content("application/json", ContentBuilder::new().schema(Some(schema_ref(&input))).example(Some(example)).build())
+            .content(
+                "application/json",
+                ContentBuilder::new()
+                    .schema(Some(schema_ref(&input)))
+                    .example(Some(example))
+                    .build(),
+            )
             .build();
         let op = OperationBuilder::new()
             .operation_id(Some(entry.path.trim_start_matches("/v1/").replace(['/', '-'], "_")))
@@ -136,14 +153,31 @@ fn build() -> OpenApi {
     let get = |id: &str, summary: &str, response: utoipa::openapi::Response| {
         PathItem::new(
             HttpMethod::Get,
-            OperationBuilder::new().operation_id(Some(id)).tag("service").summary(Some(summary)).response("200", response),
+            OperationBuilder::new()
+                .operation_id(Some(id))
+                .tag("service")
+                .summary(Some(summary))
+                .response("200", response),
         )
     };
     let status_object = || -> RefOr<Schema> {
-        ObjectBuilder::new().property("status", ObjectBuilder::new().schema_type(utoipa::openapi::Type::String)).required("status").into()
+        ObjectBuilder::new()
+            .property(
+                "status",
+                ObjectBuilder::new().schema_type(utoipa::openapi::Type::String),
+            )
+            .required("status")
+            .into()
     };
     paths = paths
-        .path("/health", get("health", "The process is up", json_response("Up.", status_object())))
+        .path(
+            "/health",
+            get(
+                "health",
+                "The process is up",
+                json_response("Up.", status_object()),
+            ),
+        )
         .path(
             "/ready",
             PathItem::new(
@@ -163,13 +197,20 @@ fn build() -> OpenApi {
                 "Prometheus metrics",
                 ResponseBuilder::new()
                     .description("Prometheus text exposition format.")
-                    .content("text/plain", ContentBuilder::new().schema(Some(String::schema())).build())
+                    .content(
+                        "text/plain",
+                        ContentBuilder::new().schema(Some(String::schema())).build(),
+                    )
                     .build(),
             ),
         )
         .path(
             "/v1/calculations",
-            get("list_calculations", "Every calculation with its fidelity levels and effects", json_response("The list.", schema_ref("CalculationList"))),
+            get(
+                "list_calculations",
+                "Every calculation with its fidelity levels and effects",
+                json_response("The list.", schema_ref("CalculationList")),
+            ),
         );
 
     OpenApiBuilder::new()
@@ -180,6 +221,8 @@ fn build() -> OpenApi {
                 .description(Some(DESCRIPTION)),
         )
         .paths(paths)
-        .components(Some(ComponentsBuilder::new().schemas_from_iter(schemas).build()))
+        .components(Some(
+            ComponentsBuilder::new().schemas_from_iter(schemas).build(),
+        ))
         .build()
 }

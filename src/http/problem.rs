@@ -49,7 +49,12 @@ impl Problem {
     }
 
     pub fn not_found(path: &str) -> Problem {
-        Problem::new(StatusCode::NOT_FOUND, "not-found", "Not found", format!("no resource at {path}; GET /v1/calculations lists them"))
+        Problem::new(
+            StatusCode::NOT_FOUND,
+            "not-found",
+            "Not found",
+            format!("no resource at {path}; GET /v1/calculations lists them"),
+        )
     }
 
     pub fn overloaded() -> Problem {
@@ -64,32 +69,68 @@ impl Problem {
     }
 
     pub fn internal() -> Problem {
-        Problem::new(StatusCode::INTERNAL_SERVER_ERROR, "internal", "Internal error", "the calculation failed on our side; it has been logged")
+        Problem::new(
+            StatusCode::INTERNAL_SERVER_ERROR,
+            "internal",
+            "Internal error",
+            "the calculation failed on our side; it has been logged",
+        )
     }
 
     /// The problem for a failed calculation, and the internal cause to log for a 500.
     pub fn from_failure(failure: Failure) -> (Problem, Option<String>) {
         match failure {
-            Failure::Unreadable(detail) => {
-                (Problem::new(StatusCode::BAD_REQUEST, "unreadable", "Unreadable request body", detail), None)
-            }
+            Failure::Unreadable(detail) => (
+                Problem::new(
+                    StatusCode::BAD_REQUEST,
+                    "unreadable",
+                    "Unreadable request body",
+                    detail,
+                ),
+                None,
+            ),
             Failure::Invalid(errors) => {
                 let detail = errors
                     .iter()
-                    .map(|e| format!("{}: {}", if e.pointer.is_empty() { "(body)" } else { &e.pointer }, e.message))
+                    .map(|e| {
+                        format!(
+                            "{}: {}",
+                            if e.pointer.is_empty() {
+                                "(body)"
+                            } else {
+                                &e.pointer
+                            },
+                            e.message
+                        )
+                    })
                     .collect::<Vec<_>>()
                     .join("; ");
-                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "invalid-input", "Invalid input", detail);
+                let mut p = Problem::new(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    "invalid-input",
+                    "Invalid input",
+                    detail,
+                );
                 p.errors = errors;
                 (p, None)
             }
             Failure::Calc(CalcError::Impossible { pointer, message }) => {
-                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "outside-model", "Physically impossible or outside the model", message.clone());
+                let mut p = Problem::new(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    "outside-model",
+                    "Physically impossible or outside the model",
+                    message.clone(),
+                );
                 p.errors = vec![FieldError { pointer, message }];
                 (p, None)
             }
             Failure::Calc(e @ CalcError::NotConverged { residual, .. }) => {
-                let mut p = Problem::new(StatusCode::UNPROCESSABLE_ENTITY, "not-converged", "Solver did not converge", e.to_string());
+                let mut p = Problem::new(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    "not-converged",
+                    "Solver did not converge",
+                    e.to_string(),
+                );
                 p.residual = Some(residual).filter(|r| r.is_finite());
                 (p, None)
             }
@@ -114,10 +155,13 @@ impl IntoResponse for Problem {
         let retry = self.retry_after_s;
         let body = serde_json::to_vec(&self).unwrap_or_else(|_| b"{}".to_vec());
         let mut res = (status, body).into_response();
-        res.headers_mut()
-            .insert(header::CONTENT_TYPE, HeaderValue::from_static("application/problem+json"));
+        res.headers_mut().insert(
+            header::CONTENT_TYPE,
+            HeaderValue::from_static("application/problem+json"),
+        );
         if let Some(s) = retry {
-            res.headers_mut().insert(header::RETRY_AFTER, HeaderValue::from(s));
+            res.headers_mut()
+                .insert(header::RETRY_AFTER, HeaderValue::from(s));
         }
         res
     }

@@ -44,10 +44,16 @@ pub fn brent(
         }
     }
     if fa == 0.0 {
-        return Ok(Root { x: a, iterations: 0 });
+        return Ok(Root {
+            x: a,
+            iterations: 0,
+        });
     }
     if fb == 0.0 {
-        return Ok(Root { x: b, iterations: 0 });
+        return Ok(Root {
+            x: b,
+            iterations: 0,
+        });
     }
     if fa.signum() == fb.signum() {
         return Err(RootError::NoSignChange { a, fa, b, fb });
@@ -69,7 +75,10 @@ pub fn brent(
         let tol = 2.0 * f64::EPSILON * b.abs() + 0.5 * stop.x_tolerance;
         let m = 0.5 * (c - b);
         if m.abs() <= tol || fb == 0.0 {
-            return Ok(Root { x: b, iterations: iteration });
+            return Ok(Root {
+                x: b,
+                iterations: iteration,
+            });
         }
         if e.abs() >= tol && fa.abs() > fb.abs() {
             let s = fb / fa;
@@ -107,7 +116,10 @@ pub fn brent(
             return Err(RootError::NonFinite { x: b });
         }
     }
-    Err(RootError::NotConverged { iterations: stop.max_iterations, width: (c - b).abs() })
+    Err(RootError::NotConverged {
+        iterations: stop.max_iterations,
+        width: (c - b).abs(),
+    })
 }
 
 #[cfg(test)]
@@ -115,7 +127,10 @@ mod tests {
     use super::*;
     use proptest::prelude::*;
 
-    const STOP: Stopping = Stopping { x_tolerance: 1e-12, max_iterations: 100 };
+    const STOP: Stopping = Stopping {
+        x_tolerance: 1e-12,
+        max_iterations: 100,
+    };
 
     #[test]
     fn finds_the_cube_root_of_two() {
@@ -131,9 +146,15 @@ mod tests {
 
     #[test]
     fn reports_a_capped_run_as_not_converged() {
-        let stop = Stopping { x_tolerance: 0.0, max_iterations: 3 };
+        let stop = Stopping {
+            x_tolerance: 0.0,
+            max_iterations: 3,
+        };
         let r = brent(|x| x.exp() - 5.0, -10.0, 10.0, stop);
-        assert!(matches!(r, Err(RootError::NotConverged { iterations: 3, .. })));
+        assert!(matches!(
+            r,
+            Err(RootError::NotConverged { iterations: 3, .. })
+        ));
     }
 
     proptest! {

@@ -22,7 +22,10 @@ pub struct Reply {
 
 /// A config for tests: defaults, on an ephemeral port.
 pub fn test_config() -> Config {
-    Config { addr: ([127, 0, 0, 1], 0).into(), ..Config::default() }
+    Config {
+        addr: ([127, 0, 0, 1], 0).into(),
+        ..Config::default()
+    }
 }
 
 pub async fn spawn_app() -> TestApp {
@@ -38,12 +41,21 @@ pub async fn spawn_with(config: Config, calculations: Option<&'static [Entry]>) 
         None => http::router_with_state(state),
     };
     tokio::spawn(async move { axum::serve(listener, app).await.unwrap() });
-    TestApp { base, client: reqwest::Client::new() }
+    TestApp {
+        base,
+        client: reqwest::Client::new(),
+    }
 }
 
 impl TestApp {
     pub async fn post_json(&self, path: &str, body: &Value) -> Reply {
-        self.post_raw(path, serde_json::to_vec(body).unwrap(), Some("application/json"), &[]).await
+        self.post_raw(
+            path,
+            serde_json::to_vec(body).unwrap(),
+            Some("application/json"),
+            &[],
+        )
+        .await
     }
 
     pub async fn post_raw(
@@ -64,7 +76,14 @@ impl TestApp {
     }
 
     pub async fn get(&self, path: &str) -> Reply {
-        Reply::from(self.client.get(format!("{}{path}", self.base)).send().await.unwrap()).await
+        Reply::from(
+            self.client
+                .get(format!("{}{path}", self.base))
+                .send()
+                .await
+                .unwrap(),
+        )
+        .await
     }
 }
 
@@ -79,15 +98,29 @@ impl Reply {
             .to_owned();
         let text = res.text().await.unwrap();
         let body = serde_json::from_str(&text).unwrap_or(Value::Null);
-        Reply { status, content_type, headers, body, text }
+        Reply {
+            status,
+            content_type,
+            headers,
+            body,
+            text,
+        }
     }
 
     /// Assert a problem+json answer with this status, and return its body.
     pub fn problem(&self, status: u16) -> &Value {
         assert_eq!(self.status, status, "body: {}", self.text);
-        assert_eq!(self.content_type, "application/problem+json", "body: {}", self.text);
+        assert_eq!(
+            self.content_type, "application/problem+json",
+            "body: {}",
+            self.text
+        );
         assert_eq!(self.body["status"], status);
-        assert!(self.body["type"].is_string() && self.body["title"].is_string() && self.body["detail"].is_string());
+        assert!(
+            self.body["type"].is_string()
+                && self.body["title"].is_string()
+                && self.body["detail"].is_string()
+        );
         &self.body
     }
 
@@ -95,7 +128,11 @@ impl Reply {
     pub fn pointers(&self) -> Vec<String> {
         self.body["errors"]
             .as_array()
-            .map(|a| a.iter().filter_map(|e| e["pointer"].as_str().map(str::to_owned)).collect())
+            .map(|a| {
+                a.iter()
+                    .filter_map(|e| e["pointer"].as_str().map(str::to_owned))
+                    .collect()
+            })
             .unwrap_or_default()
     }
 }
@@ -113,7 +150,10 @@ pub fn case_files() -> Vec<PathBuf> {
         }
     }
     let mut out = Vec::new();
-    walk(&Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data"), &mut out);
+    walk(
+        &Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data"),
+        &mut out,
+    );
     out.sort();
     out
 }
@@ -123,8 +163,13 @@ pub fn assert_all_finite(v: &Value, at: &str) {
     match v {
         Value::Null => panic!("null at {at}"),
         Value::Number(n) => assert!(n.as_f64().is_some_and(f64::is_finite), "non-finite at {at}"),
-        Value::Array(a) => a.iter().enumerate().for_each(|(i, x)| assert_all_finite(x, &format!("{at}/{i}"))),
-        Value::Object(o) => o.iter().for_each(|(k, x)| assert_all_finite(x, &format!("{at}/{k}"))),
+        Value::Array(a) => a
+            .iter()
+            .enumerate()
+            .for_each(|(i, x)| assert_all_finite(x, &format!("{at}/{i}"))),
+        Value::Object(o) => o
+            .iter()
+            .for_each(|(k, x)| assert_all_finite(x, &format!("{at}/{k}"))),
         _ => {}
     }
 }

@@ -29,26 +29,54 @@ async fn a_calculation_past_its_deadline_is_504_and_the_server_keeps_serving() {
     let app = spawn_app().await;
     let body = serde_json::to_vec(&heavy_request()).unwrap();
     let r = app
-        .post_raw(PATH, body, Some("application/json"), &[("x-stribeck-deadline-ms", "1")])
+        .post_raw(
+            PATH,
+            body,
+            Some("application/json"),
+            &[("x-stribeck-deadline-ms", "1")],
+        )
         .await;
     r.problem(504);
     // Still serving, calculations included.
     assert_eq!(app.get("/health").await.status, 200);
-    let ok = app.post_json(PATH, &json!({"lubricant": {"viscosity_pa_s": 0.03}, "temperatures_c": [40.0]})).await;
+    let ok = app
+        .post_json(
+            PATH,
+            &json!({"lubricant": {"viscosity_pa_s": 0.03}, "temperatures_c": [40.0]}),
+        )
+        .await;
     assert_eq!(ok.status, 200, "{}", ok.text);
     let full = app.post_json(PATH, &heavy_request()).await;
-    assert_eq!(full.status, 200, "without the short deadline the same request completes");
-    assert_eq!(full.body["result"]["points"].as_array().unwrap().len(), 100_000);
+    assert_eq!(
+        full.status, 200,
+        "without the short deadline the same request completes"
+    );
+    assert_eq!(
+        full.body["result"]["points"].as_array().unwrap().len(),
+        100_000
+    );
 }
 
 #[tokio::test]
 async fn a_flood_past_the_concurrency_limit_is_shed_with_503() {
-    let app = spawn_with(Config { max_concurrent: 2, ..test_config() }, None).await;
+    let app = spawn_with(
+        Config {
+            max_concurrent: 2,
+            ..test_config()
+        },
+        None,
+    )
+    .await;
     let body = serde_json::to_vec(&heavy_request()).unwrap();
     let replies = futures_join(&app, &body, 16).await;
     let shed = replies.iter().filter(|r| r.status == 503).count();
     let ok = replies.iter().filter(|r| r.status == 200).count();
-    assert_eq!(shed + ok, replies.len(), "only 200 or 503: {:?}", replies.iter().map(|r| r.status).collect::<Vec<_>>());
+    assert_eq!(
+        shed + ok,
+        replies.len(),
+        "only 200 or 503: {:?}",
+        replies.iter().map(|r| r.status).collect::<Vec<_>>()
+    );
     assert!(shed >= 1 && ok >= 1, "{ok} ok, {shed} shed");
     for r in replies.iter().filter(|r| r.status == 503) {
         r.problem(503);
@@ -56,14 +84,24 @@ async fn a_flood_past_the_concurrency_limit_is_shed_with_503() {
     }
 }
 
-async fn futures_join(app: &crate::helpers::TestApp, body: &[u8], n: usize) -> Vec<crate::helpers::Reply> {
+async fn futures_join(
+    app: &crate::helpers::TestApp,
+    body: &[u8],
+    n: usize,
+) -> Vec<crate::helpers::Reply> {
     let mut tasks = tokio::task::JoinSet::new();
     for _ in 0..n {
         let client = app.client.clone();
         let url = format!("{}{PATH}", app.base);
         let body = body.to_vec();
         tasks.spawn(async move {
-            client.post(url).header("content-type", "application/json").body(body).send().await.unwrap()
+            client
+                .post(url)
+                .header("content-type", "application/json")
+                .body(body)
+                .send()
+                .await
+                .unwrap()
         });
     }
     let mut out = Vec::new();
@@ -74,7 +112,11 @@ async fn futures_join(app: &crate::helpers::TestApp, body: &[u8], n: usize) -> V
         let text = res.text().await.unwrap();
         out.push(crate::helpers::Reply {
             status,
-            content_type: headers.get("content-type").and_then(|v| v.to_str().ok()).unwrap_or("").to_owned(),
+            content_type: headers
+                .get("content-type")
+                .and_then(|v| v.to_str().ok())
+                .unwrap_or("")
+                .to_owned(),
             body: serde_json::from_str(&text).unwrap_or_default(),
             headers,
             text,
@@ -127,29 +169,43 @@ static MISBEHAVING: &[Entry] = &[Entry::of::<Misbehaving>()];
 #[tokio::test]
 async fn a_panic_is_500_without_internals_and_the_server_survives() {
     let app = spawn_with(test_config(), Some(MISBEHAVING)).await;
-    let r = app.post_json(Misbehaving::PATH, &json!({"how": "panic"})).await;
+    let r = app
+        .post_json(Misbehaving::PATH, &json!({"how": "panic"}))
+        .await;
     r.problem(500);
-    assert!(!r.text.contains("DEADBEEF") && !r.text.contains("secret"), "{}", r.text);
+    assert!(
+        !r.text.contains("DEADBEEF") && !r.text.contains("secret"),
+        "{}",
+        r.text
+    );
     assert_eq!(app.get("/health").await.status, 200);
 }
 
 #[tokio::test]
 async fn a_non_finite_result_never_reaches_the_client() {
     let app = spawn_with(test_config(), Some(MISBEHAVING)).await;
-    let r = app.post_json(Misbehaving::PATH, &json!({"how": "nan"})).await;
+    let r = app
+        .post_json(Misbehaving::PATH, &json!({"how": "nan"}))
+        .await;
     r.problem(500);
-    assert!(!r.text.to_lowercase().contains("nan") && !r.text.contains("null"), "{}", r.text);
+    assert!(
+        !r.text.to_lowercase().contains("nan") && !r.text.contains("null"),
+        "{}",
+        r.text
+    );
 }
 
 #[tokio::test]
 async fn stribeck_run_uses_the_same_path() {
     // The registry entry the CLI calls gives the same envelope as HTTP.
     let app = spawn_app().await;
-    let body = json!({"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86});
+    let body =
+        json!({"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86});
     let http = app.post_json("/v1/lubricants/viscosity-index", &body).await;
     let entry = stribeck::calc::find("/v1/lubricants/viscosity-index").unwrap();
     let far = std::time::Instant::now() + std::time::Duration::from_secs(10);
-    let direct = (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()).unwrap();
+    let direct =
+        (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()).unwrap();
     let direct: serde_json::Value = serde_json::from_slice(&direct.body).unwrap();
     assert_eq!(http.body["result"], direct["result"]);
 }

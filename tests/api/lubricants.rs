@@ -25,7 +25,10 @@ fn lubricant() -> impl Strategy<Value = Value> {
     });
     let constant = (1e-5f64..1e4).prop_map(|mu| json!({"viscosity_pa_s": mu}));
     let iso = (0usize..20, 0.0f64..200.0).prop_map(|(i, vi)| {
-        let grades = [2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200];
+        let grades = [
+            2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200,
+            3200,
+        ];
         json!({"iso_vg": grades[i], "viscosity_index": vi})
     });
     let exponential = (1e-4f64..10.0, -20.0f64..150.0, 0.0f64..0.1).prop_map(|(mu, t, b)| {
@@ -95,13 +98,31 @@ proptest! {
 /// An ISO VG preset states its assumptions, and its ν40 is the grade.
 #[test]
 fn iso_vg_preset_is_the_grade_midpoint_with_stated_assumptions() {
-    let v = run("/v1/lubricants/viscosity", &json!({"lubricant": {"iso_vg": 68}, "temperatures_c": [40.0]})).unwrap();
-    let nu = v["result"]["points"][0]["kinematic_viscosity_mm2_s"].as_f64().unwrap();
+    let v = run(
+        "/v1/lubricants/viscosity",
+        &json!({"lubricant": {"iso_vg": 68}, "temperatures_c": [40.0]}),
+    )
+    .unwrap();
+    let nu = v["result"]["points"][0]["kinematic_viscosity_mm2_s"]
+        .as_f64()
+        .unwrap();
     assert!((nu - 68.0).abs() < 1e-9, "{nu}");
-    let codes: Vec<&str> = v["warnings"].as_array().unwrap().iter().map(|w| w["code"].as_str().unwrap()).collect();
-    assert!(codes.contains(&"iso_vg_preset") && codes.contains(&"density_assumed"), "{codes:?}");
+    let codes: Vec<&str> = v["warnings"]
+        .as_array()
+        .unwrap()
+        .iter()
+        .map(|w| w["code"].as_str().unwrap())
+        .collect();
+    assert!(
+        codes.contains(&"iso_vg_preset") && codes.contains(&"density_assumed"),
+        "{codes:?}"
+    );
     // The preset's VI is the requested one (default 100).
-    let vi = run("/v1/lubricants/viscosity-index", &json!({"lubricant": {"iso_vg": 68}})).unwrap();
+    let vi = run(
+        "/v1/lubricants/viscosity-index",
+        &json!({"lubricant": {"iso_vg": 68}}),
+    )
+    .unwrap();
     assert!((vi["result"]["viscosity_index"].as_f64().unwrap() - 100.0).abs() < 1e-6);
 }
 
@@ -109,13 +130,30 @@ fn iso_vg_preset_is_the_grade_midpoint_with_stated_assumptions() {
 fn validity_warnings_name_the_model_limits() {
     let codes = |body: Value| -> Vec<String> {
         let v = run("/v1/lubricants/viscosity", &body).unwrap();
-        v["warnings"].as_array().unwrap().iter().map(|w| w["code"].as_str().unwrap().to_owned()).collect()
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w["code"].as_str().unwrap().to_owned())
+            .collect()
     };
-    let barus = codes(json!({"lubricant": {"viscosity_pa_s": 0.03, "pressure_viscosity_coefficient_1_pa": 2e-8, "density_15c_kg_m3": 870.0}, "temperatures_c": [40.0], "pressures_pa": [1e8]}));
-    assert!(barus.contains(&"barus_above_70_mpa".to_owned()), "{barus:?}");
-    let thin = codes(json!({"lubricant": {"kinematic_viscosity_40c_mm2_s": 8.0, "kinematic_viscosity_100c_mm2_s": 2.3, "density_15c_kg_m3": 870.0}, "temperatures_c": [150.0]}));
-    assert!(thin.contains(&"walther_below_2_mm2_s".to_owned()), "{thin:?}");
-    let cold = codes(json!({"lubricant": {"kinematic_viscosity_40c_mm2_s": 32.0, "kinematic_viscosity_100c_mm2_s": 5.4, "density_15c_kg_m3": 870.0, "pour_point_c": -9.0}, "temperatures_c": [-20.0]}));
+    let barus = codes(
+        json!({"lubricant": {"viscosity_pa_s": 0.03, "pressure_viscosity_coefficient_1_pa": 2e-8, "density_15c_kg_m3": 870.0}, "temperatures_c": [40.0], "pressures_pa": [1e8]}),
+    );
+    assert!(
+        barus.contains(&"barus_above_70_mpa".to_owned()),
+        "{barus:?}"
+    );
+    let thin = codes(
+        json!({"lubricant": {"kinematic_viscosity_40c_mm2_s": 8.0, "kinematic_viscosity_100c_mm2_s": 2.3, "density_15c_kg_m3": 870.0}, "temperatures_c": [150.0]}),
+    );
+    assert!(
+        thin.contains(&"walther_below_2_mm2_s".to_owned()),
+        "{thin:?}"
+    );
+    let cold = codes(
+        json!({"lubricant": {"kinematic_viscosity_40c_mm2_s": 32.0, "kinematic_viscosity_100c_mm2_s": 5.4, "density_15c_kg_m3": 870.0, "pour_point_c": -9.0}, "temperatures_c": [-20.0]}),
+    );
     assert!(cold.contains(&"below_pour_point".to_owned()), "{cold:?}");
 }
 
@@ -127,7 +165,12 @@ fn piezoviscosity_is_decided_and_reported() {
     let with_law = json!({"viscosity_pa_s": 0.03, "density_15c_kg_m3": 870.0, "pressure_viscosity_coefficient_1_pa": 2e-8});
     let decision = |lub: &Value, p: f64, mode: &str| {
         let v = run("/v1/lubricants/viscosity", &json!({"lubricant": lub, "temperatures_c": [40.0], "pressures_pa": [p], "effects": {"piezoviscosity": mode}})).unwrap();
-        (v["effects"]["piezoviscosity"].clone(), v["result"]["points"][0]["dynamic_viscosity_pa_s"].as_f64().unwrap())
+        (
+            v["effects"]["piezoviscosity"].clone(),
+            v["result"]["points"][0]["dynamic_viscosity_pa_s"]
+                .as_f64()
+                .unwrap(),
+        )
     };
     let (d, _) = decision(&base, 1e8, "auto");
     assert_eq!(d["applied"], false);

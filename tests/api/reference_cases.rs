@@ -32,7 +32,11 @@ struct Expected {
 async fn every_reference_case_matches_its_source() {
     let app = spawn_app().await;
     let files = case_files();
-    assert!(files.len() >= 10, "expected the reference cases under tests/data, found {}", files.len());
+    assert!(
+        files.len() >= 10,
+        "expected the reference cases under tests/data, found {}",
+        files.len()
+    );
     let mut failures = Vec::new();
     for file in &files {
         let case: Case = serde_json::from_str(&std::fs::read_to_string(file).unwrap())
@@ -41,7 +45,11 @@ async fn every_reference_case_matches_its_source() {
         assert_eq!(reply.status, 200, "{}: {}", file.display(), reply.text);
         assert_all_finite(&reply.body, "");
         for want in &case.expected {
-            let got = reply.body.pointer(&want.pointer).and_then(Value::as_f64).unwrap_or(f64::NAN);
+            let got = reply
+                .body
+                .pointer(&want.pointer)
+                .and_then(Value::as_f64)
+                .unwrap_or(f64::NAN);
             let ok = match (want.rel_tol, want.abs_tol) {
                 (Some(rel), _) => ((got - want.value) / want.value).abs() <= rel,
                 (None, Some(abs)) => (got - want.value).abs() <= abs,

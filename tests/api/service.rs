@@ -17,7 +17,8 @@ async fn metrics_count_requests_by_route_and_status() {
     let app = spawn_app().await;
     let body = serde_json::json!({"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86});
     app.post_json("/v1/lubricants/viscosity-index", &body).await;
-    app.post_json("/v1/lubricants/viscosity-index", &serde_json::json!({})).await;
+    app.post_json("/v1/lubricants/viscosity-index", &serde_json::json!({}))
+        .await;
     let m = app.get("/metrics").await;
     assert!(m.content_type.starts_with("text/plain"));
     for line in [
@@ -48,13 +49,19 @@ async fn the_listing_names_every_calculation_with_a_working_example() {
 async fn the_served_openapi_is_the_committed_one() {
     let app = spawn_app().await;
     let served = app.get("/openapi.json").await.body;
-    let committed_text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/openapi/openapi.json")).unwrap();
+    let committed_text =
+        std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/openapi/openapi.json"))
+            .unwrap();
     let committed: Value = serde_json::from_str(&committed_text).unwrap();
     assert_eq!(
         served, committed,
         "openapi/openapi.json drifted from the code: regenerate with `cargo run -- openapi > openapi/openapi.json`"
     );
-    assert_eq!(committed_text, stribeck::http::openapi::document_json(), "regenerate openapi/openapi.json");
+    assert_eq!(
+        committed_text,
+        stribeck::http::openapi::document_json(),
+        "regenerate openapi/openapi.json"
+    );
     assert!(served["openapi"].as_str().unwrap().starts_with("3.1"));
 }
 
@@ -66,16 +73,25 @@ async fn every_request_field_is_documented() {
     let schemas = doc["components"]["schemas"].as_object().unwrap();
     let mut undocumented = Vec::new();
     for (name, schema) in schemas {
-        let Some(props) = schema["properties"].as_object() else { continue };
+        let Some(props) = schema["properties"].as_object() else {
+            continue;
+        };
         for (field, prop) in props {
-            let has_doc = prop.get("description").is_some_and(|d| !d.as_str().unwrap_or("").is_empty());
-            let is_ref = prop.get("$ref").is_some() || prop.get("oneOf").is_some() || prop.get("allOf").is_some();
+            let has_doc = prop
+                .get("description")
+                .is_some_and(|d| !d.as_str().unwrap_or("").is_empty());
+            let is_ref = prop.get("$ref").is_some()
+                || prop.get("oneOf").is_some()
+                || prop.get("allOf").is_some();
             if !has_doc && !is_ref {
                 undocumented.push(format!("{name}.{field}"));
             }
         }
     }
-    assert!(undocumented.is_empty(), "fields without a description: {undocumented:?}");
+    assert!(
+        undocumented.is_empty(),
+        "fields without a description: {undocumented:?}"
+    );
 }
 
 #[tokio::test]
@@ -83,8 +99,15 @@ async fn the_docs_ui_is_served_from_the_binary() {
     let app = spawn_app().await;
     let page = app.get("/docs/").await;
     assert_eq!(page.status, 200);
-    assert!(page.text.to_lowercase().contains("swagger"), "{}", &page.text[..page.text.len().min(300)]);
+    assert!(
+        page.text.to_lowercase().contains("swagger"),
+        "{}",
+        &page.text[..page.text.len().min(300)]
+    );
     let js = app.get("/docs/swagger-ui-bundle.js").await;
     assert_eq!(js.status, 200);
-    assert!(js.text.len() > 100_000, "the bundle is embedded, not fetched from a CDN");
+    assert!(
+        js.text.len() > 100_000,
+        "the bundle is embedded, not fetched from a CDN"
+    );
 }

@@ -39,7 +39,10 @@ fn table() -> &'static [(f64, f64, f64)] {
 /// L and H (mm²/s) for ν100 = y ≥ 2 mm²/s.
 pub fn reference_oils(y: f64) -> (f64, f64) {
     if y > TABLE_END_MM2_S {
-        return (0.8353 * y * y + 14.67 * y - 216.0, 0.1684 * y * y + 11.85 * y - 97.0);
+        return (
+            0.8353 * y * y + 14.67 * y - 216.0,
+            0.1684 * y * y + 11.85 * y - 97.0,
+        );
     }
     let rows = table();
     let i = rows.partition_point(|r| r.0 <= y).clamp(1, rows.len() - 1);
@@ -63,10 +66,20 @@ pub struct Vi {
 pub fn viscosity_index(u: f64, y: f64) -> Vi {
     let (l, h) = reference_oils(y);
     if u >= h {
-        Vi { value: 100.0 * (l - u) / (l - h), l, h, procedure_b: false }
+        Vi {
+            value: 100.0 * (l - u) / (l - h),
+            l,
+            h,
+            procedure_b: false,
+        }
     } else {
         let n = (h.ln() - u.ln()) / y.ln();
-        Vi { value: (10f64.powf(n) - 1.0) / 0.00715 + 100.0, l, h, procedure_b: true }
+        Vi {
+            value: (10f64.powf(n) - 1.0) / 0.00715 + 100.0,
+            l,
+            h,
+            procedure_b: true,
+        }
     }
 }
 
@@ -80,8 +93,13 @@ pub fn rounded(vi: f64) -> i64 {
 /// [2, ν40) finds it.
 pub fn kinematic_100c_for(nu40: f64, vi: f64) -> Option<f64> {
     let f = |y: f64| viscosity_index(nu40, y).value - vi;
-    let stop = Stopping { x_tolerance: 1e-9, max_iterations: 200 };
-    brent(f, LOWEST_NU100_MM2_S, nu40 * (1.0 - 1e-9), stop).ok().map(|r| r.x)
+    let stop = Stopping {
+        x_tolerance: 1e-9,
+        max_iterations: 200,
+    };
+    brent(f, LOWEST_NU100_MM2_S, nu40 * (1.0 - 1e-9), stop)
+        .ok()
+        .map(|r| r.x)
 }
 
 #[cfg(test)]
@@ -96,7 +114,9 @@ mod tests {
         // Transcription checksums.
         assert!((sl - 293891.363f64).abs() < 1e-6, "ΣL = {sl}");
         assert!((sh - 110746.508f64).abs() < 1e-6, "ΣH = {sh}");
-        assert!(rows.windows(2).all(|w| w[0].0 < w[1].0 && w[0].1 < w[1].1 && w[0].2 < w[1].2));
+        assert!(rows
+            .windows(2)
+            .all(|w| w[0].0 < w[1].0 && w[0].1 < w[1].1 && w[0].2 < w[1].2));
     }
 
     /// ASTM D2270 worked examples: (ν40, ν100, VI unrounded, VI reported). The standard's own
@@ -121,7 +141,10 @@ mod tests {
     #[test]
     fn interpolates_between_rows() {
         let (l, h) = reference_oils(8.86);
-        assert!((l - 119.94).abs() < 0.005 && (h - 69.48).abs() < 0.005, "{l} {h}");
+        assert!(
+            (l - 119.94).abs() < 0.005 && (h - 69.48).abs() < 0.005,
+            "{l} {h}"
+        );
     }
 
     /// Stachowiak & Batchelor §2.4 (spec R2.1): ν40 = 135, ν100 = 17 with L = 369.4, H = 180.2.

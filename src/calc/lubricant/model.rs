@@ -12,7 +12,11 @@ pub enum TemperatureLaw {
     /// Vogel (Stachowiak & Batchelor Table 2.1): μ = a·exp(b / (T − c)), T in K, μ in Pa·s.
     Vogel { a: f64, b: f64, c: f64 },
     /// Exponential (Reynolds) law (Khonsari & Booser Eq. 2.5): μ = μ_ref·exp(−β (T − T_ref)).
-    Exponential { reference_viscosity_pa_s: f64, reference_temperature_c: f64, beta_1_k: f64 },
+    Exponential {
+        reference_viscosity_pa_s: f64,
+        reference_temperature_c: f64,
+        beta_1_k: f64,
+    },
 }
 
 /// Viscosity against pressure at a fixed temperature.
@@ -31,7 +35,10 @@ pub enum Thermal {
     /// Petroleum-oil correlations (Khonsari & Booser Eq. 2.24, 2.25).
     PetroleumCorrelation,
     /// Constants given by the user.
-    Given { specific_heat_j_kg_k: f64, thermal_conductivity_w_m_k: f64 },
+    Given {
+        specific_heat_j_kg_k: f64,
+        thermal_conductivity_w_m_k: f64,
+    },
 }
 
 /// A lubricant ready for physics.
@@ -78,11 +85,14 @@ impl TemperatureLaw {
         let k1 = y12 * (t[0] - t[2]) * (t[1] + t[0]) + y13 * (t[1] - t[0]) * (t[0] + t[2]);
         let k0 = y12 * (t[2] - t[0]) * t[0] * t[1] - y13 * (t[1] - t[0]) * t[0] * t[2];
         let disc = k1 * k1 - 4.0 * k2 * k0;
-        if k2 == 0.0 || !(disc >= 0.0) {
+        if k2 == 0.0 || disc.is_nan() || disc < 0.0 {
             return None;
         }
         let t_min = t.iter().cloned().fold(f64::INFINITY, f64::min);
-        let roots = [(-k1 + disc.sqrt()) / (2.0 * k2), (-k1 - disc.sqrt()) / (2.0 * k2)];
+        let roots = [
+            (-k1 + disc.sqrt()) / (2.0 * k2),
+            (-k1 - disc.sqrt()) / (2.0 * k2),
+        ];
         roots.into_iter().find_map(|c| {
             let b = y12 * (t[0] * t[1] - c * (t[0] + t[1]) + c * c) / (t[1] - t[0]);
             let a = points[0].1 * (-b / (t[0] - c)).exp();
@@ -165,7 +175,10 @@ impl Lubricant {
     pub fn specific_heat_j_kg_k(&self, t_c: f64) -> f64 {
         match self.thermal {
             Thermal::PetroleumCorrelation => 1800.0 * (1.0 + 0.002 * t_c),
-            Thermal::Given { specific_heat_j_kg_k, .. } => specific_heat_j_kg_k,
+            Thermal::Given {
+                specific_heat_j_kg_k,
+                ..
+            } => specific_heat_j_kg_k,
         }
     }
 
@@ -173,7 +186,10 @@ impl Lubricant {
     pub fn thermal_conductivity_w_m_k(&self, t_c: f64) -> f64 {
         match self.thermal {
             Thermal::PetroleumCorrelation => 0.1312 * (1.0 - 6.3e-4 * t_c),
-            Thermal::Given { thermal_conductivity_w_m_k, .. } => thermal_conductivity_w_m_k,
+            Thermal::Given {
+                thermal_conductivity_w_m_k,
+                ..
+            } => thermal_conductivity_w_m_k,
         }
     }
 }
@@ -247,7 +263,9 @@ mod tests {
     #[test]
     fn vogel_fit_reproduces_the_viscosity_program_example() {
         let law = TemperatureLaw::vogel_through([(100.0, 0.0099), (60.0, 0.0351), (20.0, 0.387)]);
-        let Some(TemperatureLaw::Vogel { a, b, c }) = law else { panic!("no fit: {law:?}") };
+        let Some(TemperatureLaw::Vogel { a, b, c }) = law else {
+            panic!("no fit: {law:?}")
+        };
         assert!((a / 1.658e-4 - 1.0).abs() < 2e-3, "a = {a}");
         assert!((b / 692.13 - 1.0).abs() < 1e-3, "b = {b}");
         assert!((c / 203.91 - 1.0).abs() < 1e-3, "c = {c}");
@@ -255,13 +273,18 @@ mod tests {
 
     #[test]
     fn vogel_refuses_viscosity_rising_with_temperature() {
-        assert!(TemperatureLaw::vogel_through([(20.0, 0.01), (60.0, 0.02), (100.0, 0.05)]).is_none());
+        assert!(
+            TemperatureLaw::vogel_through([(20.0, 0.01), (60.0, 0.02), (100.0, 0.05)]).is_none()
+        );
     }
 
     /// Roelands at p = 0 is the identity; both laws rise monotonically with pressure.
     #[test]
     fn pressure_laws_start_at_one_and_rise() {
-        for law in [PressureLaw::Barus { alpha_1_pa: 2e-8 }, PressureLaw::Roelands { z: 0.6 }] {
+        for law in [
+            PressureLaw::Barus { alpha_1_pa: 2e-8 },
+            PressureLaw::Roelands { z: 0.6 },
+        ] {
             assert!((law.viscosity_ratio(0.03, 0.0) - 1.0).abs() < 1e-12);
             let mut last = 1.0;
             for i in 1..50 {

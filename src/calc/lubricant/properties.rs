@@ -44,7 +44,10 @@ impl Validate for PropertiesInput {
             )]);
         }
         let lubricant = self.lubricant.parse("/lubricant")?;
-        Ok(PropertiesCase { lubricant, temperatures_c: self.temperatures_c.iter().map(|t| t.get()).collect() })
+        Ok(PropertiesCase {
+            lubricant,
+            temperatures_c: self.temperatures_c.iter().map(|t| t.get()).collect(),
+        })
     }
 }
 
@@ -100,7 +103,8 @@ pub struct PropertiesOutput {
 
 impl Calculation for Properties {
     const PATH: &'static str = "/v1/lubricants/properties";
-    const SUMMARY: &'static str = "Density, thermal properties and pressure–viscosity estimates of a lubricant";
+    const SUMMARY: &'static str =
+        "Density, thermal properties and pressure–viscosity estimates of a lubricant";
     const DESCRIPTION: &'static str = "Density (Khonsari & Booser Eq. 2.19), specific heat and conductivity (Eq. 2.24, 2.25, for petroleum oils, \
 or the lubricant's given constants), diffusivity, the viscosity–temperature coefficient, and pressure–viscosity estimates: \
 Fein's Roelands Z (Eq. 2.11) with the EHL α of Eq. 2.13, and Wooster's α (Stachowiak & Batchelor §2.5).";
@@ -148,7 +152,11 @@ Fein's Roelands Z (Eq. 2.11) with the EHL α of Eq. 2.13, and Wooster's α (Stac
             });
         }
         if matches!(lub.thermal, Thermal::PetroleumCorrelation) {
-            if let Some(&t) = case.temperatures_c.iter().find(|&&t| !(0.0..=200.0).contains(&t)) {
+            if let Some(&t) = case
+                .temperatures_c
+                .iter()
+                .find(|&&t| !(0.0..=200.0).contains(&t))
+            {
                 ctx.warn(
                     "thermal_correlation_range",
                     format!("the petroleum-oil c_p and k correlations are for oils in service, about 0 … 200 °C; {t} °C is outside"),

@@ -96,8 +96,9 @@ pub struct ExponentialSpec {
 }
 
 /// ISO 3448 grades (mid-point ν40 in mm²/s).
-pub const ISO_VG_GRADES: [u32; 20] =
-    [2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200];
+pub const ISO_VG_GRADES: [u32; 20] = [
+    2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200,
+];
 
 /// Default density of a mineral oil at 15 °C, kg/m³.
 pub const DEFAULT_DENSITY_KG_M3: f64 = 870.0;
@@ -111,7 +112,10 @@ fn range_check(
 ) {
     if let Some(v) = value {
         if !(lo..=hi).contains(&v) {
-            errors.push(FieldError::new(pointer, format!("must be within [{lo}, {hi}], got {v}")));
+            errors.push(FieldError::new(
+                pointer,
+                format!("must be within [{lo}, {hi}], got {v}"),
+            ));
         }
     }
 }
@@ -123,8 +127,20 @@ impl LubricantSpec {
         let p = |field: &str| format!("{at}/{field}");
         let get = |v: Option<Positive>| v.map(Positive::get);
 
-        range_check(&mut errors, p("viscosity_pa_s"), get(self.viscosity_pa_s), 0.0, 1e4);
-        range_check(&mut errors, p("density_15c_kg_m3"), get(self.density_15c_kg_m3), 500.0, 2500.0);
+        range_check(
+            &mut errors,
+            p("viscosity_pa_s"),
+            get(self.viscosity_pa_s),
+            0.0,
+            1e4,
+        );
+        range_check(
+            &mut errors,
+            p("density_15c_kg_m3"),
+            get(self.density_15c_kg_m3),
+            500.0,
+            2500.0,
+        );
         range_check(
             &mut errors,
             p("pressure_viscosity_coefficient_1_pa"),
@@ -139,7 +155,13 @@ impl LubricantSpec {
             0.0,
             1.5,
         );
-        range_check(&mut errors, p("specific_heat_j_kg_k"), get(self.specific_heat_j_kg_k), 500.0, 1e4);
+        range_check(
+            &mut errors,
+            p("specific_heat_j_kg_k"),
+            get(self.specific_heat_j_kg_k),
+            500.0,
+            1e4,
+        );
         range_check(
             &mut errors,
             p("thermal_conductivity_w_m_k"),
@@ -147,9 +169,18 @@ impl LubricantSpec {
             0.01,
             1.0,
         );
-        range_check(&mut errors, p("viscosity_index"), self.viscosity_index, 0.0, 400.0);
+        range_check(
+            &mut errors,
+            p("viscosity_index"),
+            self.viscosity_index,
+            0.0,
+            400.0,
+        );
         if self.viscosity_index.is_some() && self.iso_vg.is_none() {
-            errors.push(FieldError::new(p("viscosity_index"), "is only used with iso_vg"));
+            errors.push(FieldError::new(
+                p("viscosity_index"),
+                "is only used with iso_vg",
+            ));
         }
 
         let given: Vec<&str> = [
@@ -157,7 +188,8 @@ impl LubricantSpec {
             ("iso_vg", self.iso_vg.is_some()),
             (
                 "kinematic_viscosity_40c_mm2_s",
-                self.kinematic_viscosity_40c_mm2_s.is_some() || self.kinematic_viscosity_100c_mm2_s.is_some(),
+                self.kinematic_viscosity_40c_mm2_s.is_some()
+                    || self.kinematic_viscosity_100c_mm2_s.is_some(),
             ),
             ("vogel", self.vogel.is_some()),
             ("exponential", self.exponential.is_some()),
@@ -169,7 +201,10 @@ impl LubricantSpec {
             let message = if given.is_empty() {
                 "give one viscosity description: viscosity_pa_s, iso_vg, kinematic_viscosity_40c_mm2_s with kinematic_viscosity_100c_mm2_s, vogel or exponential".to_owned()
             } else {
-                format!("give exactly one viscosity description, got {}", given.join(", "))
+                format!(
+                    "give exactly one viscosity description, got {}",
+                    given.join(", ")
+                )
             };
             errors.push(FieldError::new(at.to_owned(), message));
             return Err(errors);
@@ -188,11 +223,16 @@ impl LubricantSpec {
         };
 
         let temperature_law = if let Some(mu) = self.viscosity_pa_s {
-            Some(TemperatureLaw::Constant { viscosity_pa_s: mu.get() })
+            Some(TemperatureLaw::Constant {
+                viscosity_pa_s: mu.get(),
+            })
         } else if let Some(vg) = self.iso_vg {
             let vi = self.viscosity_index.unwrap_or(100.0);
             if !ISO_VG_GRADES.contains(&vg) {
-                errors.push(FieldError::new(p("iso_vg"), format!("must be an ISO 3448 grade, one of {ISO_VG_GRADES:?}")));
+                errors.push(FieldError::new(
+                    p("iso_vg"),
+                    format!("must be an ISO 3448 grade, one of {ISO_VG_GRADES:?}"),
+                ));
                 None
             } else {
                 let nu40 = f64::from(vg);
@@ -213,11 +253,16 @@ impl LubricantSpec {
                     }
                 }
             }
-        } else if self.kinematic_viscosity_40c_mm2_s.is_some() || self.kinematic_viscosity_100c_mm2_s.is_some() {
-            match (self.kinematic_viscosity_40c_mm2_s, self.kinematic_viscosity_100c_mm2_s) {
-                (Some(n40), Some(n100)) if n100.get() < n40.get() && n40.get() <= 1e6 => {
-                    Some(TemperatureLaw::walther_through(40.0, n40.get(), 100.0, n100.get()))
-                }
+        } else if self.kinematic_viscosity_40c_mm2_s.is_some()
+            || self.kinematic_viscosity_100c_mm2_s.is_some()
+        {
+            match (
+                self.kinematic_viscosity_40c_mm2_s,
+                self.kinematic_viscosity_100c_mm2_s,
+            ) {
+                (Some(n40), Some(n100)) if n100.get() < n40.get() && n40.get() <= 1e6 => Some(
+                    TemperatureLaw::walther_through(40.0, n40.get(), 100.0, n100.get()),
+                ),
                 (Some(_), Some(_)) => {
                     errors.push(FieldError::new(
                         p("kinematic_viscosity_100c_mm2_s"),
@@ -226,21 +271,33 @@ impl LubricantSpec {
                     None
                 }
                 (None, _) => {
-                    errors.push(FieldError::new(p("kinematic_viscosity_40c_mm2_s"), "is required with kinematic_viscosity_100c_mm2_s"));
+                    errors.push(FieldError::new(
+                        p("kinematic_viscosity_40c_mm2_s"),
+                        "is required with kinematic_viscosity_100c_mm2_s",
+                    ));
                     None
                 }
                 (_, None) => {
-                    errors.push(FieldError::new(p("kinematic_viscosity_100c_mm2_s"), "is required with kinematic_viscosity_40c_mm2_s"));
+                    errors.push(FieldError::new(
+                        p("kinematic_viscosity_100c_mm2_s"),
+                        "is required with kinematic_viscosity_40c_mm2_s",
+                    ));
                     None
                 }
             }
         } else if let Some(vogel) = &self.vogel {
             if vogel.points.len() != 3 {
-                errors.push(FieldError::new(p("vogel/points"), format!("must hold exactly 3 points, got {}", vogel.points.len())));
+                errors.push(FieldError::new(
+                    p("vogel/points"),
+                    format!("must hold exactly 3 points, got {}", vogel.points.len()),
+                ));
                 None
             } else {
-                let pts: Vec<(f64, f64)> =
-                    vogel.points.iter().map(|q| (q.temperature_c.get(), q.viscosity_pa_s.get())).collect();
+                let pts: Vec<(f64, f64)> = vogel
+                    .points
+                    .iter()
+                    .map(|q| (q.temperature_c.get(), q.viscosity_pa_s.get()))
+                    .collect();
                 let fit = TemperatureLaw::vogel_through([pts[0], pts[1], pts[2]]);
                 if fit.is_none() {
                     errors.push(FieldError::new(
@@ -252,7 +309,10 @@ impl LubricantSpec {
             }
         } else if let Some(e) = self.exponential {
             if !(0.0..=1.0).contains(&e.temperature_coefficient_1_k) {
-                errors.push(FieldError::new(p("exponential/temperature_coefficient_1_k"), "must be within [0, 1]"));
+                errors.push(FieldError::new(
+                    p("exponential/temperature_coefficient_1_k"),
+                    "must be within [0, 1]",
+                ));
             }
             Some(TemperatureLaw::Exponential {
                 reference_viscosity_pa_s: e.reference_viscosity_pa_s.get(),
@@ -263,7 +323,10 @@ impl LubricantSpec {
             None
         };
 
-        let pressure_law = match (self.pressure_viscosity_coefficient_1_pa, self.roelands_pressure_viscosity_index) {
+        let pressure_law = match (
+            self.pressure_viscosity_coefficient_1_pa,
+            self.roelands_pressure_viscosity_index,
+        ) {
             (Some(_), Some(_)) => {
                 errors.push(FieldError::new(
                     p("roelands_pressure_viscosity_index"),
@@ -271,20 +334,31 @@ impl LubricantSpec {
                 ));
                 None
             }
-            (Some(alpha), None) => Some(PressureLaw::Barus { alpha_1_pa: alpha.get() }),
+            (Some(alpha), None) => Some(PressureLaw::Barus {
+                alpha_1_pa: alpha.get(),
+            }),
             (None, Some(z)) => Some(PressureLaw::Roelands { z: z.get() }),
             (None, None) => None,
         };
 
         let thermal = match (self.specific_heat_j_kg_k, self.thermal_conductivity_w_m_k) {
             (None, None) => Thermal::PetroleumCorrelation,
-            (Some(c), Some(k)) => Thermal::Given { specific_heat_j_kg_k: c.get(), thermal_conductivity_w_m_k: k.get() },
+            (Some(c), Some(k)) => Thermal::Given {
+                specific_heat_j_kg_k: c.get(),
+                thermal_conductivity_w_m_k: k.get(),
+            },
             (Some(_), None) => {
-                errors.push(FieldError::new(p("thermal_conductivity_w_m_k"), "is required with specific_heat_j_kg_k"));
+                errors.push(FieldError::new(
+                    p("thermal_conductivity_w_m_k"),
+                    "is required with specific_heat_j_kg_k",
+                ));
                 Thermal::PetroleumCorrelation
             }
             (None, Some(_)) => {
-                errors.push(FieldError::new(p("specific_heat_j_kg_k"), "is required with thermal_conductivity_w_m_k"));
+                errors.push(FieldError::new(
+                    p("specific_heat_j_kg_k"),
+                    "is required with thermal_conductivity_w_m_k",
+                ));
                 Thermal::PetroleumCorrelation
             }
         };

@@ -11,7 +11,11 @@ pub const WALTHER_LOWEST_MM2_S: f64 = 2.0;
 
 /// Check every temperature against the law's range: warnings outside validity, a 422 where the
 /// law diverges (at or below Vogel's c).
-pub fn check_temperatures(ctx: &mut Context, lub: &Lubricant, temperatures_c: &[f64]) -> Result<(), CalcError> {
+pub fn check_temperatures(
+    ctx: &mut Context,
+    lub: &Lubricant,
+    temperatures_c: &[f64],
+) -> Result<(), CalcError> {
     if let TemperatureLaw::Vogel { c, .. } = lub.temperature_law {
         let c_celsius = c - 273.15;
         if let Some(i) = temperatures_c.iter().position(|&t| t <= c_celsius + 1.0) {
@@ -22,7 +26,10 @@ pub fn check_temperatures(ctx: &mut Context, lub: &Lubricant, temperatures_c: &[
         }
     }
     if let TemperatureLaw::Walther { .. } = lub.temperature_law {
-        if let Some(&t) = temperatures_c.iter().find(|&&t| lub.kinematic_mm2_s(t) < WALTHER_LOWEST_MM2_S) {
+        if let Some(&t) = temperatures_c
+            .iter()
+            .find(|&&t| lub.kinematic_mm2_s(t) < WALTHER_LOWEST_MM2_S)
+        {
             ctx.warn(
                 "walther_below_2_mm2_s",
                 format!("at {t} °C the Walther law gives below {WALTHER_LOWEST_MM2_S} mm²/s, where ASTM D341's two-constant form loses accuracy"),
@@ -53,7 +60,10 @@ pub fn check_temperatures(ctx: &mut Context, lub: &Lubricant, temperatures_c: &[
 /// that its viscosity would fall with pressure.
 pub fn check_pressure_law(lub: &Lubricant, temperatures_c: &[f64]) -> Result<(), CalcError> {
     if let Some(PressureLaw::Roelands { .. }) = lub.pressure_law {
-        if let Some(i) = temperatures_c.iter().position(|&t| (lub.viscosity_pa_s(t) * 1e3).log10() + 1.2 <= 0.0) {
+        if let Some(i) = temperatures_c
+            .iter()
+            .position(|&t| (lub.viscosity_pa_s(t) * 1e3).log10() + 1.2 <= 0.0)
+        {
             return Err(CalcError::impossible(
                 &format!("/temperatures_c/{i}"),
                 "Roelands' pressure–viscosity law needs a viscosity above 6.3e-5 Pa·s at the temperature; use the Barus coefficient for so thin a fluid",

@@ -69,10 +69,16 @@ impl Validate for ViscosityInput {
             pressures_pa.push(0.0);
         }
         if temperatures_c.is_empty() {
-            errors.push(FieldError::new("/temperatures_c", "must hold at least one temperature"));
+            errors.push(FieldError::new(
+                "/temperatures_c",
+                "must hold at least one temperature",
+            ));
         }
         if let Some(i) = pressures_pa.iter().position(|&p| p > MAX_PRESSURE_PA) {
-            errors.push(FieldError::new(format!("/pressures_pa/{i}"), format!("must be within [0, {MAX_PRESSURE_PA:e}] Pa")));
+            errors.push(FieldError::new(
+                format!("/pressures_pa/{i}"),
+                format!("must be within [0, {MAX_PRESSURE_PA:e}] Pa"),
+            ));
         }
         if temperatures_c.len().saturating_mul(pressures_pa.len()) > MAX_POINTS {
             errors.push(FieldError::new(
@@ -96,7 +102,12 @@ impl Validate for ViscosityInput {
                 "is on, but the lubricant has no pressure–viscosity law: give pressure_viscosity_coefficient_1_pa or roelands_pressure_viscosity_index",
             )]);
         }
-        Ok(ViscosityCase { lubricant, temperatures_c, pressures_pa, effects })
+        Ok(ViscosityCase {
+            lubricant,
+            temperatures_c,
+            pressures_pa,
+            effects,
+        })
     }
 }
 
@@ -133,7 +144,8 @@ pub struct ViscosityOutput {
 
 impl Calculation for Viscosity {
     const PATH: &'static str = "/v1/lubricants/viscosity";
-    const SUMMARY: &'static str = "Viscosity and density of a lubricant against temperature and pressure";
+    const SUMMARY: &'static str =
+        "Viscosity and density of a lubricant against temperature and pressure";
     const DESCRIPTION: &'static str = "Dynamic and kinematic viscosity and density at every requested temperature and gauge pressure. \
 Temperature laws: constant, Walther/ASTM D341 two-point (Khonsari & Booser Eq. 2.3), Vogel three-point (Stachowiak & Batchelor Table 2.1), exponential (Khonsari & Booser Eq. 2.5), ISO VG presets. \
 Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density with temperature Eq. 2.19 and with pressure Dowson–Higginson (Eq. 2.20).";
@@ -151,9 +163,17 @@ Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density
         if lub.pressure_law.is_some() && p_max > 0.0 && case.effects.piezoviscosity != Mode::Off {
             validity::check_pressure_law(lub, &case.temperatures_c)?;
         }
-        let pressure_law = decide_piezoviscosity(ctx, lub, &case.temperatures_c, p_max, case.effects.piezoviscosity);
+        let pressure_law = decide_piezoviscosity(
+            ctx,
+            lub,
+            &case.temperatures_c,
+            p_max,
+            case.effects.piezoviscosity,
+        );
         let compressible = decide_compressibility(ctx, p_max, case.effects.compressibility);
-        if let (Some(PressureLaw::Barus { .. }), true) = (pressure_law, p_max > validity::BARUS_LIMIT_PA) {
+        if let (Some(PressureLaw::Barus { .. }), true) =
+            (pressure_law, p_max > validity::BARUS_LIMIT_PA)
+        {
             ctx.warn(
                 "barus_above_70_mpa",
                 format!("Barus' law overestimates viscosity above about 70 MPa (Khonsari & Booser §2.5); the highest pressure asked is {p_max:.3e} Pa: prefer roelands_pressure_viscosity_index"),
@@ -169,7 +189,11 @@ Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density
                     ctx.check_deadline()?;
                 }
                 let mu = pressure_law.map_or(mu0, |law| mu0 * law.viscosity_ratio(mu0, p));
-                let rho = if compressible { rho0 * dowson_higginson_density_ratio(p) } else { rho0 };
+                let rho = if compressible {
+                    rho0 * dowson_higginson_density_ratio(p)
+                } else {
+                    rho0
+                };
                 if !(mu.is_finite() && mu > 0.0) {
                     return Err(CalcError::impossible(
                         "/pressures_pa",
@@ -192,7 +216,12 @@ Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density
         Ok(ViscosityOutput {
             temperature_model: lub.temperature_law.name().to_owned(),
             pressure_model: pressure_law.map_or("none", PressureLaw::name).to_owned(),
-            density_pressure_model: if compressible { "dowson_higginson" } else { "none" }.to_owned(),
+            density_pressure_model: if compressible {
+                "dowson_higginson"
+            } else {
+                "none"
+            }
+            .to_owned(),
             points,
         })
     }
@@ -207,14 +236,21 @@ fn decide_piezoviscosity(
     mode: Mode,
 ) -> Option<PressureLaw> {
     let Some(law) = lub.pressure_law else {
-        ctx.decide("piezoviscosity", Decision::not_applicable(mode, "the lubricant has no pressure–viscosity law"));
+        ctx.decide(
+            "piezoviscosity",
+            Decision::not_applicable(mode, "the lubricant has no pressure–viscosity law"),
+        );
         return None;
     };
     let rise = temperatures_c
         .iter()
         .map(|&t| law.viscosity_ratio(lub.viscosity_pa_s(t), p_max) - 1.0)
         .fold(0.0, f64::max);
-    let criterion = Criterion { name: "viscosity_rise_at_max_pressure", value: finite_or_max(rise), threshold: 0.01 };
+    let criterion = Criterion {
+        name: "viscosity_rise_at_max_pressure",
+        value: finite_or_max(rise),
+        threshold: 0.01,
+    };
     let decision = Decision::decide(mode, criterion, "piezoviscosity");
     let applied = decision.applied;
     ctx.decide("piezoviscosity", decision);
@@ -224,7 +260,11 @@ fn decide_piezoviscosity(
 /// Compressibility: the Dowson–Higginson density rise at the highest pressure against 1 %.
 fn decide_compressibility(ctx: &mut Context, p_max: f64, mode: Mode) -> bool {
     let rise = dowson_higginson_density_ratio(p_max) - 1.0;
-    let criterion = Criterion { name: "density_rise_at_max_pressure", value: rise, threshold: 0.01 };
+    let criterion = Criterion {
+        name: "density_rise_at_max_pressure",
+        value: rise,
+        threshold: 0.01,
+    };
     let decision = Decision::decide(mode, criterion, "compressibility");
     let applied = decision.applied;
     ctx.decide("compressibility", decision);
@@ -232,5 +272,9 @@ fn decide_compressibility(ctx: &mut Context, p_max: f64, mode: Mode) -> bool {
 }
 
 fn finite_or_max(x: f64) -> f64 {
-    if x.is_finite() { x } else { f64::MAX }
+    if x.is_finite() {
+        x
+    } else {
+        f64::MAX
+    }
 }

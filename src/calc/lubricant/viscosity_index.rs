@@ -49,13 +49,16 @@ impl Validate for ViscosityIndexInput {
                 )])
             }
         };
-        if !(nu100 >= astm_d2270::LOWEST_NU100_MM2_S) || !nu100.is_finite() {
+        if nu100.is_nan() || nu100 < astm_d2270::LOWEST_NU100_MM2_S || !nu100.is_finite() {
             return Err(vec![FieldError::new(
                 at,
-                format!("ASTM D2270 needs ν100 ≥ {} mm²/s, got {nu100}", astm_d2270::LOWEST_NU100_MM2_S),
+                format!(
+                    "ASTM D2270 needs ν100 ≥ {} mm²/s, got {nu100}",
+                    astm_d2270::LOWEST_NU100_MM2_S
+                ),
             )]);
         }
-        if !(nu40 > nu100) || !nu40.is_finite() || nu40 > 1e6 || nu100 > 1e5 {
+        if nu40.is_nan() || nu40 <= nu100 || !nu40.is_finite() || nu40 > 1e6 || nu100 > 1e5 {
             return Err(vec![FieldError::new(
                 at,
                 format!("need ν100 < ν40 (ν40 ≤ 1e6, ν100 ≤ 1e5 mm²/s), got ν40 = {nu40}, ν100 = {nu100}"),
@@ -96,7 +99,8 @@ impl Calculation for ViscosityIndex {
 with the reference-oil viscosities L and H over the standard's whole ν100 range (2 mm²/s upward; the quadratic laws above 70 mm²/s).";
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
-    const EXAMPLE: &'static str = r#"{"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86}"#;
+    const EXAMPLE: &'static str =
+        r#"{"kinematic_viscosity_40c_mm2_s": 73.3, "kinematic_viscosity_100c_mm2_s": 8.86}"#;
 
     type Input = ViscosityIndexInput;
     type Output = ViscosityIndexOutput;
@@ -104,10 +108,16 @@ with the reference-oil viscosities L and H over the standard's whole ν100 range
     fn run(case: ViscosityIndexCase, ctx: &mut Context) -> Result<ViscosityIndexOutput, CalcError> {
         let vi = astm_d2270::viscosity_index(case.nu40, case.nu100);
         if !vi.value.is_finite() {
-            return Err(CalcError::impossible("", "the viscosity index is not finite for these viscosities"));
+            return Err(CalcError::impossible(
+                "",
+                "the viscosity index is not finite for these viscosities",
+            ));
         }
         if vi.value < 0.0 {
-            ctx.warn("negative_viscosity_index", "the oil thins faster with temperature than the VI = 0 reference oil");
+            ctx.warn(
+                "negative_viscosity_index",
+                "the oil thins faster with temperature than the VI = 0 reference oil",
+            );
         }
         ctx.report(SolverReport::closed_form("closed_form"));
         Ok(ViscosityIndexOutput {
