@@ -31,15 +31,15 @@ impl Histogram {
 
     fn render(&self, out: &mut String, name: &str, route: &str) {
         for (bound, n) in BUCKETS_S.iter().zip(self.counts.iter()) {
-            let _ = writeln!(out, "{name}_bucket{{route=\"{route}\",le=\"{bound}\"}} {n}");
+            let _ = writeln!(out, "{name}_bucket{{path=\"{route}\",le=\"{bound}\"}} {n}");
         }
         let _ = writeln!(
             out,
-            "{name}_bucket{{route=\"{route}\",le=\"+Inf\"}} {}",
+            "{name}_bucket{{path=\"{route}\",le=\"+Inf\"}} {}",
             self.count
         );
-        let _ = writeln!(out, "{name}_sum{{route=\"{route}\"}} {}", self.sum);
-        let _ = writeln!(out, "{name}_count{{route=\"{route}\"}} {}", self.count);
+        let _ = writeln!(out, "{name}_sum{{path=\"{route}\"}} {}", self.sum);
+        let _ = writeln!(out, "{name}_count{{path=\"{route}\"}} {}", self.count);
     }
 }
 
@@ -79,7 +79,7 @@ impl Metrics {
         for ((route, status), n) in &m.requests {
             let _ = writeln!(
                 out,
-                "stribeck_requests_total{{route=\"{route}\",status=\"{status}\"}} {n}"
+                "stribeck_requests_total{{path=\"{route}\",status=\"{status}\"}} {n}"
             );
         }
         out.push_str(
@@ -112,19 +112,19 @@ mod tests {
         m.record("/a", 422, 0.0001, None);
         let text = m.render();
         assert!(
-            text.contains("stribeck_requests_total{route=\"/a\",status=\"200\"} 2"),
+            text.contains("stribeck_requests_total{path=\"/a\",status=\"200\"} 2"),
             "{text}"
         );
         assert!(
-            text.contains("stribeck_request_duration_seconds_bucket{route=\"/a\",le=\"0.0025\"} 2"),
+            text.contains("stribeck_request_duration_seconds_bucket{path=\"/a\",le=\"0.0025\"} 2"),
             "{text}"
         );
         assert!(
-            text.contains("stribeck_request_duration_seconds_count{route=\"/a\"} 3"),
+            text.contains("stribeck_request_duration_seconds_count{path=\"/a\"} 3"),
             "{text}"
         );
         assert!(
-            text.contains("stribeck_solver_duration_seconds_count{route=\"/a\"} 1"),
+            text.contains("stribeck_solver_duration_seconds_count{path=\"/a\"} 1"),
             "{text}"
         );
     }

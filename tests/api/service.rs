@@ -22,10 +22,10 @@ async fn metrics_count_requests_by_route_and_status() {
     let m = app.get("/metrics").await;
     assert!(m.content_type.starts_with("text/plain"));
     for line in [
-        "stribeck_requests_total{route=\"/v1/lubricants/viscosity-index\",status=\"200\"} 1",
-        "stribeck_requests_total{route=\"/v1/lubricants/viscosity-index\",status=\"422\"} 1",
-        "stribeck_solver_duration_seconds_count{route=\"/v1/lubricants/viscosity-index\"} 1",
-        "stribeck_request_duration_seconds_count{route=\"/v1/lubricants/viscosity-index\"} 2",
+        "stribeck_requests_total{path=\"/v1/lubricants/viscosity-index\",status=\"200\"} 1",
+        "stribeck_requests_total{path=\"/v1/lubricants/viscosity-index\",status=\"422\"} 1",
+        "stribeck_solver_duration_seconds_count{path=\"/v1/lubricants/viscosity-index\"} 1",
+        "stribeck_request_duration_seconds_count{path=\"/v1/lubricants/viscosity-index\"} 2",
     ] {
         assert!(m.text.contains(line), "missing {line}\n{}", m.text);
     }
