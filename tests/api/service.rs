@@ -65,8 +65,8 @@ async fn the_served_openapi_is_the_committed_one() {
     assert!(served["openapi"].as_str().unwrap().starts_with("3.1"));
 }
 
-/// Every property of every request schema says what it is (unit and range live in the
-/// description, or in minimum/maximum).
+/// Every property of every schema says what it is (unit and range live in the description, or
+/// in minimum/maximum); every request field that takes a value also carries an example.
 #[tokio::test]
 async fn every_request_field_is_documented() {
     let doc: Value = serde_json::from_str(&stribeck::http::openapi::document_json()).unwrap();
@@ -85,6 +85,11 @@ async fn every_request_field_is_documented() {
                 || prop.get("allOf").is_some();
             if !has_doc && !is_ref {
                 undocumented.push(format!("{name}.{field}"));
+            }
+            let is_request =
+                name.ends_with("Input") || name.ends_with("Spec") || name == "VogelPoint";
+            if is_request && !is_ref && prop.get("example").is_none() {
+                undocumented.push(format!("{name}.{field} (no example)"));
             }
         }
     }

@@ -64,7 +64,7 @@ pub struct LubricantSpec {
 #[serde(deny_unknown_fields)]
 pub struct VogelSpec {
     /// Exactly three points at distinct temperatures, viscosity falling as temperature rises.
-    #[schema(min_items = 3, max_items = 3)]
+    #[schema(min_items = 3, max_items = 3, example = json!([{"temperature_c": 20.0, "viscosity_pa_s": 0.387}, {"temperature_c": 60.0, "viscosity_pa_s": 0.0351}, {"temperature_c": 100.0, "viscosity_pa_s": 0.0099}]))]
     pub points: Vec<VogelPoint>,
 }
 
