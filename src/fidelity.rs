@@ -1,10 +1,10 @@
 //! Fidelity levels and the solver report every result carries (DESIGN.md §3).
 
-use serde::Serialize;
+use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 /// A fidelity level a calculation offers.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum Level {
     /// An analytic or approximate closed form.
@@ -48,5 +48,35 @@ impl SolverReport {
             error_estimate: None,
             elapsed_ms: 0.0,
         }
+    }
+}
+
+/// What a request asks for: a level, or an explicit grid and/or tolerance (the level is then
+/// `standard` with those settings).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[serde(untagged)]
+pub enum FidelityRequest {
+    /// `closed_form`, `fast`, `standard` (the default) or `high`.
+    Level(Level),
+    /// An explicit grid `[circumferential cells, axial cells over the half-length]` and/or
+    /// relative tolerance of the iterative solve.
+    Custom(CustomFidelity),
+}
+
+/// Explicit numerical settings.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct CustomFidelity {
+    /// Cells [along the sliding direction, across]; see the calculation for the ranges.
+    #[schema(example = json!([96, 12]))]
+    pub grid: Option<[u32; 2]>,
+    /// Relative change per sweep at which the iteration stops (1e-14 … 1e-3).
+    #[schema(example = 1e-8)]
+    pub tolerance: Option<f64>,
+}
+
+impl Default for FidelityRequest {
+    fn default() -> Self {
+        FidelityRequest::Level(Level::Standard)
     }
 }

@@ -85,6 +85,12 @@ impl Context {
         }
     }
 
+    /// A cheap handle numerics can poll without borrowing the context: true while the request
+    /// is neither late nor cancelled.
+    pub fn budget(&self) -> Budget {
+        Budget { deadline: self.deadline, cancelled: self.cancelled.clone() }
+    }
+
     /// Record the decision on one effect.
     pub fn decide(&mut self, effect: &'static str, decision: Decision) {
         self.effects.insert(effect, decision);
@@ -102,5 +108,18 @@ impl Context {
     /// Set the solver report (its `elapsed_ms` is filled in by the caller).
     pub fn report(&mut self, report: SolverReport) {
         self.report = Some(report);
+    }
+}
+
+/// See [`Context::budget`].
+#[derive(Debug, Clone)]
+pub struct Budget {
+    deadline: Instant,
+    cancelled: Arc<AtomicBool>,
+}
+
+impl Budget {
+    pub fn alive(&self) -> bool {
+        !self.cancelled.load(Ordering::Relaxed) && Instant::now() < self.deadline
     }
 }

@@ -1,13 +1,14 @@
 //! The rooms: one folder per calculation family. Nothing here knows about HTTP; the door
 //! (`crate::http`) and the CLI (`stribeck run`) both go through [`execute`].
 
+pub mod journal;
 pub mod lubricant;
 pub mod quantity;
 
 mod context;
 mod registry;
 
-pub use context::{CalcError, Context, Warning};
+pub use context::{Budget, CalcError, Context, Warning};
 pub use registry::{execute, find, Entry, Envelope, Executed, Failure, FieldError, REGISTRY};
 
 use serde::de::DeserializeOwned;

@@ -1,0 +1,263 @@
+//! The pressure field of a plain 360° journal bearing, solved numerically, and the performance
+//! numbers integrated from it, in Table 8.6 conventions (Khonsari & Booser §8.12, Eq. 8.36–8.44).
+//!
+//! Reynolds equation (Eq. 8.36), isoviscous, aligned journal:
+//!
+//! ```text
+//! ∂θ(h̄³ ∂θ P̄) + (1/(4λ²)) ∂ȳ(h̄³ ∂ȳ P̄) = 12π ∂θ h̄,   h̄ = 1 + ε cos θ
+//! ```
+//!
+//! with P̄ = (p − p_s)(C/R)²/(μ N_s), N_s in rev/s, λ = L/D, ȳ = y/L, θ from h_max in the
+//! direction of rotation. The film starts at h_max (P̄ = 0 there: the feed line), P̄ = 0 at both
+//! ends; cavitation by the Reynolds condition (P̄ ≥ 0). The mid-plane is a symmetry plane, so
+//! half the length is solved. Nodes along θ cluster towards h_min, where the pressure spikes at
+//! high eccentricity: θ(s) = s + κ sin s on a uniform s, κ = 0.75 ε.
+
+use std::f64::consts::PI;
+
+use crate::numerics::reynolds::{self, at, Grid, Problem, SolveError, Solved, Stencil, Stopping};
+
+
+/// Cells around the circumference and across the half-length.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Mesh {
+    pub circumferential: usize,
+    pub axial_half: usize,
+}
+
+/// Everything the numbers of Table 8.6 are made from, for one solve.
+#[derive(Debug, Clone, PartialEq)]
+pub struct FilmSolution {
+    /// Dimensionless load components (∫∫ P̄ dθ dȳ over the full length): along the line of
+    /// centres towards h_max, and perpendicular to it, against the rotation.
+    pub load_radial: f64,
+    pub load_tangential: f64,
+    /// P̄_max and its angle from h_max, rad (mid-plane).
+    pub max_pressure_bar: f64,
+    pub max_pressure_angle: f64,
+    /// Film rupture angle from h_max on the mid-plane, rad (2π when the film never ruptures).
+    pub cavitation_angle: f64,
+    /// Q_L/((π/2) N_s D L C), both ends.
+    pub side_leakage_bar: f64,
+    /// Q_i/((π/2) N_s D L C) at the feed line θ = 0.
+    pub inlet_flow_bar: f64,
+    pub solved: Solved,
+}
+
+impl FilmSolution {
+    /// S = μ N_s L D (R/C)²/W = 2 / |∫∫ P̄|.
+    pub fn sommerfeld_number(&self) -> f64 {
+        2.0 / self.load_radial.hypot(self.load_tangential)
+    }
+    /// Attitude angle φ between the load line and the line of centres, rad.
+    pub fn attitude_angle(&self) -> f64 {
+        self.load_tangential.atan2(self.load_radial)
+    }
+}
+
+/// The θ grid: nodes clustered towards h_min.
+pub fn circumferential_nodes(cells: usize, eps: f64) -> Vec<f64> {
+    let kappa = 0.75 * eps.clamp(0.0, 1.0);
+    (0..=cells)
+        .map(|i| {
+            let s = 2.0 * PI * i as f64 / cells as f64;
+            s + kappa * s.sin()
+        })
+        .collect()
+}
+
+pub fn grid(mesh: Mesh, eps: f64) -> Grid {
+    Grid { x: circumferential_nodes(mesh.circumferential, eps), ny: mesh.axial_half, width: 0.5, symmetric: true }
+}
+
+/// The film's shape and motion: h̄ = 1 + A cos θ + B sin θ with ∂h̄/∂τ = Ȧ cos θ + Ḃ sin θ
+/// (τ = N_s t). At equilibrium A = ε, B = 0 and the film is still; the dynamic coefficients
+/// perturb A, B, Ȧ and Ḃ about it on the same grid and with the same feed line.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Film {
+    pub eccentricity_ratio: f64,
+    pub l_over_d: f64,
+    pub cos_offset: f64,
+    pub sin_offset: f64,
+    pub cos_rate: f64,
+    pub sin_rate: f64,
+    /// Reynolds cavitation (p ≥ 0); false keeps the full (Sommerfeld) film with its negative
+    /// pressures.
+    pub cavitation: bool,
+}
+
+impl Film {
+    /// The aligned, steady film at eccentricity ratio ε.
+    pub fn steady(eccentricity_ratio: f64, l_over_d: f64) -> Film {
+        Film { eccentricity_ratio, l_over_d, cos_offset: 0.0, sin_offset: 0.0, cos_rate: 0.0, sin_rate: 0.0, cavitation: true }
+    }
+    fn a(&self) -> f64 {
+        self.eccentricity_ratio + self.cos_offset
+    }
+    /// h̄(θ).
+    pub fn thickness(&self, theta: f64) -> f64 {
+        1.0 + self.a() * theta.cos() + self.sin_offset * theta.sin()
+    }
+}
+
+/// Solve `film` on `mesh` (nodes clustered for its nominal ε), starting from `start` (a field on
+/// the same grid) when given.
+pub fn solve(
+    film: Film,
+    mesh: Mesh,
+    stop: Stopping,
+    start: Option<Vec<f64>>,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<(FilmSolution, Vec<f64>), SolveError> {
+    let g = grid(mesh, film.eccentricity_ratio);
+    let thickness = move |theta: f64, _y: f64| film.thickness(theta);
+    let squeeze = move |theta: f64, _y: f64| 12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin());
+    let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
+    let problem = Problem {
+        film: &thickness,
+        anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
+        wedge: 12.0 * PI,
+        source: if moving { Some(&squeeze) } else { None },
+    };
+    let stencil = Stencil::assemble(&g, &problem);
+    let mut p = start.unwrap_or_else(|| vec![0.0; (g.nx() + 1) * (g.ny + 1)]);
+    let omega = stencil.sor_factor(&g);
+    let solved = reynolds::solve(&stencil, omega, &mut p, film.cavitation, stop, keep_going)?;
+    Ok((integrate(&g, &p, &film, solved), p))
+}
+
+/// Solve on `mesh` after a solve on the mesh with half the cells each way, whose field starts
+/// the fine one. Returns (fine, coarse, fine field): the pair gives the discretisation error.
+pub fn solve_nested(
+    film: Film,
+    mesh: Mesh,
+    stop: Stopping,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
+    let coarse_mesh = Mesh { circumferential: mesh.circumferential / 2, axial_half: (mesh.axial_half / 2).max(2) };
+    let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
+    let eps = film.eccentricity_ratio;
+    let start = reynolds::prolong(&grid(coarse_mesh, eps), &pc, &grid(mesh, eps));
+    let (fine, p) = solve(film, mesh, stop, Some(start), keep_going)?;
+    Ok((fine, coarse, p))
+}
+
+fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
+    let h = |theta: f64| film.thickness(theta);
+    let l_over_d = film.l_over_d;
+    let (mut radial, mut tangential) = (0.0, 0.0);
+    for j in 0..=g.ny {
+        for i in 0..=g.nx() {
+            let w = g.cv_x(i) * g.cv_y(j) * 2.0; // both halves of the length
+            let v = p[at(g, i, j)];
+            radial -= v * g.x[i].cos() * w;
+            tangential += v * g.x[i].sin() * w;
+        }
+    }
+
+    // Peak and rupture on the mid-plane row.
+    let mid: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, g.ny)]).collect();
+    let imax = mid.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)).map_or(0, |m| m.0);
+    let (max_pressure_bar, max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
+    let cavitation_angle = match (imax..=g.nx()).find(|&i| mid[i] <= 0.0) {
+        Some(k) if k > imax && k < g.nx() && mid[k - 1] > 0.0 => {
+            // Near rupture p ~ (θc − θ)²: √p is linear; extrapolate it to zero.
+            let (a, b) = (mid[k - 1].sqrt(), if k >= 2 { mid[k - 2].sqrt() } else { 0.0 });
+            let (ta, tb) = (g.x[k - 1], if k >= 2 { g.x[k - 2] } else { g.x[k - 1] });
+            if b > a { (ta + a * (ta - tb) / (b - a)).min(g.x[k]) } else { g.x[k] }
+        }
+        Some(k) => g.x[k],
+        None => 2.0 * PI,
+    };
+
+    // Side leakage: h³ ∂P/∂ȳ at the edge ȳ = 0 (second-order one-sided), both ends.
+    let dy = g.dy();
+    let mut edge = 0.0;
+    for i in 1..g.nx() {
+        let (p1, p2) = (p[at(g, i, 1)], p[at(g, i, 2.min(g.ny))]);
+        let dpdy = if g.ny >= 2 { (4.0 * p1 - p2) / (2.0 * dy) } else { p1 / dy };
+        edge += h(g.x[i]).powi(3) * dpdy * g.cv_x(i);
+    }
+    let side_leakage_bar = 2.0 * edge / (48.0 * PI * l_over_d * l_over_d);
+
+    // Inlet flow at θ = 0: ∫ [h̄ − h̄³ ∂θP̄/(12π)] dȳ, second-order one-sided derivative.
+    let (d1, d2) = (g.x[1] - g.x[0], g.x[2] - g.x[1]);
+    let mut inlet = 0.0;
+    for j in 0..=g.ny {
+        let (p1, p2) = (p[at(g, 1, j)], p[at(g, 2, j)]);
+        let dpdt = (d1 + d2) / (d1 * d2) * p1 - d1 / (d2 * (d1 + d2)) * p2;
+        inlet += (h(0.0) - h(0.0).powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * 2.0;
+    }
+
+    FilmSolution {
+        load_radial: radial,
+        load_tangential: tangential,
+        max_pressure_bar,
+        max_pressure_angle,
+        cavitation_angle,
+        side_leakage_bar,
+        inlet_flow_bar: inlet,
+        solved,
+    }
+}
+
+/// The peak of a sampled curve by a parabola through the largest sample and its neighbours.
+fn parabolic_peak(x: &[f64], y: &[f64], i: usize) -> (f64, f64) {
+    if i == 0 || i + 1 >= y.len() {
+        return (y[i], x[i]);
+    }
+    let (x0, x1, x2) = (x[i - 1], x[i], x[i + 1]);
+    let (y0, y1, y2) = (y[i - 1], y[i], y[i + 1]);
+    let denom = (x0 - x1) * (x0 - x2) * (x1 - x2);
+    let a = (x2 * (y1 - y0) + x1 * (y0 - y2) + x0 * (y2 - y1)) / denom;
+    let b = (x2 * x2 * (y0 - y1) + x1 * x1 * (y2 - y0) + x0 * x0 * (y1 - y2)) / denom;
+    if a >= 0.0 {
+        return (y1, x1);
+    }
+    let xv = (-b / (2.0 * a)).clamp(x0, x2);
+    let c = y1 - a * x1 * x1 - b * x1;
+    ((a * xv * xv + b * xv + c).max(y1), xv)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use serde_json::Value;
+
+    const STOP: Stopping = Stopping { tolerance: 1e-9, max_sweeps: 200_000 };
+
+    /// A quick look at the whole of Table 8.6 on a moderate mesh (the acceptance test with the
+    /// service's fidelity levels is in tests/).
+    #[test]
+    #[ignore]
+    fn table_8_6_survey() {
+        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/reference/khonsari-booser-table-8-6.json")).unwrap();
+        let table: Value = serde_json::from_str(&text).unwrap();
+        for mesh in [Mesh { circumferential: 96, axial_half: 12 }, Mesh { circumferential: 192, axial_half: 24 }] {
+            let mut worst = [0.0f64; 5];
+            for row in table["rows"].as_array().unwrap() {
+                let (ld, eps) = (row["L_over_D"].as_f64().unwrap(), row["eccentricity_ratio"].as_f64().unwrap());
+                let (f, _) = solve(Film::steady(eps, ld), mesh, STOP, None, &mut || true).unwrap();
+                let s = f.sommerfeld_number();
+                let phi = f.attitude_angle().to_degrees();
+                let e = [
+                    (s / row["S"].as_f64().unwrap() - 1.0).abs(),
+                    (phi - row["attitude_angle_deg"].as_f64().unwrap()).abs(),
+                    (f.side_leakage_bar / row["Q_L_bar"].as_f64().unwrap() - 1.0).abs(),
+                    (f.max_pressure_bar / row["P_max_bar"].as_f64().unwrap() - 1.0).abs(),
+                    (f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0).abs(),
+                ];
+                if eps <= 0.9 {
+                    for k in 0..5 { worst[k] = worst[k].max(e[k]); }
+                }
+                println!("{ld} {eps}: S {:.4} ({:+.2}%) φ {:.2} ({:+.2}) QL {:.4} ({:+.2}%) Pmax {:.3} ({:+.2}%) Qi {:.4} ({:+.2}%) θcav {:.1} sweeps {}",
+                    s, 100.0 * (s / row["S"].as_f64().unwrap() - 1.0), phi, phi - row["attitude_angle_deg"].as_f64().unwrap(),
+                    f.side_leakage_bar, 100.0*(f.side_leakage_bar / row["Q_L_bar"].as_f64().unwrap() - 1.0),
+                    f.max_pressure_bar, 100.0*(f.max_pressure_bar / row["P_max_bar"].as_f64().unwrap() - 1.0),
+                    f.inlet_flow_bar, 100.0*(f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0),
+                    f.cavitation_angle.to_degrees(), f.solved.sweeps);
+            }
+            println!("{mesh:?} worst (ε ≤ 0.9): S {:.3}% φ {:.2}° QL {:.2}% Pmax {:.2}% Qi {:.2}%", 100.0 * worst[0], worst[1], 100.0 * worst[2], 100.0 * worst[3], 100.0 * worst[4]);
+        }
+    }
+}

@@ -1,0 +1,15 @@
+//! Hydrodynamic journal bearings (Khonsari & Booser ch. 8; Stachowiak & Batchelor ch. 4–5).
+//!
+//! - `plain`: the `/v1/journal-bearings/plain` room (request, response);
+//! - `operating`: from the parsed case to the dimensional result, effects decided;
+//! - `performance`: dimensionless performance at ε by closed form or numerics, equilibrium;
+//! - `film`: the numerical film (finite-volume Reynolds with cavitation);
+//! - `closed_form`: infinitely short and long bearings;
+//! - `dynamics`: stiffness, damping and the whirl threshold.
+
+pub mod closed_form;
+pub mod dynamics;
+pub mod film;
+pub mod operating;
+pub mod performance;
+pub mod plain;

@@ -1,0 +1,453 @@
+//! From a parsed request to the plain bearing's dimensional result: viscosity at the effective
+//! temperature, equilibrium, outputs, dynamic coefficients and the stability threshold, with
+//! every effect decided and reported.
+
+use std::f64::consts::PI;
+
+use super::closed_form;
+use super::dynamics::{self, Coefficients};
+use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
+use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, Stability};
+use crate::calc::lubricant::model::TemperatureLaw;
+use crate::calc::lubricant::Lubricant;
+use crate::calc::{Budget, CalcError, Context};
+use crate::effects::{Criterion, Decision, Mode};
+use crate::fidelity::SolverReport;
+use crate::numerics::roots::{brent, RootError, Stopping};
+
+/// Standard gravity, m/s² (the default rotor mass is W/g).
+const GRAVITY: f64 = 9.80665;
+/// Film Reynolds number above which the film turns turbulent (Khonsari & Booser §6, 1000–2000).
+const TURBULENT_REYNOLDS: f64 = 1000.0;
+/// Inlet temperature when none is given, °C.
+const DEFAULT_INLET_C: f64 = 40.0;
+
+#[derive(Debug, Clone, Copy)]
+pub struct Geometry {
+    pub diameter_m: f64,
+    pub length_m: f64,
+    pub radial_clearance_m: f64,
+}
+
+impl Geometry {
+    fn l_over_d(&self) -> f64 {
+        self.length_m / self.diameter_m
+    }
+    fn r_over_c(&self) -> f64 {
+        0.5 * self.diameter_m / self.radial_clearance_m
+    }
+}
+
+#[derive(Debug, Clone, Copy)]
+pub enum Given {
+    Load(f64),
+    Eccentricity(f64),
+}
+
+/// The validated plain-bearing case.
+#[derive(Debug, Clone)]
+pub struct Case {
+    pub geometry: Geometry,
+    pub speed_rpm: f64,
+    pub lubricant: Lubricant,
+    pub given: Given,
+    pub inlet_temperature_c: Option<f64>,
+    pub rotor_mass_kg: Option<f64>,
+    pub method: Method,
+    pub effects: JournalEffects,
+    pub dynamics: bool,
+}
+
+/// A solved operating point at one viscosity.
+#[derive(Debug, Clone)]
+struct Operating {
+    point: Point,
+    load_n: f64,
+    viscosity_pa_s: f64,
+    temperature_c: f64,
+    /// Equilibrium iterations (0 when ε was given).
+    evaluations: u32,
+}
+
+impl Case {
+    fn speed_rps(&self) -> f64 {
+        self.speed_rpm / 60.0
+    }
+    /// μ N_s L D (R/C)²: S·W.
+    fn load_scale(&self, mu: f64) -> f64 {
+        let g = self.geometry;
+        mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
+    }
+    fn cavitation(&self) -> bool {
+        self.effects.cavitation != Mode::Off
+    }
+
+    fn operate(&self, temperature_c: f64, budget: &Budget) -> Result<Operating, CalcError> {
+        let mu = self.lubricant.viscosity_pa_s(temperature_c);
+        let scale = self.load_scale(mu);
+        let l_over_d = self.geometry.l_over_d();
+        let mut alive = || budget.alive();
+        let (point, load_n, evaluations) = match self.given {
+            Given::Load(w) => {
+                let (p, n) = performance::equilibrium(scale / w, l_over_d, self.method, self.cavitation(), &mut alive)?;
+                (p, w, n)
+            }
+            Given::Eccentricity(eps) => {
+                let p = performance::at_eccentricity(eps, l_over_d, self.method, self.cavitation(), &mut alive)?;
+                let w = scale / p.sommerfeld_number;
+                (p, w, 0)
+            }
+        };
+        Ok(Operating { point, load_n, viscosity_pa_s: mu, temperature_c, evaluations })
+    }
+
+    /// Friction power E_p = F U, W.
+    fn power_loss(&self, op: &Operating) -> f64 {
+        let g = self.geometry;
+        let friction = op.point.friction_parameter / g.r_over_c() * op.load_n;
+        friction * PI * g.diameter_m * self.speed_rps()
+    }
+
+    fn side_leakage(&self, op: &Operating) -> f64 {
+        let g = self.geometry;
+        op.point.side_leakage_bar * 0.5 * PI * self.speed_rps() * g.diameter_m * g.length_m * g.radial_clearance_m
+    }
+
+    /// ΔT = E_p/(ρ c_p Q_L) (Eq. 8.44); None without side leakage (the long-bearing closed form).
+    fn temperature_rise(&self, op: &Operating) -> Option<f64> {
+        let q = self.side_leakage(op);
+        let t = op.temperature_c;
+        let heat = self.lubricant.density_kg_m3(t) * self.lubricant.specific_heat_j_kg_k(t) * q;
+        (q > 0.0 && heat > 0.0).then(|| self.power_loss(op) / heat)
+    }
+
+    /// k in T_e = T_in + k ΔT: 1 (Eq. 8.63, heat to the housing neglected for D > 2 in), ½ for
+    /// smaller bearings (Eq. 8.64).
+    fn effective_fraction(&self) -> f64 {
+        if self.geometry.diameter_m >= 0.0508 { 1.0 } else { 0.5 }
+    }
+}
+
+pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
+    let budget = ctx.budget();
+    let lub = &case.lubricant;
+    let t_in = case.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
+    let temperature_dependent = !matches!(lub.temperature_law, TemperatureLaw::Constant { .. });
+    if case.inlet_temperature_c.is_none() && temperature_dependent {
+        ctx.warn("inlet_temperature_assumed", format!("inlet_temperature_c not given: {DEFAULT_INLET_C} °C assumed"));
+    }
+    for (code, message) in &lub.assumptions {
+        ctx.warn(code, message.clone());
+    }
+    let mu_in = lub.viscosity_pa_s(t_in);
+    if !(mu_in.is_finite() && mu_in > 0.0) {
+        return Err(CalcError::impossible("/inlet_temperature_c", "the lubricant's viscosity law has no value at this temperature"));
+    }
+
+    let isothermal = case.operate(t_in, &budget)?;
+    let mut op = isothermal.clone();
+    let k = case.effective_fraction();
+    match (temperature_dependent, case.temperature_rise(&isothermal)) {
+        (false, _) => ctx.decide("thermal", Decision::not_applicable(case.effects.thermal, "the lubricant's viscosity does not depend on temperature")),
+        (true, None) => ctx.decide("thermal", Decision::not_applicable(case.effects.thermal, "no side leakage in the long-bearing closed form: the heat balance has no flow")),
+        (true, Some(rise)) => {
+            let drop = 1.0 - lub.viscosity_pa_s(t_in + k * rise) / mu_in;
+            let criterion = Criterion { name: "viscosity_drop_over_temperature_rise", value: drop, threshold: 0.05 };
+            let decision = Decision::decide(case.effects.thermal, criterion, "thermal");
+            if decision.applied {
+                op = effective_temperature(case, t_in, k * rise, &budget)?;
+            }
+            ctx.decide("thermal", decision);
+        }
+    }
+
+    let g = case.geometry;
+    let point = &op.point;
+    let n_s = case.speed_rps();
+    let mu = op.viscosity_pa_s;
+    let rho = lub.density_kg_m3(op.temperature_c);
+    let u = PI * g.diameter_m * n_s;
+    let reynolds = rho * u * g.radial_clearance_m / mu;
+    decide_flow_effects(ctx, case.effects, reynolds, g);
+    let cavitation = Decision {
+        applied: case.cavitation(),
+        mode: case.effects.cavitation,
+        reason: if case.cavitation() {
+            "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into()
+        } else {
+            "requested off: full Sommerfeld film, negative pressures kept".into()
+        },
+        criterion: None,
+    };
+    ctx.decide("cavitation", cavitation);
+    ctx.decide("misalignment", Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"));
+
+    validity_warnings(ctx, case, point);
+
+    let power = case.power_loss(&op);
+    let friction = point.friction_parameter / g.r_over_c();
+    let rise = case.temperature_rise(&op);
+    if rise.is_none() {
+        ctx.warn("no_temperature_rise", "the long-bearing closed form has no side leakage, so no adiabatic temperature rise; use a numerical fidelity");
+    }
+    let pressure_scale = mu * n_s * g.r_over_c().powi(2);
+    let flow_scale = 0.5 * PI * n_s * g.diameter_m * g.length_m * g.radial_clearance_m;
+
+    let dynamics = if case.dynamics { dynamic_coefficients(case, &op, ctx)? } else { None };
+    let mut output = PlainOutput {
+        load_n: op.load_n,
+        sommerfeld_number: point.sommerfeld_number,
+        eccentricity_ratio: point.eccentricity_ratio,
+        attitude_angle_deg: point.attitude_angle.to_degrees(),
+        min_film_thickness_m: g.radial_clearance_m * (1.0 - point.eccentricity_ratio),
+        max_pressure_pa: point.max_pressure_bar * pressure_scale,
+        max_pressure_dimensionless: point.max_pressure_bar,
+        max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
+        cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
+        friction_coefficient: friction,
+        friction_parameter: point.friction_parameter,
+        friction_torque_n_m: friction * op.load_n * 0.5 * g.diameter_m,
+        power_loss_w: power,
+        side_leakage_m3_s: point.side_leakage_bar * flow_scale,
+        side_leakage_dimensionless: point.side_leakage_bar,
+        inlet_flow_m3_s: point.inlet_flow_bar.map(|q| q * flow_scale),
+        temperature_rise_k: rise,
+        effective_temperature_c: op.temperature_c,
+        effective_viscosity_pa_s: mu,
+        reynolds_number: reynolds,
+        approximation: approximation_name(case),
+        dynamic_coefficients: None,
+        stability: None,
+    };
+    if let Some((coefficients, stability)) = dynamics {
+        let (w, c, omega) = (op.load_n, g.radial_clearance_m, 2.0 * PI * n_s);
+        let [kxx, kxy, kyx, kyy] = coefficients.stiffness.map(|v| v * w / c);
+        let [cxx, cxy, cyx, cyy] = coefficients.damping.map(|v| v * w / (c * omega));
+        output.dynamic_coefficients = Some(DynamicCoefficients {
+            frame: "x along the static load, y perpendicular to it, 90° ahead in the direction of rotation".into(),
+            kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy,
+            stiffness_dimensionless: coefficients.stiffness,
+            damping_dimensionless: coefficients.damping,
+            method: match case.method {
+                Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
+                Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
+            },
+        });
+        output.stability = Some(stability);
+    }
+    ctx.report(report(case, point, op.evaluations));
+    Ok(output)
+}
+
+/// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]
+/// (the rise falls as the oil thins, so the bracket holds).
+fn effective_temperature(case: &Case, t_in: f64, rise_iso: f64, budget: &Budget) -> Result<Operating, CalcError> {
+    let k = case.effective_fraction();
+    let mut failure = None;
+    let mut last: Option<Operating> = None;
+    let f = |t: f64| -> f64 {
+        match case.operate(t, budget) {
+            Ok(op) => {
+                let rise = case.temperature_rise(&op).unwrap_or(0.0);
+                let g = t - t_in - k * rise;
+                last = Some(op);
+                g
+            }
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
+        }
+    };
+    let root = brent(f, t_in, t_in + rise_iso, Stopping { x_tolerance: 1e-3, max_iterations: 60 });
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    match root {
+        Ok(r) => case.operate(r.x, budget).or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
+        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged { method: "brent_effective_temperature", iterations, residual: width }),
+        Err(e) => Err(CalcError::impossible("/inlet_temperature_c", format!("no effective temperature in [{t_in:.2}, {:.2}] °C: {e:?}", t_in + rise_iso))),
+    }
+}
+
+fn decide_flow_effects(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
+    let turbulence = Decision::decide(
+        effects.turbulence,
+        Criterion { name: "film_reynolds_number", value: reynolds, threshold: TURBULENT_REYNOLDS },
+        "turbulence",
+    );
+    if turbulence.applied {
+        ctx.warn(
+            "turbulent_film",
+            format!("film Reynolds number {reynolds:.0} exceeds {TURBULENT_REYNOLDS}: the film is turbulent, and the laminar result underestimates friction and load capacity"),
+        );
+        ctx.decide("turbulence", Decision { applied: false, reason: format!("{}; no turbulent model yet: laminar result with a warning", turbulence.reason), ..turbulence });
+    } else {
+        ctx.decide("turbulence", turbulence);
+    }
+    let reduced = reynolds * g.radial_clearance_m / (0.5 * g.diameter_m);
+    let inertia = Decision::decide(effects.inertia, Criterion { name: "reduced_reynolds_number", value: reduced, threshold: 1.0 }, "inertia");
+    if inertia.applied {
+        ctx.warn("fluid_inertia", format!("reduced Reynolds number {reduced:.2} exceeds 1: fluid inertia matters and is not modelled"));
+    }
+    ctx.decide("inertia", Decision { applied: false, ..inertia });
+}
+
+fn approximation_name(case: &Case) -> Option<String> {
+    let cav = case.cavitation();
+    match case.method {
+        Method::ClosedForm(Approximation::Short) => Some(if cav { "short_half_sommerfeld" } else { "short_full_sommerfeld" }.into()),
+        Method::ClosedForm(Approximation::Long) => Some(if cav { "long_reynolds" } else { "long_full_sommerfeld" }.into()),
+        Method::Numerical { .. } => None,
+    }
+}
+
+fn validity_warnings(ctx: &mut Context, case: &Case, point: &Point) {
+    let ld = case.geometry.l_over_d();
+    match case.method {
+        Method::ClosedForm(Approximation::Short) if ld > 0.5 => ctx.warn(
+            "short_bearing_outside_validity",
+            format!("the short-bearing approximation holds for L/D ≤ 0.5 (trends to 1); L/D = {ld:.3}: use a numerical fidelity"),
+        ),
+        Method::ClosedForm(Approximation::Long) if ld < 2.0 => ctx.warn(
+            "long_bearing_outside_validity",
+            format!("the long-bearing approximation overestimates load capacity below L/D ≈ 2; L/D = {ld:.3}: use a numerical fidelity"),
+        ),
+        _ => {}
+    }
+    if point.eccentricity_ratio > 0.95 {
+        ctx.warn(
+            "very_high_eccentricity",
+            format!("ε = {:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", point.eccentricity_ratio, 100.0 * (1.0 - point.eccentricity_ratio)),
+        );
+    }
+}
+
+fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
+    match case.method {
+        Method::ClosedForm(_) => SolverReport {
+            method: format!("closed_form_{}", approximation_name(case).unwrap_or_default()),
+            iterations: evaluations,
+            ..SolverReport::closed_form("closed_form")
+        },
+        Method::Numerical { level, mesh, .. } => SolverReport {
+            method: "finite_volume_psor".into(),
+            fidelity: level,
+            grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
+            iterations: point.sweeps,
+            residual: point.residual,
+            error_estimate: point.error_estimate,
+            elapsed_ms: 0.0,
+        },
+    }
+}
+
+/// Coefficients at ε for the case's method (None for the long closed form), and S there.
+fn coefficients_at(case: &Case, eps: f64, budget: &Budget) -> Result<Option<Coefficients>, CalcError> {
+    let ld = case.geometry.l_over_d();
+    match case.method {
+        Method::ClosedForm(Approximation::Short) => {
+            let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
+            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld).map_or(f64::NAN, |p| p.sommerfeld_number);
+            Ok(Some(Coefficients { stiffness, damping, sommerfeld_number: s }))
+        }
+        Method::ClosedForm(Approximation::Long) => Ok(None),
+        Method::Numerical { mesh, stop, .. } => {
+            let mut alive = || budget.alive();
+            dynamics::perturbation(eps, ld, mesh, stop, &mut alive).map(Some)
+        }
+    }
+}
+
+fn dynamic_coefficients(case: &Case, op: &Operating, ctx: &mut Context) -> Result<Option<(Coefficients, Stability)>, CalcError> {
+    if !case.cavitation() {
+        ctx.warn("no_dynamics_full_film", "stiffness and damping are given for the cavitating film only");
+        return Ok(None);
+    }
+    let budget = ctx.budget();
+    let eps = op.point.eccentricity_ratio;
+    let Some(coefficients) = coefficients_at(case, eps, &budget)? else {
+        ctx.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
+        return Ok(None);
+    };
+    let g = case.geometry;
+    let w = op.load_n;
+    let mass = case.rotor_mass_kg.unwrap_or(w / GRAVITY);
+    let omega = 2.0 * PI * case.speed_rps();
+    let s_op = coefficients.sommerfeld_number;
+    let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
+    let whirl = dynamics::whirl(&coefficients);
+    let stable_now = whirl.critical_mass_parameter.is_none_or(|mc| mass_parameter(omega) < mc);
+
+    // Threshold: along the equilibrium locus at fixed load and viscosity, speed is ω(ε) =
+    // ω_op S(ε)/S_op; stability margin ln(m̄_c/m̄) changes sign at the threshold.
+    let failure = std::cell::RefCell::new(None);
+    let mut margin = |e: f64| -> f64 {
+        match coefficients_at(case, e, &budget) {
+            Ok(Some(c)) => {
+                let speed = omega * c.sommerfeld_number / s_op;
+                match dynamics::whirl(&c).critical_mass_parameter {
+                    Some(mc) => (mc / mass_parameter(speed)).ln(),
+                    None => 50.0,
+                }
+            }
+            Ok(None) => 50.0,
+            Err(err) => {
+                failure.borrow_mut().get_or_insert(err);
+                f64::NAN
+            }
+        }
+    };
+    let m0 = if stable_now { 1.0 } else { -1.0 };
+    let mut bracket = None;
+    let mut previous = eps;
+    for k in 1..=10 {
+        let next = if stable_now { (eps * 0.6f64.powi(k)).max(1e-3) } else { (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY) };
+        let m = margin(next);
+        if m.is_nan() {
+            break;
+        }
+        if m.signum() != m0 {
+            bracket = Some((previous, next));
+            break;
+        }
+        previous = next;
+        if next <= 1e-3 || next >= MAX_ECCENTRICITY {
+            break;
+        }
+    }
+    if let Some(e) = failure.borrow_mut().take() {
+        return Err(e);
+    }
+    let threshold_eps = match bracket {
+        Some((a, b)) => brent(&mut margin, a.min(b), a.max(b), Stopping { x_tolerance: 1e-5, max_iterations: 40 }).ok().map(|r| r.x),
+        None => None,
+    };
+    if let Some(e) = failure.into_inner() {
+        return Err(e);
+    }
+    let threshold_rpm = match threshold_eps {
+        Some(e) => Some(coefficients_at(case, e, &budget)?.map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op)).filter(|v| v.is_finite()),
+        None => None,
+    };
+    let statement = match (stable_now, threshold_rpm) {
+        (true, Some(t)) => format!("stable at {:.0} rev/min; oil whirl sets in at about {t:.0} rev/min (rigid rotor of {mass:.3} kg, load and viscosity held)", case.speed_rpm),
+        (true, None) if whirl.critical_mass_parameter.is_none() => format!("stable at every speed: at ε = {eps:.3} the film cannot sustain whirl for any rotor mass"),
+        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = 0.001)", case.speed_rpm),
+        (false, Some(t)) => format!("UNSTABLE: oil whirl above about {t:.0} rev/min, below the operating speed {:.0} rev/min", case.speed_rpm),
+        (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
+    };
+    if !stable_now {
+        ctx.warn("oil_whirl", statement.clone());
+    }
+    let stability = Stability {
+        stable_at_operating_speed: stable_now,
+        threshold_speed_rpm: threshold_rpm,
+        whirl_frequency_ratio: whirl.whirl_frequency_ratio,
+        critical_mass_parameter: whirl.critical_mass_parameter,
+        mass_parameter: mass_parameter(omega),
+        rotor_mass_kg: mass,
+        statement,
+    };
+    Ok(Some((coefficients, stability)))
+}

@@ -1,0 +1,236 @@
+//! A plain journal bearing's dimensionless performance at one eccentricity ratio, by the method
+//! the fidelity asks for, and the equilibrium eccentricity for a given Sommerfeld number.
+
+use std::f64::consts::PI;
+
+use super::closed_form::{self, Boundary};
+use super::film::{self, Film, FilmSolution, Mesh};
+use crate::calc::CalcError;
+use crate::fidelity::Level;
+use crate::numerics::reynolds::{SolveError, Stopping};
+use crate::numerics::roots::{self, brent, RootError};
+
+/// Highest eccentricity ratio the service solves for: beyond it the minimum film is below 0.5 %
+/// of the clearance, where no real bearing runs.
+pub const MAX_ECCENTRICITY: f64 = 0.995;
+/// Lowest eccentricity ratio of an equilibrium search.
+pub const MIN_ECCENTRICITY: f64 = 1e-4;
+
+/// The closed-form approximation used at `fidelity: closed_form`.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Approximation {
+    /// Infinitely short (Ocvirk).
+    Short,
+    /// Infinitely long.
+    Long,
+}
+
+/// How to compute.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    ClosedForm(Approximation),
+    /// Finite-length Reynolds on `mesh`; `richardson` extrapolates from the half mesh.
+    Numerical { level: Level, mesh: Mesh, stop: Stopping, richardson: bool },
+}
+
+impl Method {
+    /// The numerical method of a fidelity level, or an explicit mesh / tolerance.
+    pub fn numerical(level: Level, mesh: Option<Mesh>, tolerance: Option<f64>) -> Method {
+        let (default_mesh, default_tol) = match level {
+            Level::Fast => (Mesh { circumferential: 48, axial_half: 6 }, 1e-6),
+            Level::High => (Mesh { circumferential: 192, axial_half: 24 }, 1e-10),
+            _ => (Mesh { circumferential: 96, axial_half: 12 }, 1e-8),
+        };
+        Method::Numerical {
+            level,
+            mesh: mesh.unwrap_or(default_mesh),
+            stop: Stopping { tolerance: tolerance.unwrap_or(default_tol), max_sweeps: 100_000 },
+            richardson: level == Level::High,
+        }
+    }
+}
+
+/// One operating point, dimensionless (Table 8.6 conventions).
+#[derive(Debug, Clone, PartialEq)]
+pub struct Point {
+    pub eccentricity_ratio: f64,
+    pub sommerfeld_number: f64,
+    pub attitude_angle: f64,
+    pub friction_parameter: f64,
+    pub max_pressure_bar: f64,
+    pub max_pressure_angle: f64,
+    pub cavitation_angle: Option<f64>,
+    pub side_leakage_bar: f64,
+    pub inlet_flow_bar: Option<f64>,
+    /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
+    /// estimate of S, the mesh.
+    pub sweeps: u32,
+    pub residual: Option<f64>,
+    pub error_estimate: Option<f64>,
+    pub mesh: Option<Mesh>,
+}
+
+/// (R/C)·f with the journal's shear over the full circumference (Khonsari & Booser G5, the
+/// convention of Table 8.6): (ε/2) sin φ + 2π² S / √(1 − ε²).
+pub fn friction_parameter(eps: f64, attitude: f64, sommerfeld: f64) -> f64 {
+    0.5 * eps * attitude.sin() + 2.0 * PI * PI * sommerfeld / (1.0 - eps * eps).sqrt()
+}
+
+pub fn solve_error(e: SolveError) -> CalcError {
+    match e {
+        SolveError::Cancelled => CalcError::DeadlineExceeded,
+        SolveError::NotConverged { sweeps, change } => {
+            CalcError::NotConverged { method: "finite_volume_psor", iterations: sweeps, residual: change }
+        }
+        SolveError::Diverged { sweeps } => {
+            CalcError::NotConverged { method: "finite_volume_psor", iterations: sweeps, residual: f64::INFINITY }
+        }
+    }
+}
+
+fn from_film(eps: f64, f: &FilmSolution, cavitation: bool) -> Point {
+    let s = f.sommerfeld_number();
+    let phi = f.attitude_angle();
+    Point {
+        eccentricity_ratio: eps,
+        sommerfeld_number: s,
+        attitude_angle: phi,
+        friction_parameter: friction_parameter(eps, phi, s),
+        max_pressure_bar: f.max_pressure_bar,
+        max_pressure_angle: f.max_pressure_angle,
+        cavitation_angle: cavitation.then_some(f.cavitation_angle),
+        side_leakage_bar: f.side_leakage_bar,
+        inlet_flow_bar: Some(f.inlet_flow_bar),
+        sweeps: f.solved.sweeps,
+        residual: Some(f.solved.residual),
+        error_estimate: None,
+        mesh: None,
+    }
+}
+
+/// Performance at eccentricity ratio `eps` for L/D = `l_over_d`.
+pub fn at_eccentricity(
+    eps: f64,
+    l_over_d: f64,
+    method: Method,
+    cavitation: bool,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<Point, CalcError> {
+    match method {
+        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, cavitation)),
+        Method::Numerical { mesh, stop, richardson, .. } => {
+            let film = Film { cavitation, ..Film::steady(eps, l_over_d) };
+            let (fine, coarse, _) = film::solve_nested(film, mesh, stop, keep_going).map_err(solve_error)?;
+            let mut point = from_film(eps, &fine, cavitation);
+            let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+            // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
+            point.error_estimate = Some(((sf - sc) / 3.0 / sf).abs());
+            if richardson {
+                let extrapolate = |f: f64, c: f64| f + (f - c) / 3.0;
+                let film = FilmSolution {
+                    load_radial: extrapolate(fine.load_radial, coarse.load_radial),
+                    load_tangential: extrapolate(fine.load_tangential, coarse.load_tangential),
+                    max_pressure_bar: extrapolate(fine.max_pressure_bar, coarse.max_pressure_bar),
+                    side_leakage_bar: extrapolate(fine.side_leakage_bar, coarse.side_leakage_bar),
+                    inlet_flow_bar: extrapolate(fine.inlet_flow_bar, coarse.inlet_flow_bar),
+                    ..fine.clone()
+                };
+                point = Point { error_estimate: point.error_estimate, ..from_film(eps, &film, cavitation) };
+            }
+            point.sweeps = fine.solved.sweeps + coarse.solved.sweeps;
+            point.mesh = Some(mesh);
+            Ok(point)
+        }
+    }
+}
+
+fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> Point {
+    let p = match approx {
+        Approximation::Long => closed_form::long_bearing(eps, if cavitation { Boundary::Reynolds } else { Boundary::FullSommerfeld }),
+        Approximation::Short => {
+            let boundary = if cavitation { Boundary::HalfSommerfeld } else { Boundary::FullSommerfeld };
+            closed_form::short_bearing(eps, l_over_d, boundary).expect("the short bearing has full and half films")
+        }
+    };
+    Point {
+        eccentricity_ratio: eps,
+        sommerfeld_number: p.sommerfeld_number,
+        attitude_angle: p.attitude_angle_rad,
+        friction_parameter: p.friction_parameter,
+        max_pressure_bar: p.max_pressure_bar,
+        max_pressure_angle: p.max_pressure_angle_rad,
+        cavitation_angle: p.cavitation_angle_rad,
+        side_leakage_bar: p.side_leakage_bar,
+        inlet_flow_bar: None,
+        sweeps: 0,
+        residual: None,
+        error_estimate: None,
+        mesh: None,
+    }
+}
+
+/// The eccentricity ratio at which the bearing carries Sommerfeld number `s_target`: Brent on
+/// ln S against u = ln(ε/(1 − ε)) — S spans six decades and ε crowds towards 1, and S falls
+/// monotonically with ε, so the bracket [1e-4, 0.995] holds every reachable load.
+pub fn equilibrium(
+    s_target: f64,
+    l_over_d: f64,
+    method: Method,
+    cavitation: bool,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<(Point, u32), CalcError> {
+    let to_eps = |u: f64| 1.0 / (1.0 + (-u).exp());
+    let (u_lo, u_hi) = ((MIN_ECCENTRICITY / (1.0 - MIN_ECCENTRICITY)).ln(), (MAX_ECCENTRICITY / (1.0 - MAX_ECCENTRICITY)).ln());
+    // Equilibrium iterations use the fine mesh alone — unless the result is Richardson
+    // extrapolated, whose S(ε) the root must be of.
+    let probe = method;
+    let mut failure: Option<CalcError> = None;
+    let mut evaluations = 0u32;
+    let mut ln_s = |u: f64| -> f64 {
+        evaluations += 1;
+        match probe_sommerfeld(to_eps(u), l_over_d, probe, cavitation, keep_going) {
+            Ok(s) => s.ln() - s_target.ln(),
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
+        }
+    };
+    let stop = roots::Stopping { x_tolerance: 1e-10, max_iterations: 100 };
+    let root = brent(&mut ln_s, u_lo, u_hi, stop);
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    let u = match root {
+        Ok(r) => r.x,
+        Err(RootError::NoSignChange { fa, fb, .. }) => {
+            let (s_lo, s_hi) = (s_target * fa.exp(), s_target * fb.exp());
+            let message = if s_target > s_lo {
+                format!("the Sommerfeld number {s_target:.4e} is above {s_lo:.4e}, the value at ε = {MIN_ECCENTRICITY}: the load is too light for a hydrodynamic equilibrium this model resolves")
+            } else {
+                format!("the Sommerfeld number {s_target:.4e} is below {s_hi:.4e}, the value at ε = {MAX_ECCENTRICITY}: the load is too high for this bearing (minimum film below 0.5 % of the clearance)")
+            };
+            return Err(CalcError::impossible("/load_n", message));
+        }
+        Err(RootError::NotConverged { iterations, width }) => {
+            return Err(CalcError::NotConverged { method: "brent_equilibrium", iterations, residual: width })
+        }
+        Err(RootError::NonFinite { .. }) => return Err(CalcError::Internal("equilibrium: non-finite Sommerfeld number".into())),
+    };
+    let point = at_eccentricity(to_eps(u), l_over_d, method, cavitation, keep_going)?;
+    Ok((point, evaluations))
+}
+
+fn probe_sommerfeld(eps: f64, l_over_d: f64, method: Method, cavitation: bool, keep_going: &mut dyn FnMut() -> bool) -> Result<f64, CalcError> {
+    match method {
+        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, cavitation).sommerfeld_number),
+        Method::Numerical { richardson: true, .. } => {
+            Ok(at_eccentricity(eps, l_over_d, method, cavitation, keep_going)?.sommerfeld_number)
+        }
+        Method::Numerical { mesh, stop, .. } => {
+            let film = Film { cavitation, ..Film::steady(eps, l_over_d) };
+            let (f, _) = film::solve(film, mesh, stop, None, keep_going).map_err(solve_error)?;
+            Ok(f.sommerfeld_number())
+        }
+    }
+}

@@ -1,0 +1,342 @@
+//! `POST /v1/journal-bearings/plain`: a plain 360° hydrodynamic journal bearing — equilibrium
+//! from the load (or the field at a given eccentricity), film, pressure, friction, flow,
+//! temperature, stiffness and damping, and the rigid-rotor stability threshold
+//! (Khonsari & Booser ch. 8; Stachowiak & Batchelor ch. 4–5).
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::operating::{self, Case, Geometry};
+use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
+use crate::calc::lubricant::LubricantSpec;
+use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::effects::Mode;
+use crate::fidelity::{FidelityRequest, Level};
+
+pub struct PlainJournal;
+
+/// Bearing geometry.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GeometrySpec {
+    /// Journal diameter D, m (> 0, at most 10).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 10.0, example = 0.1)]
+    pub diameter_m: Positive,
+    /// Bearing length L, m (> 0; L/D from 0.05 to 5).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 50.0, example = 0.1)]
+    pub length_m: Positive,
+    /// Radial clearance C, m (> 0; R/C from 50 to 10000, typically 500–1000).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.0001)]
+    pub radial_clearance_m: Positive,
+}
+
+/// Which closed form `fidelity: closed_form` uses.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum ClosedFormChoice {
+    /// Short (Ocvirk) for L/D ≤ 1, long for L/D > 1, with a warning outside each one's range.
+    #[default]
+    Auto,
+    /// Infinitely short bearing (Ocvirk; valid for L/D ≤ 1/2, trends to 1).
+    Short,
+    /// Infinitely long bearing (valid for L/D ≥ 2 or end-sealed bearings).
+    Long,
+}
+
+/// Effects this calculation understands.
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct JournalEffects {
+    /// Effective temperature T_e = T_in + k ΔT (Khonsari & Booser Eq. 8.63/8.64; k = 1, or ½
+    /// for D < 50.8 mm) solved with μ(T_e) by a bracketed root find. `auto` applies it when the
+    /// isothermal rise lowers the viscosity by more than 5 %.
+    #[serde(default)]
+    pub thermal: Mode,
+    /// Reynolds cavitation (p ≥ 0, Swift–Stieber). `off` keeps the full Sommerfeld film with its
+    /// negative pressures (a film that cannot rupture: submerged at high ambient pressure).
+    #[serde(default)]
+    pub cavitation: Mode,
+    /// Turbulent film: reported from Re = ρ U C/μ against 1000. The laminar model is used; `on`
+    /// is refused until a turbulent lubrication model lands.
+    #[serde(default)]
+    pub turbulence: Mode,
+    /// Fluid inertia: reported from the reduced Reynolds number Re·C/R against 1; not modelled.
+    #[serde(default)]
+    pub inertia: Mode,
+}
+
+/// Request. Give exactly one of `load_n` (the equilibrium is solved) and `eccentricity_ratio`.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PlainInput {
+    pub geometry: GeometrySpec,
+    /// Journal speed, rev/min (> 0, at most 1e6); the bearing is stationary.
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e6, example = 3000.0)]
+    pub speed_rpm: Positive,
+    pub lubricant: LubricantSpec,
+    /// Steady radial load W, N (> 0).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 10000.0)]
+    pub load_n: Option<Positive>,
+    /// Eccentricity ratio ε = e/C, dimensionless, 0.0001 … 0.995 (instead of `load_n`).
+    #[schema(minimum = 0.0001, maximum = 0.995, example = 0.6)]
+    pub eccentricity_ratio: Option<f64>,
+    /// Oil inlet temperature, °C (default 40): the viscosity is taken here, or at the effective
+    /// temperature when the thermal effect applies.
+    #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 40.0)]
+    pub inlet_temperature_c: Option<Celsius>,
+    /// Rotor mass carried by this bearing, kg, for the stability threshold (default W/g).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
+    pub rotor_mass_kg: Option<Positive>,
+    /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
+    /// half-length axial 2…256], "tolerance": 1e-14…1e-3}`.
+    #[serde(default)]
+    pub fidelity: FidelityRequest,
+    /// Which closed form `fidelity: closed_form` uses (default `auto`).
+    #[serde(default)]
+    pub closed_form: ClosedFormChoice,
+    #[serde(default)]
+    pub effects: JournalEffects,
+    /// Compute stiffness, damping and the stability threshold (default true; false skips their
+    /// cost: about ten further film solves, and the threshold search).
+    #[serde(default = "yes")]
+    #[schema(example = true)]
+    pub dynamics: bool,
+}
+
+fn yes() -> bool {
+    true
+}
+
+impl Validate for PlainInput {
+    type Valid = Case;
+    fn validate(self) -> Result<Case, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let g = self.geometry;
+        let (d, l, c) = (g.diameter_m.get(), g.length_m.get(), g.radial_clearance_m.get());
+        let l_over_d = l / d;
+        if !(0.05..=5.0).contains(&l_over_d) {
+            errors.push(FieldError::new("/geometry/length_m", format!("L/D must be within [0.05, 5], got {l_over_d:.4}")));
+        }
+        let r_over_c = 0.5 * d / c;
+        if !(50.0..=1e4).contains(&r_over_c) {
+            errors.push(FieldError::new(
+                "/geometry/radial_clearance_m",
+                format!("R/C must be within [50, 10000] (typical 500–1000), got {r_over_c:.1}"),
+            ));
+        }
+        if d > 10.0 {
+            errors.push(FieldError::new("/geometry/diameter_m", "must be at most 10 m"));
+        }
+        if self.speed_rpm.get() > 1e6 {
+            errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
+        }
+        let operating = match (self.load_n, self.eccentricity_ratio) {
+            (Some(w), None) => Some(operating::Given::Load(w.get())),
+            (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => Some(operating::Given::Eccentricity(eps)),
+            (None, Some(eps)) => {
+                errors.push(FieldError::new(
+                    "/eccentricity_ratio",
+                    format!("must be within [0.0001, {MAX_ECCENTRICITY}], got {eps}: ε ≥ 1 means the journal touches the bearing"),
+                ));
+                None
+            }
+            _ => {
+                errors.push(FieldError::new("/load_n", "give exactly one of load_n and eccentricity_ratio"));
+                None
+            }
+        };
+        let method = match self.fidelity {
+            FidelityRequest::Level(Level::ClosedForm) => Some(Method::ClosedForm(match self.closed_form {
+                ClosedFormChoice::Short => Approximation::Short,
+                ClosedFormChoice::Long => Approximation::Long,
+                ClosedFormChoice::Auto if l_over_d <= 1.0 => Approximation::Short,
+                ClosedFormChoice::Auto => Approximation::Long,
+            })),
+            FidelityRequest::Level(level) => Some(Method::numerical(level, None, None)),
+            FidelityRequest::Custom(custom) => {
+                let mesh = custom.grid.map(|[n, m]| super::film::Mesh { circumferential: n as usize, axial_half: m as usize });
+                if let Some([n, m]) = custom.grid {
+                    if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
+                        errors.push(FieldError::new(
+                            "/fidelity/grid",
+                            "must be [circumferential cells 16…1024 (even), half-length axial cells 2…256]",
+                        ));
+                    }
+                }
+                if let Some(t) = custom.tolerance {
+                    if !(1e-14..=1e-3).contains(&t) {
+                        errors.push(FieldError::new("/fidelity/tolerance", "must be within [1e-14, 1e-3]"));
+                    }
+                }
+                Some(Method::numerical(Level::Standard, mesh, custom.tolerance))
+            }
+        };
+        if self.effects.turbulence == Mode::On {
+            errors.push(FieldError::new(
+                "/effects/turbulence",
+                "a turbulent lubrication model is not available yet; use auto (the criterion is reported) or off",
+            ));
+        }
+        if self.effects.inertia == Mode::On {
+            errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
+        }
+        let lubricant = self.lubricant.parse("/lubricant");
+        let lubricant = match lubricant {
+            Ok(l) => Some(l),
+            Err(mut e) => {
+                errors.append(&mut e);
+                None
+            }
+        };
+        match (errors.is_empty(), operating, method, lubricant) {
+            (true, Some(given), Some(method), Some(lubricant)) => Ok(Case {
+                geometry: Geometry { diameter_m: d, length_m: l, radial_clearance_m: c },
+                speed_rpm: self.speed_rpm.get(),
+                lubricant,
+                given,
+                inlet_temperature_c: self.inlet_temperature_c.map(Celsius::get),
+                rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
+                method,
+                effects: self.effects,
+                dynamics: self.dynamics,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// Stiffness and damping of the film.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct DynamicCoefficients {
+    /// The frame: x along the static load, y perpendicular, 90° ahead in the direction of
+    /// rotation; a film force f_i = −K_ij δ_j − C_ij δ̇_j on the journal.
+    pub frame: String,
+    /// K_xx, N/m.
+    pub kxx: f64,
+    /// K_xy, N/m.
+    pub kxy: f64,
+    /// K_yx, N/m.
+    pub kyx: f64,
+    /// K_yy, N/m.
+    pub kyy: f64,
+    /// C_xx, N·s/m.
+    pub cxx: f64,
+    /// C_xy, N·s/m.
+    pub cxy: f64,
+    /// C_yx, N·s/m.
+    pub cyx: f64,
+    /// C_yy, N·s/m.
+    pub cyy: f64,
+    /// K_ij C/W, dimensionless, [xx, xy, yx, yy].
+    pub stiffness_dimensionless: [f64; 4],
+    /// C_ij C ω/W, dimensionless, [xx, xy, yx, yy].
+    pub damping_dimensionless: [f64; 4],
+    /// How they were obtained.
+    #[schema(example = "perturbation of the converged film: ±δ displacement and ±δ̇ velocity, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved")]
+    pub method: String,
+}
+
+/// Rigid-rotor stability (Lund's linearised threshold).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct Stability {
+    /// Whether a rigid rotor of `rotor_mass_kg` runs stably at the operating speed.
+    pub stable_at_operating_speed: bool,
+    /// Speed at which oil whirl sets in, rev/min, holding load and viscosity; absent when none
+    /// exists in the solved range (see `statement`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threshold_speed_rpm: Option<f64>,
+    /// Whirl frequency ratio at the operating point, dimensionless (about 0.5 for plain bearings);
+    /// absent when the film cannot whirl.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub whirl_frequency_ratio: Option<f64>,
+    /// Critical mass parameter m C ω²/W at the operating point; absent when stable for any mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_mass_parameter: Option<f64>,
+    /// The rotor's m C ω²/W at the operating speed.
+    pub mass_parameter: f64,
+    /// Rotor mass used, kg.
+    pub rotor_mass_kg: f64,
+    /// The verdict in words.
+    pub statement: String,
+}
+
+/// Result. Angles are measured from h_max in the direction of rotation. S and P̄ use N_s in rev/s.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PlainOutput {
+    /// Steady load W, N (given, or carried at the given ε).
+    pub load_n: f64,
+    /// S = μ N_s L D (R/C)²/W, dimensionless, N_s in rev/s.
+    pub sommerfeld_number: f64,
+    /// ε = e/C, dimensionless.
+    pub eccentricity_ratio: f64,
+    /// φ, between the load line and the line of centres, degrees.
+    pub attitude_angle_deg: f64,
+    /// h_min = C (1 − ε), m.
+    pub min_film_thickness_m: f64,
+    /// Peak film pressure (gauge, above the feed pressure), Pa.
+    pub max_pressure_pa: f64,
+    /// P̄_max = p_max (C/R)²/(μ N_s), dimensionless (Table 8.6 convention).
+    pub max_pressure_dimensionless: f64,
+    /// Angle of the peak from h_max, degrees.
+    pub max_pressure_angle_deg: f64,
+    /// Film rupture angle from h_max (mid-plane), degrees; absent for a full film.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cavitation_start_angle_deg: Option<f64>,
+    /// f = F/W, dimensionless; F is the journal-surface shear integrated over the full
+    /// circumference (the convention of Table 8.6).
+    pub friction_coefficient: f64,
+    /// (R/C) f, dimensionless.
+    pub friction_parameter: f64,
+    /// Friction torque on the journal F R, N·m.
+    pub friction_torque_n_m: f64,
+    /// Power loss F U, W.
+    pub power_loss_w: f64,
+    /// Side leakage from both ends Q_L, m³/s.
+    pub side_leakage_m3_s: f64,
+    /// Q_L/((π/2) N_s D L C), dimensionless.
+    pub side_leakage_dimensionless: f64,
+    /// Flow entering at the feed line (θ = 0, h_max), m³/s; absent for closed forms.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub inlet_flow_m3_s: Option<f64>,
+    /// Adiabatic oil temperature rise ΔT = E_p/(ρ c_p Q_L) (Khonsari & Booser Eq. 8.44), K;
+    /// absent for the long-bearing closed form, which has no side leakage.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub temperature_rise_k: Option<f64>,
+    /// Temperature at which the viscosity was taken, °C (the inlet temperature, or the effective
+    /// temperature when the thermal effect applied).
+    pub effective_temperature_c: f64,
+    /// Viscosity used, Pa·s.
+    pub effective_viscosity_pa_s: f64,
+    /// Film Reynolds number ρ U C/μ, dimensionless.
+    pub reynolds_number: f64,
+    /// The closed form used at `fidelity: closed_form`: `short_half_sommerfeld`, … ; absent for
+    /// the numerical solution.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub approximation: Option<String>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamic_coefficients: Option<DynamicCoefficients>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stability: Option<Stability>,
+}
+
+impl Calculation for PlainJournal {
+    const PATH: &'static str = "/v1/journal-bearings/plain";
+    const SUMMARY: &'static str = "Plain 360° journal bearing: equilibrium, film, friction, flow, temperature, K and C, stability";
+    const DESCRIPTION: &'static str = "Finite-length Reynolds equation by flux-conservative finite volumes with Reynolds cavitation (projected SOR), \
+nodes clustered towards h_min, film starting at h_max (Khonsari & Booser §8.12, Table 8.6 conventions: S = μ N_s L D (R/C)²/W with N_s in rev/s, \
+angles from h_max in the direction of rotation, friction from the journal-surface shear over the full circumference). \
+Equilibrium from the load by Brent's method on ln S against ln(ε/(1−ε)). `fidelity: closed_form` gives the infinitely short (Ocvirk) or long \
+(Sommerfeld / half-Sommerfeld / Reynolds) bearing. Stiffness and damping by perturbation of the converged film (feed line fixed at the \
+equilibrium h_max, cavitation re-solved in every perturbed film); rigid-rotor threshold by Lund's method.";
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &["thermal", "cavitation", "turbulence", "inertia", "misalignment"];
+    const EXAMPLE: &'static str = r#"{"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}, "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000, "inlet_temperature_c": 40}"#;
+
+    type Input = PlainInput;
+    type Output = PlainOutput;
+
+    fn run(case: Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
+        operating::solve(&case, ctx)
+    }
+}
