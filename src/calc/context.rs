@@ -88,7 +88,10 @@ impl Context {
     /// A cheap handle numerics can poll without borrowing the context: true while the request
     /// is neither late nor cancelled.
     pub fn budget(&self) -> Budget {
-        Budget { deadline: self.deadline, cancelled: self.cancelled.clone() }
+        Budget {
+            deadline: self.deadline,
+            cancelled: self.cancelled.clone(),
+        }
     }
 
     /// Record the decision on one effect.

@@ -1,4 +1,4 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
-pub mod roots;
 pub mod reynolds;
+pub mod roots;

@@ -119,7 +119,11 @@ impl Stencil {
                 s.ae[k] = he.powi(3) / (xe - xp) * hy;
                 s.aw[k] = hw.powi(3) / (xp - xw) * hy;
                 s.a_s[k] = problem.anisotropy * h(xp, y_s).powi(3) / dy * wx;
-                s.an[k] = if at_mid { 0.0 } else { problem.anisotropy * h(xp, y_n).powi(3) / dy * wx };
+                s.an[k] = if at_mid {
+                    0.0
+                } else {
+                    problem.anisotropy * h(xp, y_n).powi(3) / dy * wx
+                };
                 s.ap[k] = s.ae[k] + s.aw[k] + s.an[k] + s.a_s[k];
                 let source = problem.source.map_or(0.0, |f| f(xp, y) * wx * hy);
                 s.b[k] = problem.wedge * (he - hw) * hy + source;
@@ -144,8 +148,17 @@ impl Stencil {
                 }
                 let k = j * w + i;
                 let north = if j + 1 < self.rows { p[k + w] } else { 0.0 };
-                let r = self.ap[k] * p[k] - self.ae[k] * p[k + 1] - self.aw[k] * p[k - 1] - self.an[k] * north - self.a_s[k] * p[k - w] + self.b[k];
-                let r = if cavitation && p[k] <= 0.0 { (-r).max(0.0) } else { r.abs() };
+                let r = self.ap[k] * p[k]
+                    - self.ae[k] * p[k + 1]
+                    - self.aw[k] * p[k - 1]
+                    - self.an[k] * north
+                    - self.a_s[k] * p[k - w]
+                    + self.b[k];
+                let r = if cavitation && p[k] <= 0.0 {
+                    (-r).max(0.0)
+                } else {
+                    r.abs()
+                };
                 worst = worst.max(r);
                 scale_p = scale_p.max(p[k].abs());
                 scale_a = scale_a.max(self.ap[k]);
@@ -158,13 +171,18 @@ impl Stencil {
     /// anisotropic Laplacian on the grid, ω = 2 / (1 + √(1 − ρ²)).
     pub fn sor_factor(&self, grid: &Grid) -> f64 {
         let n = self.nx as f64;
-        let m = if grid.symmetric { 2.0 * grid.ny as f64 } else { grid.ny as f64 };
+        let m = if grid.symmetric {
+            2.0 * grid.ny as f64
+        } else {
+            grid.ny as f64
+        };
         let (mut sx, mut sy) = (0.0, 0.0);
         for k in 0..self.ap.len() {
             sx += self.ae[k] + self.aw[k];
             sy += self.an[k] + self.a_s[k];
         }
-        let rho = (sx * (std::f64::consts::PI / n).cos() + sy * (std::f64::consts::PI / m).cos()) / (sx + sy);
+        let rho = (sx * (std::f64::consts::PI / n).cos() + sy * (std::f64::consts::PI / m).cos())
+            / (sx + sy);
         (2.0 / (1.0 + (1.0 - rho * rho).max(0.0).sqrt())).clamp(1.0, 1.97)
     }
 }
@@ -217,8 +235,17 @@ pub fn solve(
                 if ap <= 0.0 {
                     continue;
                 }
-                let north = if has_north { stencil.an[k] * p[k + w] } else { 0.0 };
-                let gs = (stencil.ae[k] * p[k + 1] + stencil.aw[k] * p[k - 1] + north + stencil.a_s[k] * p[k - w] - stencil.b[k]) / ap;
+                let north = if has_north {
+                    stencil.an[k] * p[k + w]
+                } else {
+                    0.0
+                };
+                let gs = (stencil.ae[k] * p[k + 1]
+                    + stencil.aw[k] * p[k - 1]
+                    + north
+                    + stencil.a_s[k] * p[k - w]
+                    - stencil.b[k])
+                    / ap;
                 let mut next = p[k] + omega * (gs - p[k]);
                 if cavitation && next < 0.0 {
                     next = 0.0;
@@ -233,10 +260,17 @@ pub fn solve(
         }
         let relative = if size > 0.0 { change / size } else { change };
         if relative <= stop.tolerance {
-            return Ok(Solved { sweeps, change: relative, residual: stencil.residual(p, cavitation) });
+            return Ok(Solved {
+                sweeps,
+                change: relative,
+                residual: stencil.residual(p, cavitation),
+            });
         }
         if sweeps >= stop.max_sweeps {
-            return Err(SolveError::NotConverged { sweeps, change: relative });
+            return Err(SolveError::NotConverged {
+                sweeps,
+                change: relative,
+            });
         }
         if sweeps % 16 == 0 && !keep_going() {
             return Err(SolveError::Cancelled);
@@ -263,9 +297,7 @@ pub fn prolong(coarse: &Grid, pc: &[f64], fine: &Grid) -> Vec<f64> {
             out[j * wf + i] = lo * (1.0 - ty) + hi * ty;
         }
     }
-    for i in 0..=fine.nx() {
-        out[i] = 0.0;
-    }
+    out[..=fine.nx()].fill(0.0);
     for j in 0..=fine.ny {
         out[j * wf] = 0.0;
         out[j * wf + fine.nx()] = 0.0;
@@ -283,7 +315,12 @@ mod tests {
     use super::*;
 
     fn uniform(nx: usize, ny: usize, width: f64, symmetric: bool) -> Grid {
-        Grid { x: (0..=nx).map(|i| i as f64 / nx as f64).collect(), ny, width, symmetric }
+        Grid {
+            x: (0..=nx).map(|i| i as f64 / nx as f64).collect(),
+            ny,
+            width,
+            symmetric,
+        }
     }
 
     /// Uniform film, no wedge, constant unit source on the unit square: the Poisson problem
@@ -292,12 +329,31 @@ mod tests {
     fn poisson_square_matches_the_series_solution() {
         let film = |_: f64, _: f64| 1.0;
         let src = |_: f64, _: f64| 1.0;
-        let problem = Problem { film: &film, anisotropy: 1.0, wedge: 0.0, source: Some(&src) };
-        for (grid, centre) in [(uniform(32, 32, 1.0, false), (16, 16)), (uniform(32, 16, 0.5, true), (16, 16))] {
+        let problem = Problem {
+            film: &film,
+            anisotropy: 1.0,
+            wedge: 0.0,
+            source: Some(&src),
+        };
+        for (grid, centre) in [
+            (uniform(32, 32, 1.0, false), (16, 16)),
+            (uniform(32, 16, 0.5, true), (16, 16)),
+        ] {
             let s = Stencil::assemble(&grid, &problem);
             let mut p = vec![0.0; (grid.nx() + 1) * (grid.ny + 1)];
             let omega = s.sor_factor(&grid);
-            solve(&s, omega, &mut p, false, Stopping { tolerance: 1e-12, max_sweeps: 20_000 }, &mut || true).unwrap();
+            solve(
+                &s,
+                omega,
+                &mut p,
+                false,
+                Stopping {
+                    tolerance: 1e-12,
+                    max_sweeps: 20_000,
+                },
+                &mut || true,
+            )
+            .unwrap();
             let v = p[at(&grid, centre.0, centre.1)];
             assert!((v + 0.073671).abs() < 2e-4, "{v}");
         }
@@ -309,12 +365,20 @@ mod tests {
     fn cavitation_clips_only_negative_pressure() {
         let grid = uniform(64, 8, 0.5, true);
         let film = |x: f64, _: f64| 2.0 - x; // converging in +x: positive pressure
-        let problem = Problem { film: &film, anisotropy: 1e-6, wedge: 6.0, source: None };
+        let problem = Problem {
+            film: &film,
+            anisotropy: 1e-6,
+            wedge: 6.0,
+            source: None,
+        };
         let s = Stencil::assemble(&grid, &problem);
         let omega = s.sor_factor(&grid);
         let mut free = vec![0.0; (grid.nx() + 1) * (grid.ny + 1)];
         let mut cav = free.clone();
-        let stop = Stopping { tolerance: 1e-12, max_sweeps: 50_000 };
+        let stop = Stopping {
+            tolerance: 1e-12,
+            max_sweeps: 50_000,
+        };
         solve(&s, omega, &mut free, false, stop, &mut || true).unwrap();
         solve(&s, omega, &mut cav, true, stop, &mut || true).unwrap();
         assert!(free.iter().all(|&v| v >= -1e-12));
@@ -324,7 +388,12 @@ mod tests {
         // Plane slider with h1/h2 = 2: the peak sits at 2/3 of the length from the inlet.
         let mid = grid.ny;
         let row: Vec<f64> = (0..=grid.nx()).map(|i| free[at(&grid, i, mid)]).collect();
-        let imax = row.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)).unwrap().0;
+        let imax = row
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))
+            .unwrap()
+            .0;
         let xmax = grid.x[imax];
         assert!((xmax - 2.0 / 3.0).abs() < 0.03, "peak at {xmax}");
     }
@@ -333,12 +402,37 @@ mod tests {
     fn a_capped_solve_reports_not_converged() {
         let grid = uniform(32, 8, 0.5, true);
         let film = |x: f64, _: f64| 2.0 - x;
-        let problem = Problem { film: &film, anisotropy: 1.0, wedge: 6.0, source: None };
+        let problem = Problem {
+            film: &film,
+            anisotropy: 1.0,
+            wedge: 6.0,
+            source: None,
+        };
         let s = Stencil::assemble(&grid, &problem);
         let mut p = vec![0.0; (grid.nx() + 1) * (grid.ny + 1)];
-        let r = solve(&s, 1.5, &mut p, true, Stopping { tolerance: 1e-14, max_sweeps: 5 }, &mut || true);
+        let r = solve(
+            &s,
+            1.5,
+            &mut p,
+            true,
+            Stopping {
+                tolerance: 1e-14,
+                max_sweeps: 5,
+            },
+            &mut || true,
+        );
         assert!(matches!(r, Err(SolveError::NotConverged { sweeps: 5, .. })));
-        let r = solve(&s, 1.5, &mut p, true, Stopping { tolerance: 1e-14, max_sweeps: 100 }, &mut || false);
+        let r = solve(
+            &s,
+            1.5,
+            &mut p,
+            true,
+            Stopping {
+                tolerance: 1e-14,
+                max_sweeps: 100,
+            },
+            &mut || false,
+        );
         assert_eq!(r, Err(SolveError::Cancelled));
     }
 }

@@ -4,11 +4,13 @@
 //! - `contract`: the envelope, every error status and its problem+json, request ids.
 //! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
+//! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod contract;
 mod helpers;
+mod journal;
 mod limits;
 mod lubricants;
 mod reference_cases;

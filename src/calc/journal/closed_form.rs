@@ -55,8 +55,9 @@ pub struct Performance {
 /// - full Sommerfeld (Table 8.2): S = √(1 − ε²)(2 + ε²)/(12π² ε), φ = 90°;
 /// - half Sommerfeld (Table 8.2): S = (2 + ε²)(1 − ε²)/{6π ε [π²(1 − ε²) + 4ε²]^½},
 ///   φ = atan[π √(1 − ε²)/(2ε)], rupture at θ = π;
-/// - Reynolds (§8.7, Table 8.4): see [`reynolds_rupture_gamma`] for the rupture angle, then S
-///   and φ in closed form.
+/// - Reynolds (§8.7, Table 8.4): the rupture angle from a bracketed root-find in the Sommerfeld
+///   variable γ (one root in (π, 2π) for every ε), then S, φ and the peak in closed form; the peak
+///   sits at θ_max = 2π − θ_cav.
 ///
 /// Both Sommerfeld films share the positive pressure lobe, so their peak is the same:
 /// P̄_max = 3ε(4 − ε²)(4 − 5ε² + ε⁴)^½ / [2(1 − ε²)²(2 + ε²)] at θ = acos[−3ε/(2 + ε²)]
@@ -97,8 +98,8 @@ pub fn long_bearing(eps: f64, boundary: Boundary) -> Performance {
 /// - half Sommerfeld: S = (D/L)²(1 − ε²)²/{π ε [π²(1 − ε²) + 16ε²]^½},
 ///   φ = atan[π √(1 − ε²)/(4ε)], rupture at θ = π.
 ///
-/// Peak (mid-plane, Table 8.5): P̄ = (R/(μU))(C/L)² p = (3/4) ε sin θ_m/(1 + ε cos θ_m)³, which
-/// in Table 8.6's scale is 8π(L/D)² times that; see [`ocvirk_peak`].
+/// Peak (mid-plane, Table 8.5): P̄ = (R/(μU))(C/L)² p = (3/4) ε sin θ_m/(1 + ε cos θ_m)³ at
+/// θ_m = acos{[1 − √(1 + 24ε²)]/(4ε)}; Table 8.6's scale is 8π(L/D)² times Table 8.5's.
 /// Side leakage (Eq. 8.33): Q = ε U L C, so Q̄_L = 2ε. It is the flow leaving the convergent half;
 /// for the full Sommerfeld film the divergent half draws the same amount back in.
 ///
@@ -141,7 +142,8 @@ pub fn short_bearing(eps: f64, l_over_d: f64, boundary: Boundary) -> Option<Perf
     ))
 }
 
-/// Petroff: (R/C)·f = 2π² S for a concentric journal (Eq. 8.42 at ε = 0; the ε → 0 limit of G5).
+/// Petroff: (R/C)·f = 2π² S for a concentric journal (§5.5, Eq. 5.27 power loss; the ε → 0 limit
+/// of the G5 identity).
 pub fn petroff_friction_parameter(sommerfeld_number: f64) -> f64 {
     2.0 * PI * PI * sommerfeld_number
 }
@@ -165,8 +167,8 @@ pub fn petroff_friction_parameter(sommerfeld_number: f64) -> f64 {
 ///
 /// Source: the short-bearing coefficients of Childs, *Turbomachinery Rotordynamics* (1993), ch. 3,
 /// as tabulated by Friswell, Penny, Garvey & Lees, *Dynamics of Rotating Machines* (2010), §5.5
-/// (a_uu … b_vv), whose frame has v along the static load and u 90° behind it in the direction of
-/// rotation. In ours (x = v, y = −u): k_xx = a_vv, k_xy = −a_vu, k_yx = −a_uv, k_yy = a_uu,
+/// (a_uu … b_vv). Those read in a frame with v along the static load and u 90° behind it in the
+/// direction of rotation (the finite-difference test below pins this down). In ours (x = v, y = −u): k_xx = a_vv, k_xy = −a_vu, k_yx = −a_uv, k_yy = a_uu,
 /// c_xx = b_vv, c_xy = c_yx = −b_uv, c_yy = b_uu. Note the grouping in k_xx: only the 32ε² term
 /// carries 1/(1 − ε²). The tests re-derive all eight by differentiating the π-film short-bearing
 /// forces (pressure kept on 0 < θ < π from h_max, with the squeeze term) at the static position.
@@ -297,7 +299,7 @@ fn reynolds_long_bearing(eps: f64) -> Performance {
 ///
 /// The residual g(γ) = ε(γ − sin γ cos γ) − 2(sin γ − γ cos γ) is π(ε − 2) < 0 at π and
 /// 2π(ε + 2) > 0 at 2π, and g′(γ) = 2 sin γ (ε sin γ − γ) > 0 on (π, 2π): one root, bracketed for
-/// every ε in [0, 1). Brent to 1e-14 rad needs about ten evaluations.
+/// every ε in [0, 1). Brent, to 1e-14 rad.
 fn reynolds_rupture_gamma(eps: f64) -> f64 {
     let residual = |gamma: f64| {
         let (sin_g, cos_g) = gamma.sin_cos();
@@ -858,7 +860,7 @@ mod tests {
                 assert!(row.attitude_angle_rad > 0.0 && row.attitude_angle_rad <= PI / 2.0);
                 assert!(row.max_pressure_angle_rad > PI / 2.0 && row.max_pressure_angle_rad < PI);
                 if let Some(theta_cav) = row.cavitation_angle_rad {
-                    assert!(theta_cav >= PI && theta_cav < 2.0 * PI, "{row:?}");
+                    assert!((PI..2.0 * PI).contains(&theta_cav), "{row:?}");
                 }
             }
             let (stiffness, damping) = short_bearing_dynamic_coefficients(eps);
@@ -867,6 +869,19 @@ mod tests {
                 "ε = {eps}"
             );
         }
+    }
+
+    /// The light-load limit of the plain bearing: cross-coupled stiffness over direct damping
+    /// tends to ω/2, the half-frequency whirl ratio (Childs 1993, ch. 3), with k_xy → 1/ε,
+    /// k_yx → −1/ε and c_xx, c_yy → 2/ε.
+    #[test]
+    fn dynamic_coefficients_give_half_frequency_whirl_at_light_load() {
+        let eps = 1e-5;
+        let (k, c) = short_bearing_dynamic_coefficients(eps);
+        assert_close("k_xy ε", k[1] * eps, 1.0, 1e-6);
+        assert_close("k_yx ε", k[2] * eps, -1.0, 1e-6);
+        assert_close("k_xy / c_yy", k[1] / c[3], 0.5, 1e-6);
+        assert_close("−k_yx / c_xx", -k[2] / c[0], 0.5, 1e-6);
     }
 
     /// π-film short-bearing force on the journal centre at (x, y) moving at (ẋ, ẏ), in the

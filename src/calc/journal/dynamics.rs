@@ -41,14 +41,16 @@ pub fn perturbation(
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Coefficients, CalcError> {
     let base = Film::steady(eps, l_over_d);
-    let (equilibrium, field) = film::solve(base, mesh, stop, None, keep_going).map_err(solve_error)?;
+    let (equilibrium, field) =
+        film::solve(base, mesh, stop, None, keep_going).map_err(solve_error)?;
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
     let delta = 1e-3 * (1.0 - eps).max(1e-3);
     let rate = 2.0 * PI * delta;
     let mut solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
-        let (f, _) = film::solve(film, mesh, stop, Some(field.clone()), keep_going).map_err(solve_error)?;
+        let (f, _) =
+            film::solve(film, mesh, stop, Some(field.clone()), keep_going).map_err(solve_error)?;
         Ok(force(&f))
     };
     // ∂F/∂(A, B): h̄ = 1 + A cos θ + B sin θ, the displacement is d̄ = −(A, B).
@@ -57,13 +59,21 @@ pub fn perturbation(
     for j in 0..2 {
         let shift = |sign: f64| {
             let mut f = base;
-            if j == 0 { f.cos_offset = sign * delta } else { f.sin_offset = sign * delta }
+            if j == 0 {
+                f.cos_offset = sign * delta
+            } else {
+                f.sin_offset = sign * delta
+            }
             f
         };
         let (plus, minus) = (solve_at(shift(1.0))?, solve_at(shift(-1.0))?);
         let moving = |sign: f64| {
             let mut f = base;
-            if j == 0 { f.cos_rate = sign * rate } else { f.sin_rate = sign * rate }
+            if j == 0 {
+                f.cos_rate = sign * rate
+            } else {
+                f.sin_rate = sign * rate
+            }
             f
         };
         let (vplus, vminus) = (solve_at(moving(1.0))?, solve_at(moving(-1.0))?);
@@ -93,7 +103,11 @@ pub fn perturbation(
         }
         out
     };
-    Ok(Coefficients { stiffness: rotate(&k, s / 2.0), damping: rotate(&c, s / 2.0 * 2.0 * PI), sommerfeld_number: s })
+    Ok(Coefficients {
+        stiffness: rotate(&k, s / 2.0),
+        damping: rotate(&c, s / 2.0 * 2.0 * PI),
+        sommerfeld_number: s,
+    })
 }
 
 /// Lund's rigid-rotor stability numbers from dimensionless coefficients.
@@ -127,7 +141,10 @@ mod tests {
     use super::*;
     use crate::calc::journal::closed_form;
 
-    const STOP: Stopping = Stopping { tolerance: 1e-10, max_sweeps: 100_000 };
+    const STOP: Stopping = Stopping {
+        tolerance: 1e-10,
+        max_sweeps: 100_000,
+    };
 
     /// At small L/D the finite film tends to the short bearing: its coefficients approach the
     /// Ocvirk closed forms (π film; our film uses the Reynolds condition, which at L/D = 1/8
@@ -135,13 +152,33 @@ mod tests {
     #[test]
     fn short_bearing_limit() {
         for eps in [0.3, 0.5, 0.7] {
-            let num = perturbation(eps, 0.125, Mesh { circumferential: 144, axial_half: 12 }, STOP, &mut || true).unwrap();
+            let num = perturbation(
+                eps,
+                0.125,
+                Mesh {
+                    circumferential: 144,
+                    axial_half: 12,
+                },
+                STOP,
+                &mut || true,
+            )
+            .unwrap();
             let (k, c) = closed_form::short_bearing_dynamic_coefficients(eps);
             for i in 0..4 {
                 let scale = k.iter().map(|v| v.abs()).fold(0.0, f64::max);
-                assert!((num.stiffness[i] - k[i]).abs() <= 0.08 * scale, "ε {eps} k[{i}]: {} vs {}", num.stiffness[i], k[i]);
+                assert!(
+                    (num.stiffness[i] - k[i]).abs() <= 0.08 * scale,
+                    "ε {eps} k[{i}]: {} vs {}",
+                    num.stiffness[i],
+                    k[i]
+                );
                 let scale = c.iter().map(|v| v.abs()).fold(0.0, f64::max);
-                assert!((num.damping[i] - c[i]).abs() <= 0.08 * scale, "ε {eps} c[{i}]: {} vs {}", num.damping[i], c[i]);
+                assert!(
+                    (num.damping[i] - c[i]).abs() <= 0.08 * scale,
+                    "ε {eps} c[{i}]: {} vs {}",
+                    num.damping[i],
+                    c[i]
+                );
             }
         }
     }
@@ -151,12 +188,20 @@ mod tests {
     /// direct stiffness and damping, a threshold at light load (small ε), none at heavy load.
     #[test]
     fn light_loads_whirl_and_heavy_loads_do_not() {
-        let mesh = Mesh { circumferential: 96, axial_half: 12 };
+        let mesh = Mesh {
+            circumferential: 96,
+            axial_half: 12,
+        };
         let light = perturbation(0.2, 1.0, mesh, STOP, &mut || true).unwrap();
         assert!(light.stiffness[0] > 0.0 && light.damping[0] > 0.0 && light.damping[3] > 0.0);
         let w = whirl(&light);
-        let gamma = w.whirl_frequency_ratio.expect("a lightly loaded plain bearing can whirl");
-        assert!(gamma > 0.4 && gamma < 0.5, "half-frequency whirl, got {gamma}");
+        let gamma = w
+            .whirl_frequency_ratio
+            .expect("a lightly loaded plain bearing can whirl");
+        assert!(
+            gamma > 0.4 && gamma < 0.5,
+            "half-frequency whirl, got {gamma}"
+        );
         let heavy = perturbation(0.9, 1.0, mesh, STOP, &mut || true).unwrap();
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");

@@ -17,7 +17,6 @@ use std::f64::consts::PI;
 
 use crate::numerics::reynolds::{self, at, Grid, Problem, SolveError, Solved, Stencil, Stopping};
 
-
 /// Cells around the circumference and across the half-length.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Mesh {
@@ -67,7 +66,12 @@ pub fn circumferential_nodes(cells: usize, eps: f64) -> Vec<f64> {
 }
 
 pub fn grid(mesh: Mesh, eps: f64) -> Grid {
-    Grid { x: circumferential_nodes(mesh.circumferential, eps), ny: mesh.axial_half, width: 0.5, symmetric: true }
+    Grid {
+        x: circumferential_nodes(mesh.circumferential, eps),
+        ny: mesh.axial_half,
+        width: 0.5,
+        symmetric: true,
+    }
 }
 
 /// The film's shape and motion: h̄ = 1 + A cos θ + B sin θ with ∂h̄/∂τ = Ȧ cos θ + Ḃ sin θ
@@ -89,7 +93,15 @@ pub struct Film {
 impl Film {
     /// The aligned, steady film at eccentricity ratio ε.
     pub fn steady(eccentricity_ratio: f64, l_over_d: f64) -> Film {
-        Film { eccentricity_ratio, l_over_d, cos_offset: 0.0, sin_offset: 0.0, cos_rate: 0.0, sin_rate: 0.0, cavitation: true }
+        Film {
+            eccentricity_ratio,
+            l_over_d,
+            cos_offset: 0.0,
+            sin_offset: 0.0,
+            cos_rate: 0.0,
+            sin_rate: 0.0,
+            cavitation: true,
+        }
     }
     fn a(&self) -> f64 {
         self.eccentricity_ratio + self.cos_offset
@@ -111,7 +123,9 @@ pub fn solve(
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
     let g = grid(mesh, film.eccentricity_ratio);
     let thickness = move |theta: f64, _y: f64| film.thickness(theta);
-    let squeeze = move |theta: f64, _y: f64| 12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin());
+    let squeeze = move |theta: f64, _y: f64| {
+        12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
+    };
     let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
     let problem = Problem {
         film: &thickness,
@@ -134,7 +148,10 @@ pub fn solve_nested(
     stop: Stopping,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
-    let coarse_mesh = Mesh { circumferential: mesh.circumferential / 2, axial_half: (mesh.axial_half / 2).max(2) };
+    let coarse_mesh = Mesh {
+        circumferential: mesh.circumferential / 2,
+        axial_half: (mesh.axial_half / 2).max(2),
+    };
     let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
     let eps = film.eccentricity_ratio;
     let start = reynolds::prolong(&grid(coarse_mesh, eps), &pc, &grid(mesh, eps));
@@ -157,14 +174,25 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
 
     // Peak and rupture on the mid-plane row.
     let mid: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, g.ny)]).collect();
-    let imax = mid.iter().enumerate().max_by(|a, b| a.1.total_cmp(b.1)).map_or(0, |m| m.0);
+    let imax = mid
+        .iter()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(b.1))
+        .map_or(0, |m| m.0);
     let (max_pressure_bar, max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
     let cavitation_angle = match (imax..=g.nx()).find(|&i| mid[i] <= 0.0) {
         Some(k) if k > imax && k < g.nx() && mid[k - 1] > 0.0 => {
             // Near rupture p ~ (θc − θ)²: √p is linear; extrapolate it to zero.
-            let (a, b) = (mid[k - 1].sqrt(), if k >= 2 { mid[k - 2].sqrt() } else { 0.0 });
+            let (a, b) = (
+                mid[k - 1].sqrt(),
+                if k >= 2 { mid[k - 2].sqrt() } else { 0.0 },
+            );
             let (ta, tb) = (g.x[k - 1], if k >= 2 { g.x[k - 2] } else { g.x[k - 1] });
-            if b > a { (ta + a * (ta - tb) / (b - a)).min(g.x[k]) } else { g.x[k] }
+            if b > a {
+                (ta + a * (ta - tb) / (b - a)).min(g.x[k])
+            } else {
+                g.x[k]
+            }
         }
         Some(k) => g.x[k],
         None => 2.0 * PI,
@@ -175,7 +203,11 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
     let mut edge = 0.0;
     for i in 1..g.nx() {
         let (p1, p2) = (p[at(g, i, 1)], p[at(g, i, 2.min(g.ny))]);
-        let dpdy = if g.ny >= 2 { (4.0 * p1 - p2) / (2.0 * dy) } else { p1 / dy };
+        let dpdy = if g.ny >= 2 {
+            (4.0 * p1 - p2) / (2.0 * dy)
+        } else {
+            p1 / dy
+        };
         edge += h(g.x[i]).powi(3) * dpdy * g.cv_x(i);
     }
     let side_leakage_bar = 2.0 * edge / (48.0 * PI * l_over_d * l_over_d);
@@ -224,19 +256,38 @@ mod tests {
     use super::*;
     use serde_json::Value;
 
-    const STOP: Stopping = Stopping { tolerance: 1e-9, max_sweeps: 200_000 };
+    const STOP: Stopping = Stopping {
+        tolerance: 1e-9,
+        max_sweeps: 200_000,
+    };
 
     /// A quick look at the whole of Table 8.6 on a moderate mesh (the acceptance test with the
     /// service's fidelity levels is in tests/).
     #[test]
     #[ignore]
     fn table_8_6_survey() {
-        let text = std::fs::read_to_string(concat!(env!("CARGO_MANIFEST_DIR"), "/tests/reference/khonsari-booser-table-8-6.json")).unwrap();
+        let text = std::fs::read_to_string(concat!(
+            env!("CARGO_MANIFEST_DIR"),
+            "/tests/reference/khonsari-booser-table-8-6.json"
+        ))
+        .unwrap();
         let table: Value = serde_json::from_str(&text).unwrap();
-        for mesh in [Mesh { circumferential: 96, axial_half: 12 }, Mesh { circumferential: 192, axial_half: 24 }] {
+        for mesh in [
+            Mesh {
+                circumferential: 96,
+                axial_half: 12,
+            },
+            Mesh {
+                circumferential: 192,
+                axial_half: 24,
+            },
+        ] {
             let mut worst = [0.0f64; 5];
             for row in table["rows"].as_array().unwrap() {
-                let (ld, eps) = (row["L_over_D"].as_f64().unwrap(), row["eccentricity_ratio"].as_f64().unwrap());
+                let (ld, eps) = (
+                    row["L_over_D"].as_f64().unwrap(),
+                    row["eccentricity_ratio"].as_f64().unwrap(),
+                );
                 let (f, _) = solve(Film::steady(eps, ld), mesh, STOP, None, &mut || true).unwrap();
                 let s = f.sommerfeld_number();
                 let phi = f.attitude_angle().to_degrees();
@@ -248,7 +299,9 @@ mod tests {
                     (f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0).abs(),
                 ];
                 if eps <= 0.9 {
-                    for k in 0..5 { worst[k] = worst[k].max(e[k]); }
+                    for k in 0..5 {
+                        worst[k] = worst[k].max(e[k]);
+                    }
                 }
                 println!("{ld} {eps}: S {:.4} ({:+.2}%) φ {:.2} ({:+.2}) QL {:.4} ({:+.2}%) Pmax {:.3} ({:+.2}%) Qi {:.4} ({:+.2}%) θcav {:.1} sweeps {}",
                     s, 100.0 * (s / row["S"].as_f64().unwrap() - 1.0), phi, phi - row["attitude_angle_deg"].as_f64().unwrap(),
@@ -257,7 +310,14 @@ mod tests {
                     f.inlet_flow_bar, 100.0*(f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0),
                     f.cavitation_angle.to_degrees(), f.solved.sweeps);
             }
-            println!("{mesh:?} worst (ε ≤ 0.9): S {:.3}% φ {:.2}° QL {:.2}% Pmax {:.2}% Qi {:.2}%", 100.0 * worst[0], worst[1], 100.0 * worst[2], 100.0 * worst[3], 100.0 * worst[4]);
+            println!(
+                "{mesh:?} worst (ε ≤ 0.9): S {:.3}% φ {:.2}° QL {:.2}% Pmax {:.2}% Qi {:.2}%",
+                100.0 * worst[0],
+                worst[1],
+                100.0 * worst[2],
+                100.0 * worst[3],
+                100.0 * worst[4]
+            );
         }
     }
 }

@@ -89,16 +89,34 @@ impl Case {
         let mut alive = || budget.alive();
         let (point, load_n, evaluations) = match self.given {
             Given::Load(w) => {
-                let (p, n) = performance::equilibrium(scale / w, l_over_d, self.method, self.cavitation(), &mut alive)?;
+                let (p, n) = performance::equilibrium(
+                    scale / w,
+                    l_over_d,
+                    self.method,
+                    self.cavitation(),
+                    &mut alive,
+                )?;
                 (p, w, n)
             }
             Given::Eccentricity(eps) => {
-                let p = performance::at_eccentricity(eps, l_over_d, self.method, self.cavitation(), &mut alive)?;
+                let p = performance::at_eccentricity(
+                    eps,
+                    l_over_d,
+                    self.method,
+                    self.cavitation(),
+                    &mut alive,
+                )?;
                 let w = scale / p.sommerfeld_number;
                 (p, w, 0)
             }
         };
-        Ok(Operating { point, load_n, viscosity_pa_s: mu, temperature_c, evaluations })
+        Ok(Operating {
+            point,
+            load_n,
+            viscosity_pa_s: mu,
+            temperature_c,
+            evaluations,
+        })
     }
 
     /// Friction power E_p = F U, W.
@@ -110,7 +128,13 @@ impl Case {
 
     fn side_leakage(&self, op: &Operating) -> f64 {
         let g = self.geometry;
-        op.point.side_leakage_bar * 0.5 * PI * self.speed_rps() * g.diameter_m * g.length_m * g.radial_clearance_m
+        op.point.side_leakage_bar
+            * 0.5
+            * PI
+            * self.speed_rps()
+            * g.diameter_m
+            * g.length_m
+            * g.radial_clearance_m
     }
 
     /// ΔT = E_p/(ρ c_p Q_L) (Eq. 8.44); None without side leakage (the long-bearing closed form).
@@ -124,7 +148,11 @@ impl Case {
     /// k in T_e = T_in + k ΔT: 1 (Eq. 8.63, heat to the housing neglected for D > 2 in), ½ for
     /// smaller bearings (Eq. 8.64).
     fn effective_fraction(&self) -> f64 {
-        if self.geometry.diameter_m >= 0.0508 { 1.0 } else { 0.5 }
+        if self.geometry.diameter_m >= 0.0508 {
+            1.0
+        } else {
+            0.5
+        }
     }
 }
 
@@ -134,25 +162,47 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let t_in = case.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
     let temperature_dependent = !matches!(lub.temperature_law, TemperatureLaw::Constant { .. });
     if case.inlet_temperature_c.is_none() && temperature_dependent {
-        ctx.warn("inlet_temperature_assumed", format!("inlet_temperature_c not given: {DEFAULT_INLET_C} °C assumed"));
+        ctx.warn(
+            "inlet_temperature_assumed",
+            format!("inlet_temperature_c not given: {DEFAULT_INLET_C} °C assumed"),
+        );
     }
     for (code, message) in &lub.assumptions {
         ctx.warn(code, message.clone());
     }
     let mu_in = lub.viscosity_pa_s(t_in);
     if !(mu_in.is_finite() && mu_in > 0.0) {
-        return Err(CalcError::impossible("/inlet_temperature_c", "the lubricant's viscosity law has no value at this temperature"));
+        return Err(CalcError::impossible(
+            "/inlet_temperature_c",
+            "the lubricant's viscosity law has no value at this temperature",
+        ));
     }
 
     let isothermal = case.operate(t_in, &budget)?;
     let mut op = isothermal.clone();
     let k = case.effective_fraction();
     match (temperature_dependent, case.temperature_rise(&isothermal)) {
-        (false, _) => ctx.decide("thermal", Decision::not_applicable(case.effects.thermal, "the lubricant's viscosity does not depend on temperature")),
-        (true, None) => ctx.decide("thermal", Decision::not_applicable(case.effects.thermal, "no side leakage in the long-bearing closed form: the heat balance has no flow")),
+        (false, _) => ctx.decide(
+            "thermal",
+            Decision::not_applicable(
+                case.effects.thermal,
+                "the lubricant's viscosity does not depend on temperature",
+            ),
+        ),
+        (true, None) => ctx.decide(
+            "thermal",
+            Decision::not_applicable(
+                case.effects.thermal,
+                "no side leakage in the long-bearing closed form: the heat balance has no flow",
+            ),
+        ),
         (true, Some(rise)) => {
             let drop = 1.0 - lub.viscosity_pa_s(t_in + k * rise) / mu_in;
-            let criterion = Criterion { name: "viscosity_drop_over_temperature_rise", value: drop, threshold: 0.05 };
+            let criterion = Criterion {
+                name: "viscosity_drop_over_temperature_rise",
+                value: drop,
+                threshold: 0.05,
+            };
             let decision = Decision::decide(case.effects.thermal, criterion, "thermal");
             if decision.applied {
                 op = effective_temperature(case, t_in, k * rise, &budget)?;
@@ -180,7 +230,13 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         criterion: None,
     };
     ctx.decide("cavitation", cavitation);
-    ctx.decide("misalignment", Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"));
+    ctx.decide(
+        "misalignment",
+        Decision::not_applicable(
+            Mode::Auto,
+            "the request gives no misalignment: journal aligned",
+        ),
+    );
 
     validity_warnings(ctx, case, point);
 
@@ -193,7 +249,11 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let pressure_scale = mu * n_s * g.r_over_c().powi(2);
     let flow_scale = 0.5 * PI * n_s * g.diameter_m * g.length_m * g.radial_clearance_m;
 
-    let dynamics = if case.dynamics { dynamic_coefficients(case, &op, ctx)? } else { None };
+    let dynamics = if case.dynamics {
+        dynamic_coefficients(case, &op, ctx)?
+    } else {
+        None
+    };
     let mut output = PlainOutput {
         load_n: op.load_n,
         sommerfeld_number: point.sommerfeld_number,
@@ -241,7 +301,12 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
 
 /// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]
 /// (the rise falls as the oil thins, so the bracket holds).
-fn effective_temperature(case: &Case, t_in: f64, rise_iso: f64, budget: &Budget) -> Result<Operating, CalcError> {
+fn effective_temperature(
+    case: &Case,
+    t_in: f64,
+    rise_iso: f64,
+    budget: &Budget,
+) -> Result<Operating, CalcError> {
     let k = case.effective_fraction();
     let mut failure = None;
     let mut last: Option<Operating> = None;
@@ -259,21 +324,45 @@ fn effective_temperature(case: &Case, t_in: f64, rise_iso: f64, budget: &Budget)
             }
         }
     };
-    let root = brent(f, t_in, t_in + rise_iso, Stopping { x_tolerance: 1e-3, max_iterations: 60 });
+    let root = brent(
+        f,
+        t_in,
+        t_in + rise_iso,
+        Stopping {
+            x_tolerance: 1e-3,
+            max_iterations: 60,
+        },
+    );
     if let Some(e) = failure {
         return Err(e);
     }
     match root {
-        Ok(r) => case.operate(r.x, budget).or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
-        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged { method: "brent_effective_temperature", iterations, residual: width }),
-        Err(e) => Err(CalcError::impossible("/inlet_temperature_c", format!("no effective temperature in [{t_in:.2}, {:.2}] °C: {e:?}", t_in + rise_iso))),
+        Ok(r) => case
+            .operate(r.x, budget)
+            .or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
+        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
+            method: "brent_effective_temperature",
+            iterations,
+            residual: width,
+        }),
+        Err(e) => Err(CalcError::impossible(
+            "/inlet_temperature_c",
+            format!(
+                "no effective temperature in [{t_in:.2}, {:.2}] °C: {e:?}",
+                t_in + rise_iso
+            ),
+        )),
     }
 }
 
 fn decide_flow_effects(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
     let turbulence = Decision::decide(
         effects.turbulence,
-        Criterion { name: "film_reynolds_number", value: reynolds, threshold: TURBULENT_REYNOLDS },
+        Criterion {
+            name: "film_reynolds_number",
+            value: reynolds,
+            threshold: TURBULENT_REYNOLDS,
+        },
         "turbulence",
     );
     if turbulence.applied {
@@ -281,23 +370,61 @@ fn decide_flow_effects(ctx: &mut Context, effects: JournalEffects, reynolds: f64
             "turbulent_film",
             format!("film Reynolds number {reynolds:.0} exceeds {TURBULENT_REYNOLDS}: the film is turbulent, and the laminar result underestimates friction and load capacity"),
         );
-        ctx.decide("turbulence", Decision { applied: false, reason: format!("{}; no turbulent model yet: laminar result with a warning", turbulence.reason), ..turbulence });
+        ctx.decide(
+            "turbulence",
+            Decision {
+                applied: false,
+                reason: format!(
+                    "{}; no turbulent model yet: laminar result with a warning",
+                    turbulence.reason
+                ),
+                ..turbulence
+            },
+        );
     } else {
         ctx.decide("turbulence", turbulence);
     }
     let reduced = reynolds * g.radial_clearance_m / (0.5 * g.diameter_m);
-    let inertia = Decision::decide(effects.inertia, Criterion { name: "reduced_reynolds_number", value: reduced, threshold: 1.0 }, "inertia");
+    let inertia = Decision::decide(
+        effects.inertia,
+        Criterion {
+            name: "reduced_reynolds_number",
+            value: reduced,
+            threshold: 1.0,
+        },
+        "inertia",
+    );
     if inertia.applied {
         ctx.warn("fluid_inertia", format!("reduced Reynolds number {reduced:.2} exceeds 1: fluid inertia matters and is not modelled"));
     }
-    ctx.decide("inertia", Decision { applied: false, ..inertia });
+    ctx.decide(
+        "inertia",
+        Decision {
+            applied: false,
+            ..inertia
+        },
+    );
 }
 
 fn approximation_name(case: &Case) -> Option<String> {
     let cav = case.cavitation();
     match case.method {
-        Method::ClosedForm(Approximation::Short) => Some(if cav { "short_half_sommerfeld" } else { "short_full_sommerfeld" }.into()),
-        Method::ClosedForm(Approximation::Long) => Some(if cav { "long_reynolds" } else { "long_full_sommerfeld" }.into()),
+        Method::ClosedForm(Approximation::Short) => Some(
+            if cav {
+                "short_half_sommerfeld"
+            } else {
+                "short_full_sommerfeld"
+            }
+            .into(),
+        ),
+        Method::ClosedForm(Approximation::Long) => Some(
+            if cav {
+                "long_reynolds"
+            } else {
+                "long_full_sommerfeld"
+            }
+            .into(),
+        ),
         Method::Numerical { .. } => None,
     }
 }
@@ -326,7 +453,10 @@ fn validity_warnings(ctx: &mut Context, case: &Case, point: &Point) {
 fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
     match case.method {
         Method::ClosedForm(_) => SolverReport {
-            method: format!("closed_form_{}", approximation_name(case).unwrap_or_default()),
+            method: format!(
+                "closed_form_{}",
+                approximation_name(case).unwrap_or_default()
+            ),
             iterations: evaluations,
             ..SolverReport::closed_form("closed_form")
         },
@@ -343,13 +473,22 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
 }
 
 /// Coefficients at ε for the case's method (None for the long closed form), and S there.
-fn coefficients_at(case: &Case, eps: f64, budget: &Budget) -> Result<Option<Coefficients>, CalcError> {
+fn coefficients_at(
+    case: &Case,
+    eps: f64,
+    budget: &Budget,
+) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
     match case.method {
         Method::ClosedForm(Approximation::Short) => {
             let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
-            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld).map_or(f64::NAN, |p| p.sommerfeld_number);
-            Ok(Some(Coefficients { stiffness, damping, sommerfeld_number: s }))
+            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld)
+                .map_or(f64::NAN, |p| p.sommerfeld_number);
+            Ok(Some(Coefficients {
+                stiffness,
+                damping,
+                sommerfeld_number: s,
+            }))
         }
         Method::ClosedForm(Approximation::Long) => Ok(None),
         Method::Numerical { mesh, stop, .. } => {
@@ -359,9 +498,16 @@ fn coefficients_at(case: &Case, eps: f64, budget: &Budget) -> Result<Option<Coef
     }
 }
 
-fn dynamic_coefficients(case: &Case, op: &Operating, ctx: &mut Context) -> Result<Option<(Coefficients, Stability)>, CalcError> {
+fn dynamic_coefficients(
+    case: &Case,
+    op: &Operating,
+    ctx: &mut Context,
+) -> Result<Option<(Coefficients, Stability)>, CalcError> {
     if !case.cavitation() {
-        ctx.warn("no_dynamics_full_film", "stiffness and damping are given for the cavitating film only");
+        ctx.warn(
+            "no_dynamics_full_film",
+            "stiffness and damping are given for the cavitating film only",
+        );
         return Ok(None);
     }
     let budget = ctx.budget();
@@ -377,7 +523,9 @@ fn dynamic_coefficients(case: &Case, op: &Operating, ctx: &mut Context) -> Resul
     let s_op = coefficients.sommerfeld_number;
     let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
     let whirl = dynamics::whirl(&coefficients);
-    let stable_now = whirl.critical_mass_parameter.is_none_or(|mc| mass_parameter(omega) < mc);
+    let stable_now = whirl
+        .critical_mass_parameter
+        .is_none_or(|mc| mass_parameter(omega) < mc);
 
     // Threshold: along the equilibrium locus at fixed load and viscosity, speed is ω(ε) =
     // ω_op S(ε)/S_op; stability margin ln(m̄_c/m̄) changes sign at the threshold.
@@ -402,7 +550,11 @@ fn dynamic_coefficients(case: &Case, op: &Operating, ctx: &mut Context) -> Resul
     let mut bracket = None;
     let mut previous = eps;
     for k in 1..=10 {
-        let next = if stable_now { (eps * 0.6f64.powi(k)).max(1e-3) } else { (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY) };
+        let next = if stable_now {
+            (eps * 0.6f64.powi(k)).max(1e-3)
+        } else {
+            (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
+        };
         let m = margin(next);
         if m.is_nan() {
             break;
@@ -420,14 +572,28 @@ fn dynamic_coefficients(case: &Case, op: &Operating, ctx: &mut Context) -> Resul
         return Err(e);
     }
     let threshold_eps = match bracket {
-        Some((a, b)) => brent(&mut margin, a.min(b), a.max(b), Stopping { x_tolerance: 1e-5, max_iterations: 40 }).ok().map(|r| r.x),
+        Some((a, b)) => brent(
+            &mut margin,
+            a.min(b),
+            a.max(b),
+            Stopping {
+                x_tolerance: 1e-5,
+                max_iterations: 40,
+            },
+        )
+        .ok()
+        .map(|r| r.x),
         None => None,
     };
     if let Some(e) = failure.into_inner() {
         return Err(e);
     }
     let threshold_rpm = match threshold_eps {
-        Some(e) => Some(coefficients_at(case, e, &budget)?.map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op)).filter(|v| v.is_finite()),
+        Some(e) => Some(
+            coefficients_at(case, e, &budget)?
+                .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
+        )
+        .filter(|v| v.is_finite()),
         None => None,
     };
     let statement = match (stable_now, threshold_rpm) {

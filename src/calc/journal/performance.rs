@@ -30,21 +30,47 @@ pub enum Approximation {
 pub enum Method {
     ClosedForm(Approximation),
     /// Finite-length Reynolds on `mesh`; `richardson` extrapolates from the half mesh.
-    Numerical { level: Level, mesh: Mesh, stop: Stopping, richardson: bool },
+    Numerical {
+        level: Level,
+        mesh: Mesh,
+        stop: Stopping,
+        richardson: bool,
+    },
 }
 
 impl Method {
     /// The numerical method of a fidelity level, or an explicit mesh / tolerance.
     pub fn numerical(level: Level, mesh: Option<Mesh>, tolerance: Option<f64>) -> Method {
         let (default_mesh, default_tol) = match level {
-            Level::Fast => (Mesh { circumferential: 48, axial_half: 6 }, 1e-6),
-            Level::High => (Mesh { circumferential: 192, axial_half: 24 }, 1e-10),
-            _ => (Mesh { circumferential: 96, axial_half: 12 }, 1e-8),
+            Level::Fast => (
+                Mesh {
+                    circumferential: 48,
+                    axial_half: 6,
+                },
+                1e-6,
+            ),
+            Level::High => (
+                Mesh {
+                    circumferential: 192,
+                    axial_half: 24,
+                },
+                1e-10,
+            ),
+            _ => (
+                Mesh {
+                    circumferential: 96,
+                    axial_half: 12,
+                },
+                1e-8,
+            ),
         };
         Method::Numerical {
             level,
             mesh: mesh.unwrap_or(default_mesh),
-            stop: Stopping { tolerance: tolerance.unwrap_or(default_tol), max_sweeps: 100_000 },
+            stop: Stopping {
+                tolerance: tolerance.unwrap_or(default_tol),
+                max_sweeps: 100_000,
+            },
             richardson: level == Level::High,
         }
     }
@@ -79,12 +105,16 @@ pub fn friction_parameter(eps: f64, attitude: f64, sommerfeld: f64) -> f64 {
 pub fn solve_error(e: SolveError) -> CalcError {
     match e {
         SolveError::Cancelled => CalcError::DeadlineExceeded,
-        SolveError::NotConverged { sweeps, change } => {
-            CalcError::NotConverged { method: "finite_volume_psor", iterations: sweeps, residual: change }
-        }
-        SolveError::Diverged { sweeps } => {
-            CalcError::NotConverged { method: "finite_volume_psor", iterations: sweeps, residual: f64::INFINITY }
-        }
+        SolveError::NotConverged { sweeps, change } => CalcError::NotConverged {
+            method: "finite_volume_psor",
+            iterations: sweeps,
+            residual: change,
+        },
+        SolveError::Diverged { sweeps } => CalcError::NotConverged {
+            method: "finite_volume_psor",
+            iterations: sweeps,
+            residual: f64::INFINITY,
+        },
     }
 }
 
@@ -118,9 +148,18 @@ pub fn at_eccentricity(
 ) -> Result<Point, CalcError> {
     match method {
         Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, cavitation)),
-        Method::Numerical { mesh, stop, richardson, .. } => {
-            let film = Film { cavitation, ..Film::steady(eps, l_over_d) };
-            let (fine, coarse, _) = film::solve_nested(film, mesh, stop, keep_going).map_err(solve_error)?;
+        Method::Numerical {
+            mesh,
+            stop,
+            richardson,
+            ..
+        } => {
+            let film = Film {
+                cavitation,
+                ..Film::steady(eps, l_over_d)
+            };
+            let (fine, coarse, _) =
+                film::solve_nested(film, mesh, stop, keep_going).map_err(solve_error)?;
             let mut point = from_film(eps, &fine, cavitation);
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
             // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
@@ -135,7 +174,10 @@ pub fn at_eccentricity(
                     inlet_flow_bar: extrapolate(fine.inlet_flow_bar, coarse.inlet_flow_bar),
                     ..fine.clone()
                 };
-                point = Point { error_estimate: point.error_estimate, ..from_film(eps, &film, cavitation) };
+                point = Point {
+                    error_estimate: point.error_estimate,
+                    ..from_film(eps, &film, cavitation)
+                };
             }
             point.sweeps = fine.solved.sweeps + coarse.solved.sweeps;
             point.mesh = Some(mesh);
@@ -146,10 +188,22 @@ pub fn at_eccentricity(
 
 fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> Point {
     let p = match approx {
-        Approximation::Long => closed_form::long_bearing(eps, if cavitation { Boundary::Reynolds } else { Boundary::FullSommerfeld }),
+        Approximation::Long => closed_form::long_bearing(
+            eps,
+            if cavitation {
+                Boundary::Reynolds
+            } else {
+                Boundary::FullSommerfeld
+            },
+        ),
         Approximation::Short => {
-            let boundary = if cavitation { Boundary::HalfSommerfeld } else { Boundary::FullSommerfeld };
-            closed_form::short_bearing(eps, l_over_d, boundary).expect("the short bearing has full and half films")
+            let boundary = if cavitation {
+                Boundary::HalfSommerfeld
+            } else {
+                Boundary::FullSommerfeld
+            };
+            closed_form::short_bearing(eps, l_over_d, boundary)
+                .expect("the short bearing has full and half films")
         }
     };
     Point {
@@ -180,7 +234,10 @@ pub fn equilibrium(
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(Point, u32), CalcError> {
     let to_eps = |u: f64| 1.0 / (1.0 + (-u).exp());
-    let (u_lo, u_hi) = ((MIN_ECCENTRICITY / (1.0 - MIN_ECCENTRICITY)).ln(), (MAX_ECCENTRICITY / (1.0 - MAX_ECCENTRICITY)).ln());
+    let (u_lo, u_hi) = (
+        (MIN_ECCENTRICITY / (1.0 - MIN_ECCENTRICITY)).ln(),
+        (MAX_ECCENTRICITY / (1.0 - MAX_ECCENTRICITY)).ln(),
+    );
     // Equilibrium iterations use the fine mesh alone — unless the result is Richardson
     // extrapolated, whose S(ε) the root must be of.
     let probe = method;
@@ -196,7 +253,10 @@ pub fn equilibrium(
             }
         }
     };
-    let stop = roots::Stopping { x_tolerance: 1e-10, max_iterations: 100 };
+    let stop = roots::Stopping {
+        x_tolerance: 1e-10,
+        max_iterations: 100,
+    };
     let root = brent(&mut ln_s, u_lo, u_hi, stop);
     if let Some(e) = failure {
         return Err(e);
@@ -213,22 +273,41 @@ pub fn equilibrium(
             return Err(CalcError::impossible("/load_n", message));
         }
         Err(RootError::NotConverged { iterations, width }) => {
-            return Err(CalcError::NotConverged { method: "brent_equilibrium", iterations, residual: width })
+            return Err(CalcError::NotConverged {
+                method: "brent_equilibrium",
+                iterations,
+                residual: width,
+            })
         }
-        Err(RootError::NonFinite { .. }) => return Err(CalcError::Internal("equilibrium: non-finite Sommerfeld number".into())),
+        Err(RootError::NonFinite { .. }) => {
+            return Err(CalcError::Internal(
+                "equilibrium: non-finite Sommerfeld number".into(),
+            ))
+        }
     };
     let point = at_eccentricity(to_eps(u), l_over_d, method, cavitation, keep_going)?;
     Ok((point, evaluations))
 }
 
-fn probe_sommerfeld(eps: f64, l_over_d: f64, method: Method, cavitation: bool, keep_going: &mut dyn FnMut() -> bool) -> Result<f64, CalcError> {
+fn probe_sommerfeld(
+    eps: f64,
+    l_over_d: f64,
+    method: Method,
+    cavitation: bool,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<f64, CalcError> {
     match method {
-        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, cavitation).sommerfeld_number),
-        Method::Numerical { richardson: true, .. } => {
-            Ok(at_eccentricity(eps, l_over_d, method, cavitation, keep_going)?.sommerfeld_number)
+        Method::ClosedForm(approx) => {
+            Ok(closed(eps, l_over_d, approx, cavitation).sommerfeld_number)
         }
+        Method::Numerical {
+            richardson: true, ..
+        } => Ok(at_eccentricity(eps, l_over_d, method, cavitation, keep_going)?.sommerfeld_number),
         Method::Numerical { mesh, stop, .. } => {
-            let film = Film { cavitation, ..Film::steady(eps, l_over_d) };
+            let film = Film {
+                cavitation,
+                ..Film::steady(eps, l_over_d)
+            };
             let (f, _) = film::solve(film, mesh, stop, None, keep_going).map_err(solve_error)?;
             Ok(f.sommerfeld_number())
         }

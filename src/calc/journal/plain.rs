@@ -113,10 +113,17 @@ impl Validate for PlainInput {
     fn validate(self) -> Result<Case, Vec<FieldError>> {
         let mut errors = Vec::new();
         let g = self.geometry;
-        let (d, l, c) = (g.diameter_m.get(), g.length_m.get(), g.radial_clearance_m.get());
+        let (d, l, c) = (
+            g.diameter_m.get(),
+            g.length_m.get(),
+            g.radial_clearance_m.get(),
+        );
         let l_over_d = l / d;
         if !(0.05..=5.0).contains(&l_over_d) {
-            errors.push(FieldError::new("/geometry/length_m", format!("L/D must be within [0.05, 5], got {l_over_d:.4}")));
+            errors.push(FieldError::new(
+                "/geometry/length_m",
+                format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),
+            ));
         }
         let r_over_c = 0.5 * d / c;
         if !(50.0..=1e4).contains(&r_over_c) {
@@ -126,14 +133,19 @@ impl Validate for PlainInput {
             ));
         }
         if d > 10.0 {
-            errors.push(FieldError::new("/geometry/diameter_m", "must be at most 10 m"));
+            errors.push(FieldError::new(
+                "/geometry/diameter_m",
+                "must be at most 10 m",
+            ));
         }
         if self.speed_rpm.get() > 1e6 {
             errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
         }
         let operating = match (self.load_n, self.eccentricity_ratio) {
             (Some(w), None) => Some(operating::Given::Load(w.get())),
-            (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => Some(operating::Given::Eccentricity(eps)),
+            (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => {
+                Some(operating::Given::Eccentricity(eps))
+            }
             (None, Some(eps)) => {
                 errors.push(FieldError::new(
                     "/eccentricity_ratio",
@@ -142,20 +154,28 @@ impl Validate for PlainInput {
                 None
             }
             _ => {
-                errors.push(FieldError::new("/load_n", "give exactly one of load_n and eccentricity_ratio"));
+                errors.push(FieldError::new(
+                    "/load_n",
+                    "give exactly one of load_n and eccentricity_ratio",
+                ));
                 None
             }
         };
         let method = match self.fidelity {
-            FidelityRequest::Level(Level::ClosedForm) => Some(Method::ClosedForm(match self.closed_form {
-                ClosedFormChoice::Short => Approximation::Short,
-                ClosedFormChoice::Long => Approximation::Long,
-                ClosedFormChoice::Auto if l_over_d <= 1.0 => Approximation::Short,
-                ClosedFormChoice::Auto => Approximation::Long,
-            })),
+            FidelityRequest::Level(Level::ClosedForm) => {
+                Some(Method::ClosedForm(match self.closed_form {
+                    ClosedFormChoice::Short => Approximation::Short,
+                    ClosedFormChoice::Long => Approximation::Long,
+                    ClosedFormChoice::Auto if l_over_d <= 1.0 => Approximation::Short,
+                    ClosedFormChoice::Auto => Approximation::Long,
+                }))
+            }
             FidelityRequest::Level(level) => Some(Method::numerical(level, None, None)),
             FidelityRequest::Custom(custom) => {
-                let mesh = custom.grid.map(|[n, m]| super::film::Mesh { circumferential: n as usize, axial_half: m as usize });
+                let mesh = custom.grid.map(|[n, m]| super::film::Mesh {
+                    circumferential: n as usize,
+                    axial_half: m as usize,
+                });
                 if let Some([n, m]) = custom.grid {
                     if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
                         errors.push(FieldError::new(
@@ -166,7 +186,10 @@ impl Validate for PlainInput {
                 }
                 if let Some(t) = custom.tolerance {
                     if !(1e-14..=1e-3).contains(&t) {
-                        errors.push(FieldError::new("/fidelity/tolerance", "must be within [1e-14, 1e-3]"));
+                        errors.push(FieldError::new(
+                            "/fidelity/tolerance",
+                            "must be within [1e-14, 1e-3]",
+                        ));
                     }
                 }
                 Some(Method::numerical(Level::Standard, mesh, custom.tolerance))
@@ -191,7 +214,11 @@ impl Validate for PlainInput {
         };
         match (errors.is_empty(), operating, method, lubricant) {
             (true, Some(given), Some(method), Some(lubricant)) => Ok(Case {
-                geometry: Geometry { diameter_m: d, length_m: l, radial_clearance_m: c },
+                geometry: Geometry {
+                    diameter_m: d,
+                    length_m: l,
+                    radial_clearance_m: c,
+                },
                 speed_rpm: self.speed_rpm.get(),
                 lubricant,
                 given,
@@ -233,7 +260,9 @@ pub struct DynamicCoefficients {
     /// C_ij C ω/W, dimensionless, [xx, xy, yx, yy].
     pub damping_dimensionless: [f64; 4],
     /// How they were obtained.
-    #[schema(example = "perturbation of the converged film: ±δ displacement and ±δ̇ velocity, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved")]
+    #[schema(
+        example = "perturbation of the converged film: ±δ displacement and ±δ̇ velocity, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved"
+    )]
     pub method: String,
 }
 
@@ -329,8 +358,15 @@ angles from h_max in the direction of rotation, friction from the journal-surfac
 Equilibrium from the load by Brent's method on ln S against ln(ε/(1−ε)). `fidelity: closed_form` gives the infinitely short (Ocvirk) or long \
 (Sommerfeld / half-Sommerfeld / Reynolds) bearing. Stiffness and damping by perturbation of the converged film (feed line fixed at the \
 equilibrium h_max, cavitation re-solved in every perturbed film); rigid-rotor threshold by Lund's method.";
-    const FIDELITY: &'static [Level] = &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
-    const EFFECTS: &'static [&'static str] = &["thermal", "cavitation", "turbulence", "inertia", "misalignment"];
+    const FIDELITY: &'static [Level] =
+        &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &[
+        "thermal",
+        "cavitation",
+        "turbulence",
+        "inertia",
+        "misalignment",
+    ];
     const EXAMPLE: &'static str = r#"{"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}, "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000, "inlet_temperature_c": 40}"#;
 
     type Input = PlainInput;
