@@ -223,7 +223,7 @@ fn equilibrium_reproduces_the_load() {
 #[test]
 fn equilibrium_converges_across_sommerfeld_numbers() {
     for ld in [0.25, 1.0, 2.0] {
-        for s in [1e-3f64.max(0.002 * ld), 0.01, 0.1, 1.0, 10.0] {
+        for s in [1e-3, 0.01, 0.1, 1.0, 10.0, 100.0] {
             let scale = 0.03 * 50.0 * 0.1 * ld * 0.1 * 500.0f64.powi(2);
             let mut body = at_eccentricity(ld, 0.5, json!({"fidelity": "fast"}));
             body.as_object_mut().unwrap().remove("eccentricity_ratio");
@@ -294,7 +294,7 @@ fn invalid_requests_name_their_field() {
             other => panic!("{pointer}: expected a 422, got {other:?}"),
         }
     }
-    // A load beyond what ε = 0.995 carries is physically impossible: 422 naming the load.
+    // A load beyond what ε = 0.999 carries is physically impossible: 422 naming the load.
     let mut heavy = base.clone();
     heavy.as_object_mut().unwrap().remove("eccentricity_ratio");
     heavy["load_n"] = json!(1e12);

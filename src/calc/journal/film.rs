@@ -40,6 +40,8 @@ pub struct FilmSolution {
     pub side_leakage_bar: f64,
     /// Q_i/((π/2) N_s D L C) at the feed line θ = 0.
     pub inlet_flow_bar: f64,
+    /// (θ, P̄) at the grid nodes of the mid-plane.
+    pub midplane: Vec<(f64, f64)>,
     pub solved: Solved,
 }
 
@@ -229,6 +231,7 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         cavitation_angle,
         side_leakage_bar,
         inlet_flow_bar: inlet,
+        midplane: g.x.iter().cloned().zip(mid.iter().cloned()).collect(),
         solved,
     }
 }

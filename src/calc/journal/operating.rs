@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
-use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, Stability};
+use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{Budget, CalcError, Context};
@@ -56,6 +56,7 @@ pub struct Case {
     pub method: Method,
     pub effects: JournalEffects,
     pub dynamics: bool,
+    pub include_field: bool,
 }
 
 /// A solved operating point at one viscosity.
@@ -276,6 +277,20 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,
         approximation: approximation_name(case),
+        approximation_note: approximation_note(case),
+        petroff_friction_coefficient: 2.0 * PI * PI * point.sommerfeld_number / g.r_over_c(),
+        pressure_profile: if case.include_field {
+            point.midplane.as_ref().map(|m| {
+                m.iter()
+                    .map(|&(theta, p)| ProfilePoint {
+                        angle_deg: theta.to_degrees(),
+                        pressure_pa: p * pressure_scale,
+                    })
+                    .collect()
+            })
+        } else {
+            None
+        },
         dynamic_coefficients: None,
         stability: None,
     };
@@ -425,6 +440,23 @@ fn approximation_name(case: &Case) -> Option<String> {
             }
             .into(),
         ),
+        Method::Numerical { .. } => None,
+    }
+}
+
+fn approximation_note(case: &Case) -> Option<String> {
+    let ld = case.geometry.l_over_d();
+    match case.method {
+        Method::ClosedForm(Approximation::Short) => Some(if ld <= 0.5 {
+            format!("infinitely short bearing (Ocvirk): axial pressure flow dominates; valid for L/D ≤ 0.5, and L/D = {ld:.3} fits")
+        } else {
+            format!("infinitely short bearing (Ocvirk): chosen for L/D ≤ 1 but valid only to L/D = 0.5; at L/D = {ld:.3} it gives trends, not numbers")
+        }),
+        Method::ClosedForm(Approximation::Long) => Some(if ld >= 2.0 {
+            format!("infinitely long bearing: circumferential flow dominates; it suits L/D ≥ 2 or end-sealed bearings, and L/D = {ld:.3} fits")
+        } else {
+            format!("infinitely long bearing: it suits L/D ≥ 2; at L/D = {ld:.3} it overestimates the load capacity")
+        }),
         Method::Numerical { .. } => None,
     }
 }

@@ -10,9 +10,9 @@ use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
 use crate::numerics::roots::{self, brent, RootError};
 
-/// Highest eccentricity ratio the service solves for: beyond it the minimum film is below 0.5 %
-/// of the clearance, where no real bearing runs.
-pub const MAX_ECCENTRICITY: f64 = 0.995;
+/// Highest eccentricity ratio the service solves for: beyond it the minimum film is below 0.1 %
+/// of the clearance, where no real bearing runs (and S < 1e-3 even at L/D = 1/4).
+pub const MAX_ECCENTRICITY: f64 = 0.999;
 /// Lowest eccentricity ratio of an equilibrium search.
 pub const MIN_ECCENTRICITY: f64 = 1e-4;
 
@@ -88,6 +88,8 @@ pub struct Point {
     pub cavitation_angle: Option<f64>,
     pub side_leakage_bar: f64,
     pub inlet_flow_bar: Option<f64>,
+    /// (θ, P̄) along the mid-plane, numerical solutions only.
+    pub midplane: Option<Vec<(f64, f64)>>,
     /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
     /// estimate of S, the mesh.
     pub sweeps: u32,
@@ -131,6 +133,7 @@ fn from_film(eps: f64, f: &FilmSolution, cavitation: bool) -> Point {
         cavitation_angle: cavitation.then_some(f.cavitation_angle),
         side_leakage_bar: f.side_leakage_bar,
         inlet_flow_bar: Some(f.inlet_flow_bar),
+        midplane: Some(f.midplane.clone()),
         sweeps: f.solved.sweeps,
         residual: Some(f.solved.residual),
         error_estimate: None,
@@ -216,6 +219,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         cavitation_angle: p.cavitation_angle_rad,
         side_leakage_bar: p.side_leakage_bar,
         inlet_flow_bar: None,
+        midplane: None,
         sweeps: 0,
         residual: None,
         error_estimate: None,
@@ -223,9 +227,13 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
     }
 }
 
-/// The eccentricity ratio at which the bearing carries Sommerfeld number `s_target`: Brent on
-/// ln S against u = ln(ε/(1 − ε)) — S spans six decades and ε crowds towards 1, and S falls
-/// monotonically with ε, so the bracket [1e-4, 0.995] holds every reachable load.
+/// The eccentricity ratio at which the bearing carries Sommerfeld number `s_target`.
+///
+/// Brent on ln S against u = ln(ε/(1 − ε)) — S spans six decades and ε crowds towards 1, and S
+/// falls monotonically with ε, so the bracket [1e-4, 0.999] holds every reachable load. A
+/// numerical method first finds the root on the mesh with half the cells (an eighth of the
+/// work), then polishes it on its own mesh by safeguarded secant steps: the two meshes' S(ε)
+/// differ by a nearly constant factor, so the fine root is a step or three away.
 pub fn equilibrium(
     s_target: f64,
     l_over_d: f64,
@@ -233,83 +241,179 @@ pub fn equilibrium(
     cavitation: bool,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(Point, u32), CalcError> {
-    let to_eps = |u: f64| 1.0 / (1.0 + (-u).exp());
-    let (u_lo, u_hi) = (
-        (MIN_ECCENTRICITY / (1.0 - MIN_ECCENTRICITY)).ln(),
-        (MAX_ECCENTRICITY / (1.0 - MAX_ECCENTRICITY)).ln(),
-    );
-    // Equilibrium iterations use the fine mesh alone — unless the result is Richardson
-    // extrapolated, whose S(ε) the root must be of.
-    let probe = method;
-    let mut failure: Option<CalcError> = None;
+    let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
     let mut evaluations = 0u32;
-    let mut ln_s = |u: f64| -> f64 {
-        evaluations += 1;
-        match probe_sommerfeld(to_eps(u), l_over_d, probe, cavitation, keep_going) {
-            Ok(s) => s.ln() - s_target.ln(),
-            Err(e) => {
-                failure.get_or_insert(e);
-                f64::NAN
-            }
-        }
+    let coarse = match method {
+        Method::Numerical {
+            level,
+            mesh,
+            stop,
+            richardson: false,
+        } if mesh.circumferential >= 32 => Some(Method::Numerical {
+            level,
+            mesh: Mesh {
+                circumferential: mesh.circumferential / 2,
+                axial_half: (mesh.axial_half / 2).max(2),
+            },
+            stop,
+            richardson: false,
+        }),
+        _ => None,
     };
-    let stop = roots::Stopping {
-        x_tolerance: 1e-10,
-        max_iterations: 100,
+    let mut searcher = Searcher {
+        s_target,
+        l_over_d,
+        cavitation,
+        warm: None,
+        evaluations: &mut evaluations,
     };
-    let root = brent(&mut ln_s, u_lo, u_hi, stop);
-    if let Some(e) = failure {
-        return Err(e);
-    }
-    let u = match root {
-        Ok(r) => r.x,
-        Err(RootError::NoSignChange { fa, fb, .. }) => {
-            let (s_lo, s_hi) = (s_target * fa.exp(), s_target * fb.exp());
-            let message = if s_target > s_lo {
-                format!("the Sommerfeld number {s_target:.4e} is above {s_lo:.4e}, the value at ε = {MIN_ECCENTRICITY}: the load is too light for a hydrodynamic equilibrium this model resolves")
-            } else {
-                format!("the Sommerfeld number {s_target:.4e} is below {s_hi:.4e}, the value at ε = {MAX_ECCENTRICITY}: the load is too high for this bearing (minimum film below 0.5 % of the clearance)")
-            };
-            return Err(CalcError::impossible("/load_n", message));
-        }
-        Err(RootError::NotConverged { iterations, width }) => {
-            return Err(CalcError::NotConverged {
-                method: "brent_equilibrium",
-                iterations,
-                residual: width,
-            })
-        }
-        Err(RootError::NonFinite { .. }) => {
-            return Err(CalcError::Internal(
-                "equilibrium: non-finite Sommerfeld number".into(),
-            ))
-        }
+    let u = match coarse {
+        // Near the ends of the bracket the two meshes may disagree on whether a root exists:
+        // the fine mesh decides.
+        Some(coarse) => match searcher.bracketed(coarse, bracket, keep_going) {
+            Ok(u) => searcher.polish(method, u, bracket, keep_going)?,
+            Err(CalcError::Impossible { .. }) => searcher.bracketed(method, bracket, keep_going)?,
+            Err(e) => return Err(e),
+        },
+        None => searcher.bracketed(method, bracket, keep_going)?,
     };
     let point = at_eccentricity(to_eps(u), l_over_d, method, cavitation, keep_going)?;
     Ok((point, evaluations))
 }
 
-fn probe_sommerfeld(
-    eps: f64,
+fn to_eps(u: f64) -> f64 {
+    1.0 / (1.0 + (-u).exp())
+}
+
+fn to_u(eps: f64) -> f64 {
+    (eps / (1.0 - eps)).ln()
+}
+
+/// The residual ln S(ε(u)) − ln S_target and the roots of it.
+struct Searcher<'a> {
+    s_target: f64,
     l_over_d: f64,
-    method: Method,
     cavitation: bool,
-    keep_going: &mut dyn FnMut() -> bool,
-) -> Result<f64, CalcError> {
-    match method {
-        Method::ClosedForm(approx) => {
-            Ok(closed(eps, l_over_d, approx, cavitation).sommerfeld_number)
+    /// Each probe starts from the last field: successive ε are close once the search homes in.
+    warm: Option<(Mesh, Vec<f64>)>,
+    evaluations: &'a mut u32,
+}
+
+impl Searcher<'_> {
+    fn residual(
+        &mut self,
+        method: Method,
+        u: f64,
+        keep_going: &mut dyn FnMut() -> bool,
+    ) -> Result<f64, CalcError> {
+        *self.evaluations += 1;
+        let eps = to_eps(u);
+        let s = match method {
+            Method::ClosedForm(approx) => {
+                closed(eps, self.l_over_d, approx, self.cavitation).sommerfeld_number
+            }
+            Method::Numerical {
+                richardson: true, ..
+            } => {
+                at_eccentricity(eps, self.l_over_d, method, self.cavitation, keep_going)?
+                    .sommerfeld_number
+            }
+            Method::Numerical { mesh, stop, .. } => {
+                let film = Film {
+                    cavitation: self.cavitation,
+                    ..Film::steady(eps, self.l_over_d)
+                };
+                let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
+                let (f, p) =
+                    film::solve(film, mesh, stop, start, keep_going).map_err(solve_error)?;
+                self.warm = Some((mesh, p));
+                f.sommerfeld_number()
+            }
+        };
+        Ok(s.ln() - self.s_target.ln())
+    }
+
+    /// Brent over the bracket; no sign change means the load is out of reach: a 422 naming it.
+    fn bracketed(
+        &mut self,
+        method: Method,
+        (lo, hi): (f64, f64),
+        keep_going: &mut dyn FnMut() -> bool,
+    ) -> Result<f64, CalcError> {
+        let mut failure = None;
+        let s_target = self.s_target;
+        let root = brent(
+            |u| match self.residual(method, u, keep_going) {
+                Ok(r) => r,
+                Err(e) => {
+                    failure.get_or_insert(e);
+                    f64::NAN
+                }
+            },
+            lo,
+            hi,
+            roots::Stopping {
+                x_tolerance: 1e-10,
+                max_iterations: 100,
+            },
+        );
+        if let Some(e) = failure {
+            return Err(e);
         }
-        Method::Numerical {
-            richardson: true, ..
-        } => Ok(at_eccentricity(eps, l_over_d, method, cavitation, keep_going)?.sommerfeld_number),
-        Method::Numerical { mesh, stop, .. } => {
-            let film = Film {
-                cavitation,
-                ..Film::steady(eps, l_over_d)
-            };
-            let (f, _) = film::solve(film, mesh, stop, None, keep_going).map_err(solve_error)?;
-            Ok(f.sommerfeld_number())
+        match root {
+            Ok(r) => Ok(r.x),
+            Err(RootError::NoSignChange { fa, fb, .. }) => {
+                let (s_lo, s_hi) = (s_target * fa.exp(), s_target * fb.exp());
+                let message = if s_target > s_lo {
+                    format!("the Sommerfeld number {s_target:.4e} is above {s_lo:.4e}, the value at ε = {MIN_ECCENTRICITY}: the load is too light for a hydrodynamic equilibrium this model resolves")
+                } else {
+                    format!("the Sommerfeld number {s_target:.4e} is below {s_hi:.4e}, the value at ε = {MAX_ECCENTRICITY}: the load is too high for this bearing (minimum film below 0.1 % of the clearance)")
+                };
+                Err(CalcError::impossible("/load_n", message))
+            }
+            Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
+                method: "brent_equilibrium",
+                iterations,
+                residual: width,
+            }),
+            Err(RootError::NonFinite { .. }) => Err(CalcError::Internal(
+                "equilibrium: non-finite Sommerfeld number".into(),
+            )),
         }
+    }
+
+    /// Secant steps on `method` from the coarse root `u0`, kept inside the bracket; Brent over
+    /// the whole bracket if they do not settle in 12 steps.
+    fn polish(
+        &mut self,
+        method: Method,
+        u0: f64,
+        bracket: (f64, f64),
+        keep_going: &mut dyn FnMut() -> bool,
+    ) -> Result<f64, CalcError> {
+        let (mut ua, mut fa) = (u0, self.residual(method, u0, keep_going)?);
+        if fa.abs() < 1e-13 {
+            return Ok(ua);
+        }
+        // ln S falls with u at roughly the coarse slope; a small first step finds the fine one.
+        let mut ub = (u0 + if fa > 0.0 { 1e-3 } else { -1e-3 }).clamp(bracket.0, bracket.1);
+        let mut fb = self.residual(method, ub, keep_going)?;
+        for _ in 0..12 {
+            if fb.abs() < 1e-13 {
+                return Ok(ub);
+            }
+            let slope = (fb - fa) / (ub - ua);
+            if !(slope.is_finite() && slope < 0.0) {
+                break;
+            }
+            let next = (ub - fb / slope).clamp(bracket.0, bracket.1);
+            (ua, fa) = (ub, fb);
+            ub = next;
+            fb = self.residual(method, ub, keep_going)?;
+            if (ub - ua).abs() < 1e-10 {
+                return Ok(ub);
+            }
+        }
+        self.bracketed(method, bracket, keep_going)
     }
 }

@@ -78,8 +78,8 @@ pub struct PlainInput {
     /// Steady radial load W, N (> 0).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 10000.0)]
     pub load_n: Option<Positive>,
-    /// Eccentricity ratio ε = e/C, dimensionless, 0.0001 … 0.995 (instead of `load_n`).
-    #[schema(minimum = 0.0001, maximum = 0.995, example = 0.6)]
+    /// Eccentricity ratio ε = e/C, dimensionless, 0.0001 … 0.999 (instead of `load_n`).
+    #[schema(minimum = 0.0001, maximum = 0.999, example = 0.6)]
     pub eccentricity_ratio: Option<f64>,
     /// Oil inlet temperature, °C (default 40): the viscosity is taken here, or at the effective
     /// temperature when the thermal effect applies.
@@ -102,6 +102,10 @@ pub struct PlainInput {
     #[serde(default = "yes")]
     #[schema(example = true)]
     pub dynamics: bool,
+    /// Include the mid-plane pressure profile in the result (numerical fidelities; default false).
+    #[serde(default)]
+    #[schema(example = false)]
+    pub include_field: bool,
 }
 
 fn yes() -> bool {
@@ -227,10 +231,20 @@ impl Validate for PlainInput {
                 method,
                 effects: self.effects,
                 dynamics: self.dynamics,
+                include_field: self.include_field,
             }),
             _ => Err(errors),
         }
     }
+}
+
+/// One node of the mid-plane pressure profile.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct ProfilePoint {
+    /// θ from h_max in the direction of rotation, degrees.
+    pub angle_deg: f64,
+    /// Film pressure above the feed pressure, Pa.
+    pub pressure_pa: f64,
 }
 
 /// Stiffness and damping of the film.
@@ -312,6 +326,8 @@ pub struct PlainOutput {
     /// Film rupture angle from h_max (mid-plane), degrees; absent for a full film.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cavitation_start_angle_deg: Option<f64>,
+    /// Petroff's friction coefficient 2π² S (C/R), the concentric-journal estimate, dimensionless.
+    pub petroff_friction_coefficient: f64,
     /// f = F/W, dimensionless; F is the journal-surface shear integrated over the full
     /// circumference (the convention of Table 8.6).
     pub friction_coefficient: f64,
@@ -339,10 +355,17 @@ pub struct PlainOutput {
     pub effective_viscosity_pa_s: f64,
     /// Film Reynolds number ρ U C/μ, dimensionless.
     pub reynolds_number: f64,
-    /// The closed form used at `fidelity: closed_form`: `short_half_sommerfeld`, … ; absent for
-    /// the numerical solution.
+    /// The closed form used at `fidelity: closed_form`: `short_half_sommerfeld`,
+    /// `short_full_sommerfeld`, `long_reynolds` or `long_full_sommerfeld`; absent for the
+    /// numerical solution.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub approximation: Option<String>,
+    /// Why that approximation, and how well it fits the L/D asked.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub approximation_note: Option<String>,
+    /// Mid-plane pressure profile, with `include_field` and a numerical fidelity.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pressure_profile: Option<Vec<ProfilePoint>>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamic_coefficients: Option<DynamicCoefficients>,
     #[serde(skip_serializing_if = "Option::is_none")]

@@ -1,0 +1,56 @@
+//! Plain journal bearing: the issue's speed targets (release, one core).
+//! - default fidelity at L/D = 1, ε = 0.8: under 2 ms;
+//! - equilibrium from load: under 10 ms;
+//! - a closed form: under 20 µs.
+//!
+//! `cargo bench --bench journal`.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use stribeck::calc::journal::performance::{self, Approximation, Method};
+use stribeck::fidelity::Level;
+
+fn journal(c: &mut Criterion) {
+    let standard = Method::numerical(Level::Standard, None, None);
+    c.bench_function("film at ε = 0.8, L/D = 1, standard", |b| {
+        b.iter(|| {
+            performance::at_eccentricity(black_box(0.8), 1.0, standard, true, &mut || true).unwrap()
+        })
+    });
+    c.bench_function(
+        "equilibrium from load, S = 0.0447, L/D = 1, standard",
+        |b| {
+            b.iter(|| {
+                performance::equilibrium(black_box(0.0447), 1.0, standard, true, &mut || true)
+                    .unwrap()
+            })
+        },
+    );
+    let short = Method::ClosedForm(Approximation::Short);
+    c.bench_function("closed form, short bearing at ε = 0.8", |b| {
+        b.iter(|| {
+            performance::at_eccentricity(black_box(0.8), 0.5, short, true, &mut || true).unwrap()
+        })
+    });
+    let long = Method::ClosedForm(Approximation::Long);
+    c.bench_function("closed form, long bearing (Reynolds) at ε = 0.8", |b| {
+        b.iter(|| {
+            performance::at_eccentricity(black_box(0.8), 2.0, long, true, &mut || true).unwrap()
+        })
+    });
+    let request = br#"{"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}, "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000, "inlet_temperature_c": 40}"#;
+    let entry = stribeck::calc::find("/v1/journal-bearings/plain").unwrap();
+    c.bench_function(
+        "whole request: thermal equilibrium, K and C, whirl threshold",
+        |b| {
+            b.iter(|| {
+                let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                (entry.execute)(black_box(request), far, Default::default()).unwrap()
+            })
+        },
+    );
+}
+
+criterion_group!(benches, journal);
+criterion_main!(benches);
