@@ -144,10 +144,12 @@ pub fn solve(
 
 /// Solve on `mesh` after a solve on the mesh with half the cells each way, whose field starts
 /// the fine one. Returns (fine, coarse, fine field): the pair gives the discretisation error.
+/// `warm`, a converged field on `mesh` at a nearby state, starts the fine solve instead.
 pub fn solve_nested(
     film: Film,
     mesh: Mesh,
     stop: Stopping,
+    warm: Option<Vec<f64>>,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
     let coarse_mesh = Mesh {
@@ -156,7 +158,8 @@ pub fn solve_nested(
     };
     let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
     let eps = film.eccentricity_ratio;
-    let start = reynolds::prolong(&grid(coarse_mesh, eps), &pc, &grid(mesh, eps));
+    let start =
+        warm.unwrap_or_else(|| reynolds::prolong(&grid(coarse_mesh, eps), &pc, &grid(mesh, eps)));
     let (fine, p) = solve(film, mesh, stop, Some(start), keep_going)?;
     Ok((fine, coarse, p))
 }
@@ -252,75 +255,4 @@ fn parabolic_peak(x: &[f64], y: &[f64], i: usize) -> (f64, f64) {
     let xv = (-b / (2.0 * a)).clamp(x0, x2);
     let c = y1 - a * x1 * x1 - b * x1;
     ((a * xv * xv + b * xv + c).max(y1), xv)
-}
-
-#[cfg(test)]
-mod tests {
-    use super::*;
-    use serde_json::Value;
-
-    const STOP: Stopping = Stopping {
-        tolerance: 1e-9,
-        max_sweeps: 200_000,
-    };
-
-    /// A quick look at the whole of Table 8.6 on a moderate mesh (the acceptance test with the
-    /// service's fidelity levels is in tests/).
-    #[test]
-    #[ignore]
-    fn table_8_6_survey() {
-        let text = std::fs::read_to_string(concat!(
-            env!("CARGO_MANIFEST_DIR"),
-            "/tests/reference/khonsari-booser-table-8-6.json"
-        ))
-        .unwrap();
-        let table: Value = serde_json::from_str(&text).unwrap();
-        for mesh in [
-            Mesh {
-                circumferential: 96,
-                axial_half: 12,
-            },
-            Mesh {
-                circumferential: 192,
-                axial_half: 24,
-            },
-        ] {
-            let mut worst = [0.0f64; 5];
-            for row in table["rows"].as_array().unwrap() {
-                let (ld, eps) = (
-                    row["L_over_D"].as_f64().unwrap(),
-                    row["eccentricity_ratio"].as_f64().unwrap(),
-                );
-                let (f, _) = solve(Film::steady(eps, ld), mesh, STOP, None, &mut || true).unwrap();
-                let s = f.sommerfeld_number();
-                let phi = f.attitude_angle().to_degrees();
-                let e = [
-                    (s / row["S"].as_f64().unwrap() - 1.0).abs(),
-                    (phi - row["attitude_angle_deg"].as_f64().unwrap()).abs(),
-                    (f.side_leakage_bar / row["Q_L_bar"].as_f64().unwrap() - 1.0).abs(),
-                    (f.max_pressure_bar / row["P_max_bar"].as_f64().unwrap() - 1.0).abs(),
-                    (f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0).abs(),
-                ];
-                if eps <= 0.9 {
-                    for k in 0..5 {
-                        worst[k] = worst[k].max(e[k]);
-                    }
-                }
-                println!("{ld} {eps}: S {:.4} ({:+.2}%) φ {:.2} ({:+.2}) QL {:.4} ({:+.2}%) Pmax {:.3} ({:+.2}%) Qi {:.4} ({:+.2}%) θcav {:.1} sweeps {}",
-                    s, 100.0 * (s / row["S"].as_f64().unwrap() - 1.0), phi, phi - row["attitude_angle_deg"].as_f64().unwrap(),
-                    f.side_leakage_bar, 100.0*(f.side_leakage_bar / row["Q_L_bar"].as_f64().unwrap() - 1.0),
-                    f.max_pressure_bar, 100.0*(f.max_pressure_bar / row["P_max_bar"].as_f64().unwrap() - 1.0),
-                    f.inlet_flow_bar, 100.0*(f.inlet_flow_bar / row["Q_i_bar"].as_f64().unwrap() - 1.0),
-                    f.cavitation_angle.to_degrees(), f.solved.sweeps);
-            }
-            println!(
-                "{mesh:?} worst (ε ≤ 0.9): S {:.3}% φ {:.2}° QL {:.2}% Pmax {:.2}% Qi {:.2}%",
-                100.0 * worst[0],
-                worst[1],
-                100.0 * worst[2],
-                100.0 * worst[3],
-                100.0 * worst[4]
-            );
-        }
-    }
 }

@@ -507,11 +507,12 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
 /// Coefficients at ε for the case's method (None for the long closed form), and S there.
 fn coefficients_at(
     case: &Case,
+    method: Method,
     eps: f64,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
-    match case.method {
+    match method {
         Method::ClosedForm(Approximation::Short) => {
             let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
             let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld)
@@ -544,7 +545,7 @@ fn dynamic_coefficients(
     }
     let budget = ctx.budget();
     let eps = op.point.eccentricity_ratio;
-    let Some(coefficients) = coefficients_at(case, eps, &budget)? else {
+    let Some(coefficients) = coefficients_at(case, case.method, eps, &budget)? else {
         ctx.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
     };
@@ -561,9 +562,23 @@ fn dynamic_coefficients(
 
     // Threshold: along the equilibrium locus at fixed load and viscosity, speed is ω(ε) =
     // ω_op S(ε)/S_op; stability margin ln(m̄_c/m̄) changes sign at the threshold.
+    // The threshold search walks the locus on the `fast` mesh (a few per cent on the
+    // threshold speed, a fraction of the cost); S_op is taken on the same mesh.
+    let search = match case.method {
+        Method::Numerical { level, stop, .. } => {
+            Method::numerical(crate::fidelity::Level::Fast, None, None).with_stop(stop, level)
+        }
+        m => m,
+    };
+    let s_op = match search {
+        Method::Numerical { .. } => {
+            coefficients_at(case, search, eps, &budget)?.map_or(s_op, |c| c.sommerfeld_number)
+        }
+        _ => s_op,
+    };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match coefficients_at(case, e, &budget) {
+        match coefficients_at(case, search, e, &budget) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl(&c).critical_mass_parameter {
@@ -622,7 +637,7 @@ fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, e, &budget)?
+            coefficients_at(case, search, e, &budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),
