@@ -71,10 +71,20 @@ pub struct Stencil {
     b: Vec<f64>,
 }
 
+/// A direction of flow.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Axis {
+    X,
+    Y,
+}
+
 /// What the Reynolds problem is: film thickness h(x, y), anisotropy `a` of the y-term, wedge
-/// coefficient Λ, and an optional source s(x, y) (squeeze terms), all dimensionless.
+/// coefficient Λ, an optional source s(x, y) (squeeze terms), and optionally the flow
+/// conductance per direction in place of h³ (turbulence coefficients scale it), all
+/// dimensionless.
 pub struct Problem<'a> {
     pub film: &'a dyn Fn(f64, f64) -> f64,
+    pub conductance: Option<&'a dyn Fn(f64, f64, Axis) -> f64>,
     pub anisotropy: f64,
     pub wedge: f64,
     pub source: Option<&'a dyn Fn(f64, f64) -> f64>,
@@ -102,6 +112,10 @@ impl Stencil {
             b: vec![0.0; n],
         };
         let h = problem.film;
+        let cond = |x: f64, y: f64, axis: Axis| match problem.conductance {
+            Some(c) => c(x, y, axis),
+            None => h(x, y).powi(3),
+        };
         for j in 1..rows {
             if j == grid.ny && !grid.symmetric {
                 break; // the far edge carries p = 0
@@ -116,13 +130,13 @@ impl Stencil {
                 let (fw, fe) = (0.5 * (xw + xp), 0.5 * (xp + xe));
                 let wx = fe - fw;
                 let (hw, he) = (h(fw, y), h(fe, y));
-                s.ae[k] = he.powi(3) / (xe - xp) * hy;
-                s.aw[k] = hw.powi(3) / (xp - xw) * hy;
-                s.a_s[k] = problem.anisotropy * h(xp, y_s).powi(3) / dy * wx;
+                s.ae[k] = cond(fe, y, Axis::X) / (xe - xp) * hy;
+                s.aw[k] = cond(fw, y, Axis::X) / (xp - xw) * hy;
+                s.a_s[k] = problem.anisotropy * cond(xp, y_s, Axis::Y) / dy * wx;
                 s.an[k] = if at_mid {
                     0.0
                 } else {
-                    problem.anisotropy * h(xp, y_n).powi(3) / dy * wx
+                    problem.anisotropy * cond(xp, y_n, Axis::Y) / dy * wx
                 };
                 s.ap[k] = s.ae[k] + s.aw[k] + s.an[k] + s.a_s[k];
                 let source = problem.source.map_or(0.0, |f| f(xp, y) * wx * hy);
@@ -331,6 +345,7 @@ mod tests {
         let src = |_: f64, _: f64| 1.0;
         let problem = Problem {
             film: &film,
+            conductance: None,
             anisotropy: 1.0,
             wedge: 0.0,
             source: Some(&src),
@@ -367,6 +382,7 @@ mod tests {
         let film = |x: f64, _: f64| 2.0 - x; // converging in +x: positive pressure
         let problem = Problem {
             film: &film,
+            conductance: None,
             anisotropy: 1e-6,
             wedge: 6.0,
             source: None,
@@ -404,6 +420,7 @@ mod tests {
         let film = |x: f64, _: f64| 2.0 - x;
         let problem = Problem {
             film: &film,
+            conductance: None,
             anisotropy: 1.0,
             wedge: 6.0,
             source: None,

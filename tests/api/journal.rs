@@ -272,10 +272,7 @@ fn invalid_requests_name_their_field() {
         ),
         (json!({"load_n": 1000.0}), "/load_n"),
         (json!({"fidelity": {"grid": [7, 3]}}), "/fidelity/grid"),
-        (
-            json!({"effects": {"turbulence": "on"}}),
-            "/effects/turbulence",
-        ),
+        (json!({"effects": {"inertia": "on"}}), "/effects/inertia"),
         (
             json!({"geometry": {"diameter_m": 0.1, "lenght_m": 0.1, "radial_clearance_m": 1e-4}}),
             "/geometry/lenght_m",
@@ -322,4 +319,44 @@ proptest! {
         prop_assert!(num(&b["result"], "sommerfeld_number") < num(&a["result"], "sommerfeld_number"));
         prop_assert!(num(&b["result"], "attitude_angle_deg") < num(&a["result"], "attitude_angle_deg"));
     }
+}
+
+/// Turbulence (Ng–Pan): `auto` applies it above a film Reynolds number of 1000; a turbulent
+/// film carries more load at the same ε (lower S) and dissipates more (higher (R/C) f) than the
+/// laminar one; as Re → 0 the turbulent model reduces to the laminar one.
+#[test]
+fn turbulent_film_is_decided_reported_and_tends_to_laminar() {
+    let fast_bearing = |mode: &str, viscosity: f64| {
+        json!({
+            "geometry": {"diameter_m": 0.3, "length_m": 0.15, "radial_clearance_m": 0.00015},
+            "speed_rpm": 10000.0,
+            "lubricant": {"viscosity_pa_s": viscosity, "density_15c_kg_m3": 870.0},
+            "eccentricity_ratio": 0.6,
+            "effects": {"turbulence": mode},
+            "dynamics": false
+        })
+    };
+    let turbulent = run(&fast_bearing("auto", 0.005)).unwrap();
+    let laminar = run(&fast_bearing("off", 0.005)).unwrap();
+    let d = &turbulent["effects"]["turbulence"];
+    assert_eq!(d["applied"], true, "{d}");
+    assert!(num(&d["criterion"], "value") > 1000.0);
+    assert_eq!(laminar["effects"]["turbulence"]["applied"], false);
+    let (t, l) = (&turbulent["result"], &laminar["result"]);
+    assert!(
+        num(t, "sommerfeld_number") < 0.9 * num(l, "sommerfeld_number"),
+        "more load capacity"
+    );
+    assert!(
+        num(t, "power_loss_w") > 1.2 * num(l, "power_loss_w"),
+        "more dissipation"
+    );
+    // Re ≈ 0.04: the Ng–Pan factors are 1 to 1e-4.
+    let creeping_t = run(&fast_bearing("on", 500.0)).unwrap();
+    let creeping_l = run(&fast_bearing("off", 500.0)).unwrap();
+    let (a, b) = (
+        num(&creeping_t["result"], "sommerfeld_number"),
+        num(&creeping_l["result"], "sommerfeld_number"),
+    );
+    assert!((a / b - 1.0).abs() < 1e-4, "{a} vs {b}");
 }

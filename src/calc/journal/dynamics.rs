@@ -13,7 +13,7 @@
 
 use std::f64::consts::PI;
 
-use super::film::{self, Film, FilmSolution, Mesh};
+use super::film::{self, Film, FilmSolution, Mesh, Physics};
 use super::performance::solve_error;
 use crate::calc::CalcError;
 use crate::numerics::reynolds::Stopping;
@@ -36,11 +36,15 @@ fn force(f: &FilmSolution) -> [f64; 2] {
 pub fn perturbation(
     eps: f64,
     l_over_d: f64,
+    physics: Physics,
     mesh: Mesh,
     stop: Stopping,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Coefficients, CalcError> {
-    let base = Film::steady(eps, l_over_d);
+    let base = Film {
+        physics,
+        ..Film::steady(eps, l_over_d)
+    };
     let (equilibrium, field) =
         film::solve(base, mesh, stop, None, keep_going).map_err(solve_error)?;
     let f0 = force(&equilibrium);
@@ -155,6 +159,7 @@ mod tests {
             let num = perturbation(
                 eps,
                 0.125,
+                Physics::REYNOLDS,
                 Mesh {
                     circumferential: 144,
                     axial_half: 12,
@@ -192,7 +197,7 @@ mod tests {
             circumferential: 96,
             axial_half: 12,
         };
-        let light = perturbation(0.2, 1.0, mesh, STOP, &mut || true).unwrap();
+        let light = perturbation(0.2, 1.0, Physics::REYNOLDS, mesh, STOP, &mut || true).unwrap();
         assert!(light.stiffness[0] > 0.0 && light.damping[0] > 0.0 && light.damping[3] > 0.0);
         let w = whirl(&light);
         let gamma = w
@@ -202,7 +207,7 @@ mod tests {
             gamma > 0.4 && gamma < 0.5,
             "half-frequency whirl, got {gamma}"
         );
-        let heavy = perturbation(0.9, 1.0, mesh, STOP, &mut || true).unwrap();
+        let heavy = perturbation(0.9, 1.0, Physics::REYNOLDS, mesh, STOP, &mut || true).unwrap();
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");
     }

@@ -15,7 +15,9 @@
 
 use std::f64::consts::PI;
 
-use crate::numerics::reynolds::{self, at, Grid, Problem, SolveError, Solved, Stencil, Stopping};
+use crate::numerics::reynolds::{
+    self, at, Axis, Grid, Problem, SolveError, Solved, Stencil, Stopping,
+};
 
 /// Cells around the circumference and across the half-length.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -87,9 +89,40 @@ pub struct Film {
     pub sin_offset: f64,
     pub cos_rate: f64,
     pub sin_rate: f64,
+    pub physics: Physics,
+}
+
+/// What the film model includes beyond the isoviscous, laminar Reynolds equation.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Physics {
     /// Reynolds cavitation (p ≥ 0); false keeps the full (Sommerfeld) film with its negative
     /// pressures.
     pub cavitation: bool,
+    /// Turbulent film by the linearised Ng–Pan model (Khonsari & Booser Eq. 6.26–6.31), with the
+    /// Reynolds number ρ U C/μ at the clearance; local Re = Re_C h̄. None: laminar.
+    pub turbulence_reynolds: Option<f64>,
+}
+
+impl Physics {
+    /// Laminar with Reynolds cavitation: the base model (Table 8.6).
+    pub const REYNOLDS: Physics = Physics {
+        cavitation: true,
+        turbulence_reynolds: None,
+    };
+}
+
+/// Ng–Pan pressure-flow coefficients relative to laminar, 12 G_x and 12 G_y, at local Re
+/// (1/G_x = 12 + 0.0136 Re^0.90, 1/G_y = 12 + 0.0043 Re^0.96; Khonsari & Booser Eq. 6.27).
+pub fn turbulent_flow_factors(re: f64) -> (f64, f64) {
+    (
+        12.0 / (12.0 + 0.0136 * re.powf(0.90)),
+        12.0 / (12.0 + 0.0043 * re.powf(0.96)),
+    )
+}
+
+/// Ng–Pan Couette shear factor G_f = 1 + 0.0012 Re^0.94 (Khonsari & Booser Eq. 6.30).
+pub fn turbulent_shear_factor(re: f64) -> f64 {
+    1.0 + 0.0012 * re.powf(0.94)
 }
 
 impl Film {
@@ -102,7 +135,7 @@ impl Film {
             sin_offset: 0.0,
             cos_rate: 0.0,
             sin_rate: 0.0,
-            cavitation: true,
+            physics: Physics::REYNOLDS,
         }
     }
     fn a(&self) -> f64 {
@@ -129,8 +162,18 @@ pub fn solve(
         12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
     };
     let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
+    let turbulent = move |theta: f64, _y: f64, axis: Axis| {
+        let h = film.thickness(theta);
+        let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
+        h.powi(3) * if axis == Axis::X { gx } else { gy }
+    };
     let problem = Problem {
         film: &thickness,
+        conductance: if film.physics.turbulence_reynolds.is_some() {
+            Some(&turbulent)
+        } else {
+            None
+        },
         anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
         wedge: 12.0 * PI,
         source: if moving { Some(&squeeze) } else { None },
@@ -138,7 +181,14 @@ pub fn solve(
     let stencil = Stencil::assemble(&g, &problem);
     let mut p = start.unwrap_or_else(|| vec![0.0; (g.nx() + 1) * (g.ny + 1)]);
     let omega = stencil.sor_factor(&g);
-    let solved = reynolds::solve(&stencil, omega, &mut p, film.cavitation, stop, keep_going)?;
+    let solved = reynolds::solve(
+        &stencil,
+        omega,
+        &mut p,
+        film.physics.cavitation,
+        stop,
+        keep_going,
+    )?;
     Ok((integrate(&g, &p, &film, solved), p))
 }
 

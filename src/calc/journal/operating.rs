@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
+use super::film::Physics;
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
 use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
 use crate::calc::lubricant::model::TemperatureLaw;
@@ -57,6 +58,8 @@ pub struct Case {
     pub effects: JournalEffects,
     pub dynamics: bool,
     pub include_field: bool,
+    /// Decided in [`solve`] from the film Reynolds number: the Ng–Pan turbulent film applies.
+    pub turbulent: bool,
 }
 
 /// A solved operating point at one viscosity.
@@ -83,6 +86,25 @@ impl Case {
         self.effects.cavitation != Mode::Off
     }
 
+    /// Film Reynolds number ρ U C/μ at temperature t.
+    fn film_reynolds(&self, t: f64) -> f64 {
+        let g = self.geometry;
+        self.lubricant.density_kg_m3(t)
+            * PI
+            * g.diameter_m
+            * self.speed_rps()
+            * g.radial_clearance_m
+            / self.lubricant.viscosity_pa_s(t)
+    }
+
+    /// The film model at oil temperature t.
+    fn physics(&self, t: f64) -> Physics {
+        Physics {
+            cavitation: self.cavitation(),
+            turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
+        }
+    }
+
     fn operate(&self, temperature_c: f64, budget: &Budget) -> Result<Operating, CalcError> {
         let mu = self.lubricant.viscosity_pa_s(temperature_c);
         let scale = self.load_scale(mu);
@@ -94,7 +116,7 @@ impl Case {
                     scale / w,
                     l_over_d,
                     self.method,
-                    self.cavitation(),
+                    self.physics(temperature_c),
                     &mut alive,
                 )?;
                 (p, w, n)
@@ -104,7 +126,7 @@ impl Case {
                     eps,
                     l_over_d,
                     self.method,
-                    self.cavitation(),
+                    self.physics(temperature_c),
                     &mut alive,
                 )?;
                 let w = scale / p.sommerfeld_number;
@@ -179,6 +201,9 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         ));
     }
 
+    let mut case = case.clone();
+    case.turbulent = decide_turbulence(ctx, &case, case.film_reynolds(t_in));
+    let case = &case;
     let isothermal = case.operate(t_in, &budget)?;
     let mut op = isothermal.clone();
     let k = case.effective_fraction();
@@ -219,7 +244,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let rho = lub.density_kg_m3(op.temperature_c);
     let u = PI * g.diameter_m * n_s;
     let reynolds = rho * u * g.radial_clearance_m / mu;
-    decide_flow_effects(ctx, case.effects, reynolds, g);
+    decide_inertia(ctx, case.effects, reynolds, g);
     let cavitation = Decision {
         applied: case.cavitation(),
         mode: case.effects.cavitation,
@@ -370,35 +395,44 @@ fn effective_temperature(
     }
 }
 
-fn decide_flow_effects(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
-    let turbulence = Decision::decide(
-        effects.turbulence,
-        Criterion {
-            name: "film_reynolds_number",
-            value: reynolds,
-            threshold: TURBULENT_REYNOLDS,
-        },
-        "turbulence",
-    );
-    if turbulence.applied {
+/// Turbulence: `auto` applies the Ng–Pan film above a film Reynolds number of 1000 (at the
+/// inlet temperature); the closed forms are laminar only.
+fn decide_turbulence(ctx: &mut Context, case: &Case, reynolds: f64) -> bool {
+    let criterion = Criterion {
+        name: "film_reynolds_number",
+        value: reynolds,
+        threshold: TURBULENT_REYNOLDS,
+    };
+    let decision = Decision::decide(case.effects.turbulence, criterion, "turbulence");
+    if decision.applied && matches!(case.method, Method::ClosedForm(_)) {
         ctx.warn(
             "turbulent_film",
-            format!("film Reynolds number {reynolds:.0} exceeds {TURBULENT_REYNOLDS}: the film is turbulent, and the laminar result underestimates friction and load capacity"),
+            format!("film Reynolds number {reynolds:.0}: the film is turbulent, but the closed forms are laminar and underestimate friction and load capacity; use a numerical fidelity"),
         );
         ctx.decide(
             "turbulence",
             Decision {
                 applied: false,
-                reason: format!(
-                    "{}; no turbulent model yet: laminar result with a warning",
-                    turbulence.reason
-                ),
-                ..turbulence
+                reason: format!("{}; closed forms are laminar", decision.reason),
+                ..decision
             },
         );
-    } else {
-        ctx.decide("turbulence", turbulence);
+        return false;
     }
+    let applied = decision.applied;
+    let reason = if applied {
+        format!(
+            "{}: linearised turbulent film (Ng–Pan coefficients, Khonsari & Booser Eq. 6.26–6.31)",
+            decision.reason
+        )
+    } else {
+        decision.reason.clone()
+    };
+    ctx.decide("turbulence", Decision { reason, ..decision });
+    applied
+}
+
+fn decide_inertia(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
     let reduced = reynolds * g.radial_clearance_m / (0.5 * g.diameter_m);
     let inertia = Decision::decide(
         effects.inertia,
@@ -509,6 +543,7 @@ fn coefficients_at(
     case: &Case,
     method: Method,
     eps: f64,
+    physics: Physics,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
@@ -526,7 +561,7 @@ fn coefficients_at(
         Method::ClosedForm(Approximation::Long) => Ok(None),
         Method::Numerical { mesh, stop, .. } => {
             let mut alive = || budget.alive();
-            dynamics::perturbation(eps, ld, mesh, stop, &mut alive).map(Some)
+            dynamics::perturbation(eps, ld, physics, mesh, stop, &mut alive).map(Some)
         }
     }
 }
@@ -545,7 +580,8 @@ fn dynamic_coefficients(
     }
     let budget = ctx.budget();
     let eps = op.point.eccentricity_ratio;
-    let Some(coefficients) = coefficients_at(case, case.method, eps, &budget)? else {
+    let physics = case.physics(op.temperature_c);
+    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, &budget)? else {
         ctx.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
     };
@@ -571,14 +607,13 @@ fn dynamic_coefficients(
         m => m,
     };
     let s_op = match search {
-        Method::Numerical { .. } => {
-            coefficients_at(case, search, eps, &budget)?.map_or(s_op, |c| c.sommerfeld_number)
-        }
+        Method::Numerical { .. } => coefficients_at(case, search, eps, physics, &budget)?
+            .map_or(s_op, |c| c.sommerfeld_number),
         _ => s_op,
     };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match coefficients_at(case, search, e, &budget) {
+        match coefficients_at(case, search, e, physics, &budget) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl(&c).critical_mass_parameter {
@@ -637,7 +672,7 @@ fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, &budget)?
+            coefficients_at(case, search, e, physics, &budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),

@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
-use super::film::{self, Film, FilmSolution, Mesh};
+use super::film::{self, Film, FilmSolution, Mesh, Physics};
 use crate::calc::CalcError;
 use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
@@ -117,8 +117,32 @@ pub struct Point {
 
 /// (R/C)·f with the journal's shear over the full circumference (Khonsari & Booser G5, the
 /// convention of Table 8.6): (ε/2) sin φ + 2π² S / √(1 − ε²).
-pub fn friction_parameter(eps: f64, attitude: f64, sommerfeld: f64) -> f64 {
-    0.5 * eps * attitude.sin() + 2.0 * PI * PI * sommerfeld / (1.0 - eps * eps).sqrt()
+///
+/// With a turbulent film the Couette shear carries the Ng–Pan factor G_f(Re_C h̄) (Eq. 6.30):
+/// the Petroff term becomes π S ∫₀^2π G_f/h̄ dθ (a periodic integrand: the trapezoidal rule on
+/// 720 points is exact to rounding).
+pub fn friction_parameter(
+    eps: f64,
+    attitude: f64,
+    sommerfeld: f64,
+    turbulence_reynolds: Option<f64>,
+) -> f64 {
+    let couette = match turbulence_reynolds {
+        None => 2.0 * PI / (1.0 - eps * eps).sqrt(),
+        Some(re) => {
+            let n = 720;
+            (0..n)
+                .map(|i| {
+                    let h = 1.0 + eps * (2.0 * PI * i as f64 / n as f64).cos();
+                    film::turbulent_shear_factor(re * h) / h
+                })
+                .sum::<f64>()
+                * 2.0
+                * PI
+                / n as f64
+        }
+    };
+    0.5 * eps * attitude.sin() + PI * sommerfeld * couette
 }
 
 pub fn solve_error(e: SolveError) -> CalcError {
@@ -137,17 +161,17 @@ pub fn solve_error(e: SolveError) -> CalcError {
     }
 }
 
-fn from_film(eps: f64, f: &FilmSolution, cavitation: bool) -> Point {
+fn from_film(eps: f64, f: &FilmSolution, physics: Physics) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
     Point {
         eccentricity_ratio: eps,
         sommerfeld_number: s,
         attitude_angle: phi,
-        friction_parameter: friction_parameter(eps, phi, s),
+        friction_parameter: friction_parameter(eps, phi, s, physics.turbulence_reynolds),
         max_pressure_bar: f.max_pressure_bar,
         max_pressure_angle: f.max_pressure_angle,
-        cavitation_angle: cavitation.then_some(f.cavitation_angle),
+        cavitation_angle: physics.cavitation.then_some(f.cavitation_angle),
         side_leakage_bar: f.side_leakage_bar,
         inlet_flow_bar: Some(f.inlet_flow_bar),
         midplane: Some(f.midplane.clone()),
@@ -163,10 +187,10 @@ pub fn at_eccentricity(
     eps: f64,
     l_over_d: f64,
     method: Method,
-    cavitation: bool,
+    physics: Physics,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Point, CalcError> {
-    at_eccentricity_from(eps, l_over_d, method, cavitation, None, keep_going)
+    at_eccentricity_from(eps, l_over_d, method, physics, None, keep_going)
 }
 
 /// As [`at_eccentricity`], the fine solve starting from `warm` (a field on the method's mesh).
@@ -174,12 +198,12 @@ fn at_eccentricity_from(
     eps: f64,
     l_over_d: f64,
     method: Method,
-    cavitation: bool,
+    physics: Physics,
     warm: Option<Vec<f64>>,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Point, CalcError> {
     match method {
-        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, cavitation)),
+        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, physics.cavitation)),
         Method::Numerical {
             mesh,
             stop,
@@ -187,12 +211,12 @@ fn at_eccentricity_from(
             ..
         } => {
             let film = Film {
-                cavitation,
+                physics,
                 ..Film::steady(eps, l_over_d)
             };
             let (fine, coarse, _) =
                 film::solve_nested(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
-            let mut point = from_film(eps, &fine, cavitation);
+            let mut point = from_film(eps, &fine, physics);
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
             // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
             point.error_estimate = Some(((sf - sc) / 3.0 / sf).abs());
@@ -208,7 +232,7 @@ fn at_eccentricity_from(
                 };
                 point = Point {
                     error_estimate: point.error_estimate,
-                    ..from_film(eps, &film, cavitation)
+                    ..from_film(eps, &film, physics)
                 };
             }
             point.sweeps = fine.solved.sweeps + coarse.solved.sweeps;
@@ -267,7 +291,7 @@ pub fn equilibrium(
     s_target: f64,
     l_over_d: f64,
     method: Method,
-    cavitation: bool,
+    physics: Physics,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(Point, u32), CalcError> {
     let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
@@ -292,7 +316,7 @@ pub fn equilibrium(
     let mut searcher = Searcher {
         s_target,
         l_over_d,
-        cavitation,
+        physics,
         warm: None,
         evaluations: &mut evaluations,
     };
@@ -312,7 +336,7 @@ pub fn equilibrium(
         Method::Numerical { mesh, .. } if mesh == m => Some(p),
         _ => None,
     });
-    let point = at_eccentricity_from(to_eps(u), l_over_d, method, cavitation, warm, keep_going)?;
+    let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, keep_going)?;
     Ok((point, evaluations))
 }
 
@@ -328,7 +352,7 @@ fn to_u(eps: f64) -> f64 {
 struct Searcher<'a> {
     s_target: f64,
     l_over_d: f64,
-    cavitation: bool,
+    physics: Physics,
     /// Each probe starts from the last field: successive ε are close once the search homes in.
     warm: Option<(Mesh, Vec<f64>)>,
     evaluations: &'a mut u32,
@@ -345,17 +369,17 @@ impl Searcher<'_> {
         let eps = to_eps(u);
         let s = match method {
             Method::ClosedForm(approx) => {
-                closed(eps, self.l_over_d, approx, self.cavitation).sommerfeld_number
+                closed(eps, self.l_over_d, approx, self.physics.cavitation).sommerfeld_number
             }
             Method::Numerical {
                 richardson: true, ..
             } => {
-                at_eccentricity(eps, self.l_over_d, method, self.cavitation, keep_going)?
+                at_eccentricity(eps, self.l_over_d, method, self.physics, keep_going)?
                     .sommerfeld_number
             }
             Method::Numerical { mesh, stop, .. } => {
                 let film = Film {
-                    cavitation: self.cavitation,
+                    physics: self.physics,
                     ..Film::steady(eps, self.l_over_d)
                 };
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
@@ -469,7 +493,7 @@ mod tests {
     fn equilibrium_is_cheap_and_exact() {
         let m = Method::numerical(Level::Standard, None, None);
         for s in [0.0447, 0.5, 0.005, 20.0] {
-            let (p, n) = equilibrium(s, 1.0, m, true, &mut || true).unwrap();
+            let (p, n) = equilibrium(s, 1.0, m, Physics::REYNOLDS, &mut || true).unwrap();
             assert!(
                 (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
                 "S {s}: {}",

@@ -57,8 +57,9 @@ pub struct JournalEffects {
     /// negative pressures (a film that cannot rupture: submerged at high ambient pressure).
     #[serde(default)]
     pub cavitation: Mode,
-    /// Turbulent film: reported from Re = ρ U C/μ against 1000. The laminar model is used; `on`
-    /// is refused until a turbulent lubrication model lands.
+    /// Turbulent film (Ng–Pan linearised coefficients for the pressure flows and the Couette
+    /// shear, Khonsari & Booser Eq. 6.26–6.31, local Re = ρ U h/μ). `auto` applies it when the
+    /// film Reynolds number ρ U C/μ at the inlet temperature exceeds 1000.
     #[serde(default)]
     pub turbulence: Mode,
     /// Fluid inertia: reported from the reduced Reynolds number Re·C/R against 1; not modelled.
@@ -199,12 +200,6 @@ impl Validate for PlainInput {
                 Some(Method::numerical(Level::Standard, mesh, custom.tolerance))
             }
         };
-        if self.effects.turbulence == Mode::On {
-            errors.push(FieldError::new(
-                "/effects/turbulence",
-                "a turbulent lubrication model is not available yet; use auto (the criterion is reported) or off",
-            ));
-        }
         if self.effects.inertia == Mode::On {
             errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
         }
@@ -232,6 +227,7 @@ impl Validate for PlainInput {
                 effects: self.effects,
                 dynamics: self.dynamics,
                 include_field: self.include_field,
+                turbulent: false,
             }),
             _ => Err(errors),
         }
