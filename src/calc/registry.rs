@@ -11,7 +11,7 @@ use serde::Serialize;
 use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
-use super::{journal, lubricant, CalcError, Calculation, Context, Validate, Warning};
+use super::{contact, journal, lubricant, CalcError, Calculation, Context, Validate, Warning};
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
 
@@ -21,6 +21,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::viscosity_index::ViscosityIndex>(),
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>(),
+    Entry::of::<contact::hertz::Hertz>(),
 ];
 
 /// The calculation registered at `path`.

@@ -1,4 +1,5 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
+pub mod elliptic;
 pub mod reynolds;
 pub mod roots;

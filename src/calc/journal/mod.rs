@@ -9,6 +9,7 @@
 
 pub mod closed_form;
 pub mod dynamics;
+pub mod feed;
 pub mod film;
 pub mod operating;
 pub mod performance;
