@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
+use super::feed::{self, Feed, Flows};
 use super::film::Physics;
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
 use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
@@ -53,6 +54,7 @@ pub struct Case {
     pub lubricant: Lubricant,
     pub given: Given,
     pub inlet_temperature_c: Option<f64>,
+    pub feed: Option<Feed>,
     pub rotor_mass_kg: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
@@ -160,9 +162,30 @@ impl Case {
             * g.radial_clearance_m
     }
 
-    /// ΔT = E_p/(ρ c_p Q_L) (Eq. 8.44); None without side leakage (the long-bearing closed form).
+    /// Martin's flows when the request gives a feed (the supply at the inlet temperature).
+    fn flows(&self, op: &Operating) -> Option<Flows> {
+        let t_in = self.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
+        self.feed.map(|feed| {
+            let g = self.geometry;
+            let p = &op.point;
+            feed::flows(
+                feed,
+                self.side_leakage(op),
+                g.l_over_d(),
+                g.radial_clearance_m,
+                self.lubricant.viscosity_pa_s(t_in),
+                p.eccentricity_ratio,
+                p.attitude_angle,
+            )
+        })
+    }
+
+    /// ΔT = E_p/(ρ c_p Q) (Eq. 8.44), Q the total flow with a feed (Martin, as in Ex 8.4), else
+    /// the side leakage (Table 8.6); None without flow (the long-bearing closed form).
     fn temperature_rise(&self, op: &Operating) -> Option<f64> {
-        let q = self.side_leakage(op);
+        let q = self
+            .flows(op)
+            .map_or_else(|| self.side_leakage(op), |f| f.total);
         let t = op.temperature_c;
         let heat = self.lubricant.density_kg_m3(t) * self.lubricant.specific_heat_j_kg_k(t) * q;
         (q > 0.0 && heat > 0.0).then(|| self.power_loss(op) / heat)
@@ -267,6 +290,18 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     validity_warnings(ctx, case, point);
 
     let power = case.power_loss(&op);
+    let flows = case.flows(&op);
+    let supply_pressure = case.feed.map_or(0.0, |f| match f {
+        Feed::Hole {
+            supply_pressure_pa, ..
+        }
+        | Feed::AxialGroove {
+            supply_pressure_pa, ..
+        }
+        | Feed::TwoAxialGrooves {
+            supply_pressure_pa, ..
+        } => supply_pressure_pa,
+    });
     let friction = point.friction_parameter / g.r_over_c();
     let rise = case.temperature_rise(&op);
     if rise.is_none() {
@@ -286,7 +321,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         eccentricity_ratio: point.eccentricity_ratio,
         attitude_angle_deg: point.attitude_angle.to_degrees(),
         min_film_thickness_m: g.radial_clearance_m * (1.0 - point.eccentricity_ratio),
-        max_pressure_pa: point.max_pressure_bar * pressure_scale,
+        max_pressure_pa: point.max_pressure_bar * pressure_scale + supply_pressure,
         max_pressure_dimensionless: point.max_pressure_bar,
         max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
         cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
@@ -298,6 +333,8 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         side_leakage_dimensionless: point.side_leakage_bar,
         inlet_flow_m3_s: point.inlet_flow_bar.map(|q| q * flow_scale),
         temperature_rise_k: rise,
+        supply_flow_m3_s: flows.map(|f| f.pressure_fed),
+        total_flow_m3_s: flows.map(|f| f.total),
         effective_temperature_c: op.temperature_c,
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,

@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::feed::FeedSpec;
 use super::operating::{self, Case, Geometry};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::lubricant::LubricantSpec;
@@ -86,6 +87,10 @@ pub struct PlainInput {
     /// temperature when the thermal effect applies.
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 40.0)]
     pub inlet_temperature_c: Option<Celsius>,
+    /// Oil feed: a hole or axial grooves with their supply pressure. Gives the pressure-fed and
+    /// total flows (Martin's model) and puts the total flow in the heat balance; absent, the
+    /// side leakage carries the heat (Table 8.6's ΔT).
+    pub feed: Option<FeedSpec>,
     /// Rotor mass carried by this bearing, kg, for the stability threshold (default W/g).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
     pub rotor_mass_kg: Option<Positive>,
@@ -203,6 +208,14 @@ impl Validate for PlainInput {
         if self.effects.inertia == Mode::On {
             errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
         }
+        let feed = match self.feed.map(|f| f.parse(l, d)) {
+            Some(Ok(f)) => Some(f),
+            Some(Err(mut e)) => {
+                errors.append(&mut e);
+                None
+            }
+            None => None,
+        };
         let lubricant = self.lubricant.parse("/lubricant");
         let lubricant = match lubricant {
             Ok(l) => Some(l),
@@ -222,6 +235,7 @@ impl Validate for PlainInput {
                 lubricant,
                 given,
                 inlet_temperature_c: self.inlet_temperature_c.map(Celsius::get),
+                feed,
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
                 method,
                 effects: self.effects,
@@ -314,7 +328,8 @@ pub struct PlainOutput {
     pub attitude_angle_deg: f64,
     /// h_min = C (1 − ε), m.
     pub min_film_thickness_m: f64,
-    /// Peak film pressure (gauge, above the feed pressure), Pa.
+    /// Peak film pressure, Pa gauge: the film's P̄_max μ N_s (R/C)², plus the supply pressure
+    /// when a feed is given (as Khonsari & Booser Ex 8.3 add it).
     pub max_pressure_pa: f64,
     /// P̄_max = p_max (C/R)²/(μ N_s), dimensionless (Table 8.6 convention).
     pub max_pressure_dimensionless: f64,
@@ -345,6 +360,12 @@ pub struct PlainOutput {
     /// absent for the long-bearing closed form, which has no side leakage.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub temperature_rise_k: Option<f64>,
+    /// Pressure-fed flow through the feed Q_p, m³/s (Martin, Eq. 8.53–8.57); with a feed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub supply_flow_m3_s: Option<f64>,
+    /// Total flow drawn from the supply, m³/s (Martin, Eq. 8.58–8.60); with a feed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub total_flow_m3_s: Option<f64>,
     /// Temperature at which the viscosity was taken, °C (the inlet temperature, or the effective
     /// temperature when the thermal effect applied).
     pub effective_temperature_c: f64,
