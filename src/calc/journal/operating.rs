@@ -260,6 +260,11 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         }
     }
 
+    let thd = if temperature_dependent {
+        thd_temperatures(ctx, case, t_in, isothermal.point.eccentricity_ratio)
+    } else {
+        None
+    };
     let g = case.geometry;
     let point = &op.point;
     let n_s = case.speed_rps();
@@ -333,6 +338,8 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         side_leakage_dimensionless: point.side_leakage_bar,
         inlet_flow_m3_s: point.inlet_flow_bar.map(|q| q * flow_scale),
         temperature_rise_k: rise,
+        max_temperature_c: thd.map(|t| t.0),
+        shaft_temperature_c: thd.map(|t| t.1),
         supply_flow_m3_s: flows.map(|f| f.pressure_fed),
         total_flow_m3_s: flows.map(|f| f.total),
         effective_temperature_c: op.temperature_c,
@@ -374,6 +381,44 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     }
     ctx.report(report(case, point, op.evaluations));
     Ok(output)
+}
+
+/// Jang & Khonsari's THD fits for the maximum bush and the shaft temperature (Khonsari & Booser
+/// Eq. 8.65, Table 8.11): T̄ = β (T − T_in), κ1 = (α_t μ_i β U/(k R))(R/C)², κ2 = U (μ_i β/k)^½,
+/// T̄_max = exp[a + b/√κ1 + c/√κ2], T̄_shaft = 1/[a + b/√κ1 + c/κ2²], the region by the isothermal ε.
+/// β is −d ln μ/dT at the inlet (exact for the exponential law).
+fn thd_temperatures(ctx: &mut Context, case: &Case, t_in: f64, eps: f64) -> Option<(f64, f64)> {
+    let lub = &case.lubricant;
+    let g = case.geometry;
+    let mu = lub.viscosity_pa_s(t_in);
+    let beta = (lub.viscosity_pa_s(t_in - 0.5) / lub.viscosity_pa_s(t_in + 0.5)).ln();
+    let k = lub.thermal_conductivity_w_m_k(t_in);
+    let diffusivity = k / (lub.density_kg_m3(t_in) * lub.specific_heat_j_kg_k(t_in));
+    let u = PI * g.diameter_m * case.speed_rps();
+    let r = 0.5 * g.diameter_m;
+    let kappa1 = diffusivity * mu * beta * u / (k * r) * g.r_over_c().powi(2);
+    let kappa2 = u * (mu * beta / k).sqrt();
+    if !(beta > 0.0 && kappa1.is_finite() && kappa2.is_finite()) {
+        return None;
+    }
+    let (max, shaft) = match eps {
+        e if e < 0.3 => ((1.63105, -0.20250, -0.84050), (0.14092, 0.24303, 0.10054)),
+        e if e <= 0.7 => ((1.68517, -0.19962, -1.04999), (0.04734, 0.39751, 0.11007)),
+        _ => ((1.79973, -0.13627, -1.25216), (0.06200, 0.38264, 0.10102)),
+    };
+    let t_max = (max.0 + max.1 / kappa1.sqrt() + max.2 / kappa2.sqrt()).exp();
+    let t_shaft = 1.0 / (shaft.0 + shaft.1 / kappa1.sqrt() + shaft.2 / (kappa2 * kappa2));
+    let in_range = (0.001..=0.5).contains(&kappa1)
+        && (0.01..=5.0).contains(&kappa2)
+        && (0.1..=0.9).contains(&eps);
+    if !in_range || (g.l_over_d() - 1.0).abs() > 0.5 {
+        ctx.warn(
+            "thd_fit_outside_range",
+            format!("Jang–Khonsari's THD fits hold for L/D ≈ 1, 0.001 ≤ κ1 ≤ 0.5, 0.01 ≤ κ2 ≤ 5, 0.1 ≤ ε ≤ 0.9; here L/D = {:.2}, κ1 = {kappa1:.3e}, κ2 = {kappa2:.3e}, ε = {eps:.3}", g.l_over_d()),
+        );
+    }
+    (t_max.is_finite() && t_shaft.is_finite() && t_shaft > 0.0)
+        .then(|| (t_in + t_max / beta, t_in + t_shaft / beta))
 }
 
 /// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]

@@ -360,6 +360,13 @@ pub struct PlainOutput {
     /// absent for the long-bearing closed form, which has no side leakage.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub temperature_rise_k: Option<f64>,
+    /// Maximum bush temperature by Jang & Khonsari's THD fits (Khonsari & Booser Eq. 8.65,
+    /// Table 8.11), °C; for temperature-dependent lubricants.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub max_temperature_c: Option<f64>,
+    /// Shaft temperature by the same fits (about the mean film temperature), °C.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub shaft_temperature_c: Option<f64>,
     /// Pressure-fed flow through the feed Q_p, m³/s (Martin, Eq. 8.53–8.57); with a feed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub supply_flow_m3_s: Option<f64>,
