@@ -8,7 +8,7 @@ use std::fmt::Write;
 use std::time::Instant;
 
 use serde_json::Value;
-use stribeck::calc::journal::film::{Mesh, Physics};
+use stribeck::calc::journal::film::{FilmModel, Mesh};
 use stribeck::calc::journal::performance::{self, Approximation, Method};
 use stribeck::fidelity::Level;
 use stribeck::numerics::reynolds::Stopping;
@@ -74,7 +74,7 @@ fn main() {
     let reference: Vec<f64> = CASES
         .iter()
         .map(|&(ld, eps)| {
-            performance::at_eccentricity(eps, ld, converged, Physics::REYNOLDS, &mut || true)
+            performance::at_eccentricity(eps, ld, converged, FilmModel::REYNOLDS, &mut || true)
                 .unwrap()
                 .sommerfeld_number
         })
@@ -121,15 +121,18 @@ fn main() {
                 Method::ClosedForm(_) if ld > 1.0 => Method::ClosedForm(Approximation::Long),
                 m => m,
             };
-            let p = performance::at_eccentricity(eps, ld, method, Physics::REYNOLDS, &mut || true)
-                .unwrap();
+            let p =
+                performance::at_eccentricity(eps, ld, method, FilmModel::REYNOLDS, &mut || true)
+                    .unwrap();
             worst_conv = worst_conv.max((p.sommerfeld_number / reference[k] - 1.0).abs());
             worst_table = worst_table.max((p.sommerfeld_number / table_s(ld, eps) - 1.0).abs());
             worst_reported = worst_reported.max(p.error_estimate.unwrap_or(0.0));
             times.push(median_ms(|| {
                 std::hint::black_box(
-                    performance::at_eccentricity(eps, ld, method, Physics::REYNOLDS, &mut || true)
-                        .unwrap(),
+                    performance::at_eccentricity(eps, ld, method, FilmModel::REYNOLDS, &mut || {
+                        true
+                    })
+                    .unwrap(),
                 );
             }));
         }

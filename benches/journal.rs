@@ -8,7 +8,7 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use stribeck::calc::journal::film::Physics;
+use stribeck::calc::journal::film::FilmModel;
 use stribeck::calc::journal::performance::{self, Approximation, Method};
 use stribeck::fidelity::Level;
 
@@ -20,7 +20,7 @@ fn journal(c: &mut Criterion) {
                 black_box(0.8),
                 1.0,
                 standard,
-                Physics::REYNOLDS,
+                FilmModel::REYNOLDS,
                 &mut || true,
             )
             .unwrap()
@@ -34,7 +34,7 @@ fn journal(c: &mut Criterion) {
                     black_box(0.0447),
                     1.0,
                     standard,
-                    Physics::REYNOLDS,
+                    FilmModel::REYNOLDS,
                     &mut || true,
                 )
                 .unwrap()
@@ -44,17 +44,27 @@ fn journal(c: &mut Criterion) {
     let short = Method::ClosedForm(Approximation::Short);
     c.bench_function("closed form, short bearing at ε = 0.8", |b| {
         b.iter(|| {
-            performance::at_eccentricity(black_box(0.8), 0.5, short, Physics::REYNOLDS, &mut || {
-                true
-            })
+            performance::at_eccentricity(
+                black_box(0.8),
+                0.5,
+                short,
+                FilmModel::REYNOLDS,
+                &mut || true,
+            )
             .unwrap()
         })
     });
     let long = Method::ClosedForm(Approximation::Long);
     c.bench_function("closed form, long bearing (Reynolds) at ε = 0.8", |b| {
         b.iter(|| {
-            performance::at_eccentricity(black_box(0.8), 2.0, long, Physics::REYNOLDS, &mut || true)
-                .unwrap()
+            performance::at_eccentricity(
+                black_box(0.8),
+                2.0,
+                long,
+                FilmModel::REYNOLDS,
+                &mut || true,
+            )
+            .unwrap()
         })
     });
     let request = br#"{"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}, "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000, "inlet_temperature_c": 40}"#;

@@ -22,6 +22,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>(),
     Entry::of::<contact::hertz::Hertz>(),
+    Entry::of::<contact::ehl_film::EhlFilm>(),
 ];
 
 /// The calculation registered at `path`.

@@ -13,8 +13,8 @@
 
 use std::f64::consts::PI;
 
-use super::film::{self, Film, FilmSolution, Mesh, Physics};
-use super::performance::solve_error;
+use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
+use super::performance::{positioned_film, solve_error};
 use crate::calc::CalcError;
 use crate::numerics::reynolds::Stopping;
 
@@ -36,17 +36,13 @@ fn force(f: &FilmSolution) -> [f64; 2] {
 pub fn perturbation(
     eps: f64,
     l_over_d: f64,
-    physics: Physics,
+    physics: FilmModel,
     mesh: Mesh,
     stop: Stopping,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Coefficients, CalcError> {
-    let base = Film {
-        physics,
-        ..Film::steady(eps, l_over_d)
-    };
-    let (equilibrium, field) =
-        film::solve(base, mesh, stop, None, keep_going).map_err(solve_error)?;
+    let (base, equilibrium, field) =
+        positioned_film(eps, l_over_d, physics, mesh, stop, None, keep_going)?;
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
@@ -159,7 +155,7 @@ mod tests {
             let num = perturbation(
                 eps,
                 0.125,
-                Physics::REYNOLDS,
+                FilmModel::REYNOLDS,
                 Mesh {
                     circumferential: 144,
                     axial_half: 12,
@@ -197,7 +193,7 @@ mod tests {
             circumferential: 96,
             axial_half: 12,
         };
-        let light = perturbation(0.2, 1.0, Physics::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+        let light = perturbation(0.2, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
         assert!(light.stiffness[0] > 0.0 && light.damping[0] > 0.0 && light.damping[3] > 0.0);
         let w = whirl(&light);
         let gamma = w
@@ -207,7 +203,7 @@ mod tests {
             gamma > 0.4 && gamma < 0.5,
             "half-frequency whirl, got {gamma}"
         );
-        let heavy = perturbation(0.9, 1.0, Physics::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+        let heavy = perturbation(0.9, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");
     }

@@ -42,6 +42,8 @@ pub struct FilmSolution {
     pub side_leakage_bar: f64,
     /// Q_i/((π/2) N_s D L C) at the feed line θ = 0.
     pub inlet_flow_bar: f64,
+    /// The film's extent (θ start, θ end).
+    pub span: (f64, f64),
     /// (θ, P̄) at the grid nodes of the mid-plane.
     pub midplane: Vec<(f64, f64)>,
     pub solved: Solved,
@@ -69,9 +71,22 @@ pub fn circumferential_nodes(cells: usize, eps: f64) -> Vec<f64> {
         .collect()
 }
 
-pub fn grid(mesh: Mesh, eps: f64) -> Grid {
+/// The grid of `film` on `mesh`: the full circle clustered towards h_min, or a partial arc with
+/// as many cells per radian as the full circle would have twice over.
+pub fn grid(mesh: Mesh, film: &Film) -> Grid {
+    let x = match film.span {
+        None => circumferential_nodes(mesh.circumferential, film.eccentricity_ratio),
+        Some((start, end)) => {
+            let cells = ((mesh.circumferential as f64) * (end - start) / PI)
+                .round()
+                .max(16.0) as usize;
+            (0..=cells)
+                .map(|i| start + (end - start) * i as f64 / cells as f64)
+                .collect()
+        }
+    };
     Grid {
-        x: circumferential_nodes(mesh.circumferential, eps),
+        x,
         ny: mesh.axial_half,
         width: 0.5,
         symmetric: true,
@@ -89,25 +104,31 @@ pub struct Film {
     pub sin_offset: f64,
     pub cos_rate: f64,
     pub sin_rate: f64,
-    pub physics: Physics,
+    pub physics: FilmModel,
+    /// The film's extent in θ (from h_max): (start, end); the full circle from h_max when None.
+    pub span: Option<(f64, f64)>,
 }
 
 /// What the film model includes beyond the isoviscous, laminar Reynolds equation.
 #[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Physics {
+pub struct FilmModel {
     /// Reynolds cavitation (p ≥ 0); false keeps the full (Sommerfeld) film with its negative
     /// pressures.
     pub cavitation: bool,
     /// Turbulent film by the linearised Ng–Pan model (Khonsari & Booser Eq. 6.26–6.31), with the
     /// Reynolds number ρ U C/μ at the clearance; local Re = Re_C h̄. None: laminar.
     pub turbulence_reynolds: Option<f64>,
+    /// A partial bearing: its arc, rad, centred on the load line (None: the full 360° bearing,
+    /// fed at h_max).
+    pub arc: Option<f64>,
 }
 
-impl Physics {
+impl FilmModel {
     /// Laminar with Reynolds cavitation: the base model (Table 8.6).
-    pub const REYNOLDS: Physics = Physics {
+    pub const REYNOLDS: FilmModel = FilmModel {
         cavitation: true,
         turbulence_reynolds: None,
+        arc: None,
     };
 }
 
@@ -135,7 +156,8 @@ impl Film {
             sin_offset: 0.0,
             cos_rate: 0.0,
             sin_rate: 0.0,
-            physics: Physics::REYNOLDS,
+            physics: FilmModel::REYNOLDS,
+            span: None,
         }
     }
     fn a(&self) -> f64 {
@@ -156,7 +178,7 @@ pub fn solve(
     start: Option<Vec<f64>>,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
-    let g = grid(mesh, film.eccentricity_ratio);
+    let g = grid(mesh, &film);
     let thickness = move |theta: f64, _y: f64| film.thickness(theta);
     let squeeze = move |theta: f64, _y: f64| {
         12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
@@ -207,9 +229,8 @@ pub fn solve_nested(
         axial_half: (mesh.axial_half / 2).max(2),
     };
     let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
-    let eps = film.eccentricity_ratio;
-    let start =
-        warm.unwrap_or_else(|| reynolds::prolong(&grid(coarse_mesh, eps), &pc, &grid(mesh, eps)));
+    let start = warm
+        .unwrap_or_else(|| reynolds::prolong(&grid(coarse_mesh, &film), &pc, &grid(mesh, &film)));
     let (fine, p) = solve(film, mesh, stop, Some(start), keep_going)?;
     Ok((fine, coarse, p))
 }
@@ -250,7 +271,7 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
             }
         }
         Some(k) => g.x[k],
-        None => 2.0 * PI,
+        None => g.x[g.nx()],
     };
 
     // Side leakage: h³ ∂P/∂ȳ at the edge ȳ = 0 (second-order one-sided), both ends.
@@ -273,7 +294,8 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
     for j in 0..=g.ny {
         let (p1, p2) = (p[at(g, 1, j)], p[at(g, 2, j)]);
         let dpdt = (d1 + d2) / (d1 * d2) * p1 - d1 / (d2 * (d1 + d2)) * p2;
-        inlet += (h(0.0) - h(0.0).powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * 2.0;
+        let h0 = h(g.x[0]);
+        inlet += (h0 - h0.powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * 2.0;
     }
 
     FilmSolution {
@@ -284,6 +306,7 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         cavitation_angle,
         side_leakage_bar,
         inlet_flow_bar: inlet,
+        span: (g.x[0], g.x[g.nx()]),
         midplane: g.x.iter().cloned().zip(mid.iter().cloned()).collect(),
         solved,
     }

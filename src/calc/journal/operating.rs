@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
 use super::feed::{self, Feed, Flows};
-use super::film::Physics;
+use super::film::FilmModel;
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
 use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
 use crate::calc::lubricant::model::TemperatureLaw;
@@ -55,6 +55,8 @@ pub struct Case {
     pub given: Given,
     pub inlet_temperature_c: Option<f64>,
     pub feed: Option<Feed>,
+    /// Bearing arc, rad, centred on the load line; None for 360°.
+    pub arc: Option<f64>,
     pub rotor_mass_kg: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
@@ -100,10 +102,11 @@ impl Case {
     }
 
     /// The film model at oil temperature t.
-    fn physics(&self, t: f64) -> Physics {
-        Physics {
+    fn physics(&self, t: f64) -> FilmModel {
+        FilmModel {
             cavitation: self.cavitation(),
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
+            arc: self.arc,
         }
     }
 
@@ -625,7 +628,7 @@ fn coefficients_at(
     case: &Case,
     method: Method,
     eps: f64,
-    physics: Physics,
+    physics: FilmModel,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();

@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
-use super::film::{self, Film, FilmSolution, Mesh, Physics};
+use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::CalcError;
 use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
@@ -93,6 +93,73 @@ impl Method {
     }
 }
 
+/// The film at ε, positioned. A full bearing is fed at h_max, so the film frame is the bearing's.
+/// A partial bearing's arc is fixed on the load line, so the line of centres must be placed: the
+/// attitude φ where the film force lies along the load (Stachowiak & Batchelor's attitude
+/// iteration in PARTIAL, here a bracketed root of the angle between the force and the load).
+pub fn positioned_film(
+    eps: f64,
+    l_over_d: f64,
+    model: FilmModel,
+    mesh: Mesh,
+    stop: Stopping,
+    warm: Option<Vec<f64>>,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Result<(Film, FilmSolution, Vec<f64>), CalcError> {
+    let base = Film {
+        physics: model,
+        ..Film::steady(eps, l_over_d)
+    };
+    let Some(arc) = model.arc else {
+        let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
+        return Ok((base, f, p));
+    };
+    // In the film frame the load line sits at θ = π − φ; the arc is centred on it.
+    let place = |phi: f64| Film {
+        span: Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+        ..base
+    };
+    let mut warm = warm;
+    let mut failure = None;
+    let mut mismatch = |phi: f64| -> f64 {
+        match film::solve(place(phi), mesh, stop, warm.take(), keep_going) {
+            Ok((f, p)) => {
+                warm = Some(p);
+                // The load is −F; its signed angle from the load line's direction.
+                let (wa, wb) = (-f.load_radial, f.load_tangential);
+                let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+                (wa * db - wb * da).atan2(wa * da + wb * db)
+            }
+            Err(e) => {
+                failure.get_or_insert(solve_error(e));
+                f64::NAN
+            }
+        }
+    };
+    let stop_phi = roots::Stopping {
+        x_tolerance: 1e-9,
+        max_iterations: 100,
+    };
+    // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
+    // equilibrium lies between (an arc wholly in the diverging film carries nothing).
+    let root = brent(&mut mismatch, 0.0, 0.5 * PI - 1e-3, stop_phi);
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    let phi = match root {
+        Ok(r) => r.x,
+        Err(RootError::NotConverged { iterations, width }) => {
+            return Err(CalcError::NotConverged { method: "brent_attitude", iterations, residual: width })
+        }
+        Err(_) => {
+            return Err(CalcError::impossible("/arc_deg", "no attitude angle puts the film force on the load line of this arc at this eccentricity"))
+        }
+    };
+    let film = place(phi);
+    let (f, p) = film::solve(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
+    Ok((film, f, p))
+}
+
 /// One operating point, dimensionless (Table 8.6 conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Point {
@@ -126,20 +193,24 @@ pub fn friction_parameter(
     attitude: f64,
     sommerfeld: f64,
     turbulence_reynolds: Option<f64>,
+    span: (f64, f64),
 ) -> f64 {
-    let couette = match turbulence_reynolds {
-        None => 2.0 * PI / (1.0 - eps * eps).sqrt(),
-        Some(re) => {
+    let full = (span.1 - span.0 - 2.0 * PI).abs() < 1e-9;
+    let couette = match (turbulence_reynolds, full) {
+        (None, true) => 2.0 * PI / (1.0 - eps * eps).sqrt(),
+        (re, _) => {
+            // Periodic over the full circle (trapezoid exact to rounding); Simpson-accurate on arcs.
             let n = 720;
-            (0..n)
+            let w = (span.1 - span.0) / n as f64;
+            (0..=n)
                 .map(|i| {
-                    let h = 1.0 + eps * (2.0 * PI * i as f64 / n as f64).cos();
-                    film::turbulent_shear_factor(re * h) / h
+                    let theta = span.0 + w * i as f64;
+                    let h = 1.0 + eps * theta.cos();
+                    let weight = if i == 0 || i == n { 0.5 } else { 1.0 };
+                    weight * re.map_or(1.0, |re| film::turbulent_shear_factor(re * h)) / h
                 })
                 .sum::<f64>()
-                * 2.0
-                * PI
-                / n as f64
+                * w
         }
     };
     0.5 * eps * attitude.sin() + PI * sommerfeld * couette
@@ -161,14 +232,14 @@ pub fn solve_error(e: SolveError) -> CalcError {
     }
 }
 
-fn from_film(eps: f64, f: &FilmSolution, physics: Physics) -> Point {
+fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
     Point {
         eccentricity_ratio: eps,
         sommerfeld_number: s,
         attitude_angle: phi,
-        friction_parameter: friction_parameter(eps, phi, s, physics.turbulence_reynolds),
+        friction_parameter: friction_parameter(eps, phi, s, physics.turbulence_reynolds, f.span),
         max_pressure_bar: f.max_pressure_bar,
         max_pressure_angle: f.max_pressure_angle,
         cavitation_angle: physics.cavitation.then_some(f.cavitation_angle),
@@ -187,7 +258,7 @@ pub fn at_eccentricity(
     eps: f64,
     l_over_d: f64,
     method: Method,
-    physics: Physics,
+    physics: FilmModel,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Point, CalcError> {
     at_eccentricity_from(eps, l_over_d, method, physics, None, keep_going)
@@ -198,7 +269,7 @@ fn at_eccentricity_from(
     eps: f64,
     l_over_d: f64,
     method: Method,
-    physics: Physics,
+    physics: FilmModel,
     warm: Option<Vec<f64>>,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Point, CalcError> {
@@ -210,12 +281,28 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
-            let film = Film {
-                physics,
-                ..Film::steady(eps, l_over_d)
+            let (fine, coarse) = match physics.arc {
+                None => {
+                    let film = Film {
+                        physics,
+                        ..Film::steady(eps, l_over_d)
+                    };
+                    let (fine, coarse, _) = film::solve_nested(film, mesh, stop, warm, keep_going)
+                        .map_err(solve_error)?;
+                    (fine, coarse)
+                }
+                Some(_) => {
+                    let half = Mesh {
+                        circumferential: mesh.circumferential / 2,
+                        axial_half: (mesh.axial_half / 2).max(2),
+                    };
+                    let (_, coarse, _) =
+                        positioned_film(eps, l_over_d, physics, half, stop, None, keep_going)?;
+                    let (_, fine, _) =
+                        positioned_film(eps, l_over_d, physics, mesh, stop, warm, keep_going)?;
+                    (fine, coarse)
+                }
             };
-            let (fine, coarse, _) =
-                film::solve_nested(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
             let mut point = from_film(eps, &fine, physics);
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
             // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
@@ -291,7 +378,7 @@ pub fn equilibrium(
     s_target: f64,
     l_over_d: f64,
     method: Method,
-    physics: Physics,
+    physics: FilmModel,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(Point, u32), CalcError> {
     let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
@@ -352,7 +439,7 @@ fn to_u(eps: f64) -> f64 {
 struct Searcher<'a> {
     s_target: f64,
     l_over_d: f64,
-    physics: Physics,
+    physics: FilmModel,
     /// Each probe starts from the last field: successive ε are close once the search homes in.
     warm: Option<(Mesh, Vec<f64>)>,
     evaluations: &'a mut u32,
@@ -378,13 +465,16 @@ impl Searcher<'_> {
                     .sommerfeld_number
             }
             Method::Numerical { mesh, stop, .. } => {
-                let film = Film {
-                    physics: self.physics,
-                    ..Film::steady(eps, self.l_over_d)
-                };
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
-                let (f, p) =
-                    film::solve(film, mesh, stop, start, keep_going).map_err(solve_error)?;
+                let (_, f, p) = positioned_film(
+                    eps,
+                    self.l_over_d,
+                    self.physics,
+                    mesh,
+                    stop,
+                    start,
+                    keep_going,
+                )?;
                 self.warm = Some((mesh, p));
                 f.sommerfeld_number()
             }
@@ -493,7 +583,7 @@ mod tests {
     fn equilibrium_is_cheap_and_exact() {
         let m = Method::numerical(Level::Standard, None, None);
         for s in [0.0447, 0.5, 0.005, 20.0] {
-            let (p, n) = equilibrium(s, 1.0, m, Physics::REYNOLDS, &mut || true).unwrap();
+            let (p, n) = equilibrium(s, 1.0, m, FilmModel::REYNOLDS, &mut || true).unwrap();
             assert!(
                 (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
                 "S {s}: {}",

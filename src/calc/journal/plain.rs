@@ -87,6 +87,11 @@ pub struct PlainInput {
     /// temperature when the thermal effect applies.
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 40.0)]
     pub inlet_temperature_c: Option<Celsius>,
+    /// Bearing arc, degrees, centred on the load line (30 … 360; default 360, the full bearing fed
+    /// at h_max). A partial bearing's edges are at ambient pressure; its line of centres is placed
+    /// where the film force lies on the load line.
+    #[schema(minimum = 30.0, maximum = 360.0, example = 360.0)]
+    pub arc_deg: Option<f64>,
     /// Oil feed: a hole or axial grooves with their supply pressure. Gives the pressure-fed and
     /// total flows (Martin's model) and puts the total flow in the heat balance; absent, the
     /// side leakage carries the heat (Table 8.6's ΔT).
@@ -208,6 +213,24 @@ impl Validate for PlainInput {
         if self.effects.inertia == Mode::On {
             errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
         }
+        let arc = match self.arc_deg {
+            None => None,
+            Some(a) if a.is_finite() && (359.999..=360.0).contains(&a) => None,
+            Some(a) if a.is_finite() && (30.0..360.0).contains(&a) => Some(a.to_radians()),
+            Some(a) => {
+                errors.push(FieldError::new(
+                    "/arc_deg",
+                    format!("must be within [30, 360] degrees, got {a}"),
+                ));
+                None
+            }
+        };
+        if arc.is_some() && matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm)) {
+            errors.push(FieldError::new("/arc_deg", "the closed forms are for the full 360° bearing; use a numerical fidelity for a partial arc"));
+        }
+        if arc.is_some() && self.feed.is_some() {
+            errors.push(FieldError::new("/feed", "Martin's feed-flow model is for the full 360° bearing; a partial arc is fed at its edges"));
+        }
         let feed = match self.feed.map(|f| f.parse(l, d)) {
             Some(Ok(f)) => Some(f),
             Some(Err(mut e)) => {
@@ -236,6 +259,7 @@ impl Validate for PlainInput {
                 given,
                 inlet_temperature_c: self.inlet_temperature_c.map(Celsius::get),
                 feed,
+                arc,
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
                 method,
                 effects: self.effects,
