@@ -871,20 +871,31 @@ struct Subsurface {
 }
 
 /// The maxima of τ₁ and von Mises along the axis in each body, scaled by p_max and the depth
-/// scale b (the semi-minor axis or the half-width).
+/// scale b (the semi-minor axis or the half-width). Bodies of equal ν share one search.
 fn subsurface(
     bodies: &[Body; 2],
     p_max: f64,
     b: f64,
     stresses: impl Fn(f64, f64) -> [f64; 3],
 ) -> Subsurface {
+    let mut searched: Vec<(f64, [(f64, f64); 2])> = Vec::with_capacity(2);
     let per_body: Vec<SubsurfaceStress> = bodies
         .iter()
         .zip(1u8..)
         .map(|(body, index)| {
             let nu = body.poisson_ratio;
-            let (tau, tau_depth) = maximise_in_depth(|z| principal_shear(stresses(z, nu)));
-            let (vm, vm_depth) = maximise_in_depth(|z| von_mises(stresses(z, nu)));
+            let maxima = match searched.iter().find(|(n, _)| *n == nu) {
+                Some((_, m)) => *m,
+                None => {
+                    let m = maximise_in_depth(|z| {
+                        let s = stresses(z, nu);
+                        [principal_shear(s), von_mises(s)]
+                    });
+                    searched.push((nu, m));
+                    m
+                }
+            };
+            let [(tau, tau_depth), (vm, vm_depth)] = maxima;
             SubsurfaceStress {
                 body: index,
                 poisson_ratio: nu,
@@ -908,49 +919,58 @@ fn subsurface(
     }
 }
 
-/// The maximum of f over ζ ∈ [0, 4] (depths in units of b; every Hertz maximum lies within
-/// 0.8b for −1 < ν ≤ 0.5, or at the surface): a scan on 80 intervals, then golden-section
-/// refinement on the two intervals around the best node to 10⁻¹⁰ in ζ.
-fn maximise_in_depth(f: impl Fn(f64) -> f64) -> (f64, f64) {
+/// The maxima of the two components of f over ζ ∈ [0, 4] (depths in units of b; every Hertz
+/// maximum lies within 0.8b for −1 < ν ≤ 0.5, or at the surface): one scan on 16 intervals
+/// shared by both, then golden-section refinement of each on the two intervals around its best
+/// node to 10⁻⁶ in ζ. Returns (maximum, depth) per component.
+fn maximise_in_depth(f: impl Fn(f64) -> [f64; 2]) -> [(f64, f64); 2] {
     const DEPTH: f64 = 4.0;
-    const SCAN: usize = 80;
+    const SCAN: usize = 16;
     let h = DEPTH / SCAN as f64;
-    let (mut best_i, mut best) = (0, f(0.0));
+    let first = f(0.0);
+    let mut best = [(0usize, first[0]), (0usize, first[1])];
     for i in 1..=SCAN {
         let v = f(i as f64 * h);
-        if v > best {
-            (best_i, best) = (i, v);
+        for k in 0..2 {
+            if v[k] > best[k].1 {
+                best[k] = (i, v[k]);
+            }
         }
     }
-    let mut lo = best_i.saturating_sub(1) as f64 * h;
-    let mut hi = (best_i + 1).min(SCAN) as f64 * h;
-    let inv_phi = 0.5 * (5f64.sqrt() - 1.0);
-    let mut x1 = hi - inv_phi * (hi - lo);
-    let mut x2 = lo + inv_phi * (hi - lo);
-    let (mut f1, mut f2) = (f(x1), f(x2));
-    // (√5 − 1)/2 shrinks the bracket 0.618-fold per step: 2h = 0.1 → 1e-10 in 44 steps.
-    for _ in 0..60 {
-        if hi - lo < 1e-10 {
-            break;
+    let refine = |k: usize| -> (f64, f64) {
+        let g = |z: f64| f(z)[k];
+        let (best_i, best_v) = best[k];
+        let mut lo = best_i.saturating_sub(1) as f64 * h;
+        let mut hi = (best_i + 1).min(SCAN) as f64 * h;
+        let inv_phi = 0.5 * (5f64.sqrt() - 1.0);
+        let mut x1 = hi - inv_phi * (hi - lo);
+        let mut x2 = lo + inv_phi * (hi - lo);
+        let (mut f1, mut f2) = (g(x1), g(x2));
+        // (√5 − 1)/2 shrinks the bracket 0.618-fold per step: 2h = 0.5 → 1e-6 in 28 steps.
+        for _ in 0..40 {
+            if hi - lo < 1e-6 {
+                break;
+            }
+            if f1 < f2 {
+                lo = x1;
+                (x1, f1) = (x2, f2);
+                x2 = lo + inv_phi * (hi - lo);
+                f2 = g(x2);
+            } else {
+                hi = x2;
+                (x2, f2) = (x1, f1);
+                x1 = hi - inv_phi * (hi - lo);
+                f1 = g(x1);
+            }
         }
-        if f1 < f2 {
-            lo = x1;
-            (x1, f1) = (x2, f2);
-            x2 = lo + inv_phi * (hi - lo);
-            f2 = f(x2);
+        let (x, v) = if f1 > f2 { (x1, f1) } else { (x2, f2) };
+        if v >= best_v {
+            (v, x)
         } else {
-            hi = x2;
-            (x2, f2) = (x1, f1);
-            x1 = hi - inv_phi * (hi - lo);
-            f1 = f(x1);
+            (best_v, best_i as f64 * h)
         }
-    }
-    let (x, v) = if f1 > f2 { (x1, f1) } else { (x2, f2) };
-    if v >= best {
-        (v, x)
-    } else {
-        (best, best_i as f64 * h)
-    }
+    };
+    [refine(0), refine(1)]
 }
 
 #[cfg(test)]
