@@ -5,6 +5,7 @@ pub mod contact;
 pub mod journal;
 pub mod lubricant;
 pub mod quantity;
+pub mod rolling;
 
 mod context;
 mod registry;

@@ -11,7 +11,9 @@ use serde::Serialize;
 use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
-use super::{contact, journal, lubricant, CalcError, Calculation, Context, Validate, Warning};
+use super::{
+    contact, journal, lubricant, rolling, CalcError, Calculation, Context, Validate, Warning,
+};
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
 
@@ -23,6 +25,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<journal::plain::PlainJournal>(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl_film::EhlFilm>(),
+    Entry::of::<rolling::kinematics::Kinematics>(),
+    Entry::of::<rolling::life::Life>(),
 ];
 
 /// The calculation registered at `path`.

@@ -1,0 +1,1528 @@
+//! `POST /v1/rolling-bearings/life`: basic rating life L10, the life at another reliability
+//! (factor a1), and the modified life a1·a_ISO·L10 of ISO 281:2007 from the lubrication
+//! (viscosity ratio κ) and contamination (e_C C_u/P).
+//!
+//! - Basic rating life (Khonsari & Booser RB-3, eqs 13.5–13.7; Hamrock 21.3.6):
+//!   L10 = (C/P)^p million revolutions, p = 3 for balls (point contact), 10/3 for rollers (line
+//!   contact); L10h = 10⁶ L10/(60 n).
+//! - Equivalent load (RB-4, eq 13.8): P = X F_r + Y F_a, raised to F_r when smaller (a radial
+//!   bearing never sees less than its radial load; ISO 281's X = 1, Y = 0 branch).
+//! - Duty cycle (RB-5, eqs 13.9–13.10; Ex 13.3): P_m = [Σ P_iᵖ u_i / Σ u_i]^{1/p} with u_i the
+//!   revolutions of step i (n_i t_i when times are given); the mean speed for hours is
+//!   Σ u_i / Σ t_i. Khonsari & Booser use the exponent 3 for rollers too; the life exponent p is
+//!   used here, as ISO 281 does, which is identical for balls.
+//! - Reliability factor a1: `weibull` (default) is the texts' Weibull relation
+//!   L_S = L10 [ln(1/S)/ln(1/0.9)]^{1/e} (Hamrock 21.3.6) with slope e = 1.5 by default, which is
+//!   Khonsari & Booser Table 13.9 (0.62, 0.53, 0.44, 0.33, 0.21 at 95…99 %); `iso_281_2007` is
+//!   a1 = 0.95 [ln(100/R)/ln(100/90)]^{2/3} + 0.05 (0.64, 0.55, 0.47, 0.37, 0.25 at 95…99 %).
+//! - a_ISO (ISO 281:2007, radial ball and radial roller bearings), with x = e_C C_u/P and κ
+//!   clipped to [0.1, 4]: a_ISO = 0.1 [1 − (x₁ − x₂/κ^e)^m x^q]^{−r}, capped at 50, where
+//!   ball: x₁ = 2.5671, m = 0.83, q = 1/3, r = 9.3; roller: x₁ = 1.5859, m = 1, q = 0.4,
+//!   r = 9.185; and by κ band (x₂ ball / roller, e): 0.1 ≤ κ < 0.4: 2.2649 / 1.3993, 0.054381;
+//!   0.4 ≤ κ < 1: 1.9987 / 1.2348, 0.19087; 1 ≤ κ ≤ 4: 1.9987 / 1.2348, 0.071739.
+//! - Rated viscosity (ISO 281 / SKF): ν1 = 45000 n^{−0.83} d_m^{−0.5} for n < 1000 rpm,
+//!   4500 n^{−0.5} d_m^{−0.5} for n ≥ 1000 rpm (mm²/s, n in rpm, d_m in mm); κ = ν/ν1.
+//!
+//! Outside the texts (spec khonsari-booser-ch9-17.md §5 marks them "verify"), checked as follows:
+//! - a_ISO constants and ν1: a public Rust implementation of ISO 281:2007 eqs (27)–(36) found with
+//!   the code search (`a_iso_ball`, `nu_1_mm2_s`: the same ball constants, the roller
+//!   1.5859/1.3993/1.2348, 0.4, −9.185 and the same ν1 law), and a Python bearing model
+//!   (`AIso`) with the same ball constants; the roller band coefficients are continuous across
+//!   κ = 0.4 and 1 with the ball's band exponents (1.3993·0.4^−0.054381 = 1.2348·0.4^−0.19087 to
+//!   5 digits), as the ball's are. They reproduce Khonsari & Booser's chart readings of Ex 13.4
+//!   (a_SKF 20 and 5 → 18.6 and 4.84) and Fig 15.9 (ν1 8 → 7.61, 18 → 19.0).
+//! - a1, texts' set: the SKF ConCentra catalogue table (easymanua.ls/skf/concentra, p. 9) and
+//!   RBC Bearings' "Adjustment factors for rating life" page give 1, 0.62, 0.53, 0.44, 0.33,
+//!   0.21 for 90…99 %, as Table 13.9 does.
+//! - a1, ISO 281:2007 set: verify. No second public source was found by the search; the formula
+//!   reproduces the values the spec quotes for ISO 281:2007 to the two decimals given.
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use crate::calc::quantity::{NonNegative, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::fidelity::{Level, SolverReport};
+
+pub struct Life;
+
+/// Largest load or load rating accepted, N.
+const MAX_LOAD_N: f64 = 1e12;
+/// Largest C/P accepted: beyond it L10 exceeds 10¹⁸ million revolutions and means nothing.
+const MAX_LOAD_RATIO: f64 = 1e6;
+/// Speed range accepted, rpm.
+const SPEED_RANGE_RPM: (f64, f64) = (1e-6, 1e7);
+/// Largest pitch diameter accepted, m.
+const MAX_PITCH_DIAMETER_M: f64 = 100.0;
+/// Largest number of duty-cycle steps.
+const MAX_DUTY_STEPS: usize = 1000;
+/// κ range of the a_ISO formulas (ISO 281:2007 §9.3.3.4); outside, κ is clipped with a warning.
+const KAPPA_RANGE: (f64, f64) = (0.1, 4.0);
+/// a_ISO is capped here (ISO 281:2007; Khonsari & Booser RB-7: "do not use > 50").
+const A_ISO_CAP: f64 = 50.0;
+/// Reliability range of ISO 281:2007's a1 table, percent.
+const ISO_RELIABILITY_RANGE: (f64, f64) = (90.0, 99.95);
+/// Default Weibull slope of the texts' a1 (Khonsari & Booser Table 13.9).
+const TEXTS_WEIBULL_SLOPE: f64 = 1.5;
+/// ν1's speed break, rpm.
+const NU1_BREAK_RPM: f64 = 1000.0;
+
+/// Ball or roller bearing: the life exponent and the a_ISO constants.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum BearingKind {
+    /// Radial ball bearing: point contact, p = 3.
+    Ball,
+    /// Radial roller bearing: line contact, p = 10/3.
+    Roller,
+}
+
+impl BearingKind {
+    /// The life exponent p of L10 = (C/P)^p.
+    pub fn life_exponent(self) -> f64 {
+        match self {
+            BearingKind::Ball => 3.0,
+            BearingKind::Roller => 10.0 / 3.0,
+        }
+    }
+}
+
+/// Which published reliability factors a1 to use.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, ToSchema)]
+pub enum ReliabilityFactorSet {
+    /// The texts' Weibull relation a1 = [ln(100/R)/ln(100/90)]^{1/e}, slope e = 1.5 unless
+    /// `weibull_slope` says otherwise (Khonsari & Booser Table 13.9; Hamrock 21.3.6).
+    #[default]
+    #[serde(rename = "weibull")]
+    Weibull,
+    /// ISO 281:2007: a1 = 0.95 [ln(100/R)/ln(100/90)]^{2/3} + 0.05, tabulated for 90…99.95 %.
+    #[serde(rename = "iso_281_2007")]
+    Iso281_2007,
+}
+
+/// Reliability in percent, strictly within (0, 100).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct Reliability(f64);
+
+impl TryFrom<f64> for Reliability {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && v > 0.0 && v < 100.0 {
+            Ok(Reliability(v))
+        } else {
+            Err(format!(
+                "must be a reliability in percent within (0, 100), got {v}"
+            ))
+        }
+    }
+}
+
+/// A contamination factor e_C within [0, 1] (1 very clean, 0 severely contaminated).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct ContaminationFactor(f64);
+
+impl TryFrom<f64> for ContaminationFactor {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && (0.0..=1.0).contains(&v) {
+            Ok(ContaminationFactor(v))
+        } else {
+            Err(format!(
+                "must be a contamination factor within [0, 1], got {v}"
+            ))
+        }
+    }
+}
+
+/// One step of a duty cycle: a load held at a speed for a share of the time or of the
+/// revolutions.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct DutyStep {
+    /// Equivalent dynamic load P_i of the step, N, > 0.
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 8000.0)]
+    pub equivalent_load_n: Positive,
+    /// Speed n_i of the step, rpm, 1e-6 … 1e7.
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e7, example = 500.0)]
+    pub speed_rpm: Positive,
+    /// Share of the time spent in this step, > 0; normalised by the sum over the steps (minutes
+    /// per cycle, percent or fractions all work). Give this or `revolution_fraction`, the same
+    /// kind in every step.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 10.0)]
+    pub time_fraction: Option<Positive>,
+    /// Share of the revolutions made in this step, > 0; normalised by the sum over the steps.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.25)]
+    pub revolution_fraction: Option<Positive>,
+}
+
+/// Request: the bearing's rating and its load (one equivalent load, its components, or a duty
+/// cycle), the speed, the reliability, and optionally the lubrication and contamination for the
+/// modified life.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct LifeInput {
+    /// `ball` (p = 3) or `roller` (p = 10/3); radial bearings.
+    pub bearing_kind: BearingKind,
+    /// Basic dynamic load rating C, N, > 0 (catalogue value: the load for 10⁶ revolutions at
+    /// 90 % reliability).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 35700.0)]
+    pub dynamic_load_rating_n: Positive,
+    /// Equivalent dynamic load P, N, > 0. Or give `radial_load_n` (with `axial_load_n`,
+    /// `x_factor`, `y_factor`), or `duty_cycle` — exactly one of the three.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e12, example = 5000.0)]
+    pub equivalent_load_n: Option<Positive>,
+    /// Radial load F_r, N, ≥ 0: P = X F_r + Y F_a (at least F_r).
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e12, example = 3000.0)]
+    pub radial_load_n: Option<NonNegative>,
+    /// Axial load F_a, N, ≥ 0 (default 0); needs `x_factor` and `y_factor` when > 0.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e12, example = 7000.0)]
+    pub axial_load_n: Option<NonNegative>,
+    /// Radial load factor X, dimensionless, ≥ 0 (catalogue or Khonsari & Booser Table 13.8);
+    /// default 1 when there is no axial load.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 100.0, example = 0.56)]
+    pub x_factor: Option<NonNegative>,
+    /// Axial load factor Y, dimensionless, ≥ 0; default 0 when there is no axial load.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 100.0, example = 1.5)]
+    pub y_factor: Option<NonNegative>,
+    /// A duty cycle (1 … 1000 steps) instead of one load and speed: the mean load
+    /// P_m = [Σ P_iᵖ u_i / Σ u_i]^{1/p} over the revolutions u_i, and the time-mean speed.
+    #[schema(example = json!([{"equivalent_load_n": 4000.0, "speed_rpm": 1500.0, "time_fraction": 0.7}, {"equivalent_load_n": 8000.0, "speed_rpm": 900.0, "time_fraction": 0.3}]))]
+    pub duty_cycle: Option<Vec<DutyStep>>,
+    /// Speed n, rpm, 1e-6 … 1e7; required unless `duty_cycle` gives each step's speed.
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e7, example = 5000.0)]
+    pub speed_rpm: Option<Positive>,
+    /// Reliability R, percent, within (0, 100); default 90 (the rating's, a1 = 1).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, exclusive_maximum = 100.0, example = 90.0)]
+    pub reliability_percent: Option<Reliability>,
+    /// Which a1 set: `weibull` (default; the texts' Table 13.9 with slope 1.5) or
+    /// `iso_281_2007`.
+    pub reliability_factor: Option<ReliabilityFactorSet>,
+    /// Weibull slope e of the `weibull` set, dimensionless, 0.1 … 10; default 1.5.
+    #[schema(value_type = Option<f64>, minimum = 0.1, maximum = 10.0, example = 1.5)]
+    pub weibull_slope: Option<Positive>,
+    /// Operating kinematic viscosity ν of the oil (or grease base oil) at the operating
+    /// temperature, mm²/s, > 0; with `pitch_diameter_m` gives κ = ν/ν1. Or give `kappa`.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e6, example = 20.0)]
+    pub operating_viscosity_mm2_s: Option<Positive>,
+    /// Bearing mean (pitch) diameter d_m = (d + D)/2, m, > 0: gives the rated viscosity ν1.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 100.0, example = 0.07)]
+    pub pitch_diameter_m: Option<Positive>,
+    /// Viscosity ratio κ = ν/ν1, dimensionless, > 0 (clipped to [0.1, 4] with a warning).
+    /// Instead of `operating_viscosity_mm2_s`.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e6, example = 2.5)]
+    pub kappa: Option<Positive>,
+    /// Contamination factor e_C, dimensionless, within [0, 1] (1 very clean … 0 severely
+    /// contaminated; Khonsari & Booser Table 13.10's η_c); needed for a_ISO.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1.0, example = 1.0)]
+    pub contamination_factor: Option<ContaminationFactor>,
+    /// Fatigue load limit C_u (SKF's P_u), N, > 0 (catalogue); needed for a_ISO.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e12, example = 980.0)]
+    pub fatigue_load_limit_n: Option<Positive>,
+}
+
+/// Where κ comes from.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum KappaSource {
+    Given(f64),
+    /// κ = ν/ν1 with ν1 from the speed and the pitch diameter.
+    Viscosity {
+        viscosity_mm2_s: f64,
+        pitch_diameter_mm: f64,
+    },
+}
+
+/// What the modified life needs: κ's source, e_C and C_u.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Lubrication {
+    kappa: KappaSource,
+    contamination: f64,
+    fatigue_load_limit_n: f64,
+}
+
+/// The validated case, in N, rpm, percent and mm.
+#[derive(Debug, Clone, PartialEq)]
+pub struct LifeCase {
+    kind: BearingKind,
+    rating_n: f64,
+    load_n: f64,
+    /// Set when P = X F_r + Y F_a fell below F_r and was raised to it: (X F_r + Y F_a, F_r).
+    raised_from_n: Option<f64>,
+    speed_rpm: f64,
+    duty_steps: usize,
+    reliability_percent: f64,
+    factor_set: ReliabilityFactorSet,
+    weibull_slope: f64,
+    pitch_diameter_mm: Option<f64>,
+    lubrication: Option<Lubrication>,
+}
+
+/// The load and speed the life uses.
+struct Loading {
+    load_n: f64,
+    raised_from_n: Option<f64>,
+    speed_rpm: f64,
+    duty_steps: usize,
+}
+
+impl LifeInput {
+    /// P and n from exactly one of: the equivalent load, its components, the duty cycle.
+    fn loading(&self, errors: &mut Vec<FieldError>) -> Option<Loading> {
+        let components = self.radial_load_n.is_some()
+            || self.axial_load_n.is_some()
+            || self.x_factor.is_some()
+            || self.y_factor.is_some();
+        let given = [
+            self.equivalent_load_n.is_some(),
+            components,
+            self.duty_cycle.is_some(),
+        ];
+        match given.iter().filter(|g| **g).count() {
+            0 => {
+                errors.push(FieldError::new(
+                    "/equivalent_load_n",
+                    "give the load: equivalent_load_n, or radial_load_n (with axial_load_n, x_factor, y_factor), or duty_cycle",
+                ));
+                return None;
+            }
+            1 => {}
+            _ => {
+                let pointer = if self.duty_cycle.is_some() {
+                    "/duty_cycle"
+                } else if self.radial_load_n.is_some() {
+                    "/radial_load_n"
+                } else if self.axial_load_n.is_some() {
+                    "/axial_load_n"
+                } else if self.x_factor.is_some() {
+                    "/x_factor"
+                } else {
+                    "/y_factor"
+                };
+                errors.push(FieldError::new(
+                    pointer,
+                    "give exactly one of: equivalent_load_n; radial_load_n with axial_load_n, x_factor, y_factor; duty_cycle",
+                ));
+                return None;
+            }
+        }
+        if let Some(steps) = &self.duty_cycle {
+            if self.speed_rpm.is_some() {
+                errors.push(FieldError::new(
+                    "/speed_rpm",
+                    "a duty cycle gives each step's speed: omit speed_rpm",
+                ));
+            }
+            return duty_cycle(steps, self.bearing_kind.life_exponent(), errors);
+        }
+        let speed_rpm = match self.speed_rpm {
+            Some(n) => check_speed(n.get(), "/speed_rpm", errors),
+            None => {
+                errors.push(FieldError::new(
+                    "/speed_rpm",
+                    "the speed is needed for the life in hours and the rated viscosity",
+                ));
+                None
+            }
+        };
+        let (load_n, raised_from_n) = match self.equivalent_load_n {
+            Some(p) => (check_load(p.get(), "/equivalent_load_n", errors)?, None),
+            None => self.combined_load(errors)?,
+        };
+        Some(Loading {
+            load_n,
+            raised_from_n,
+            speed_rpm: speed_rpm?,
+            duty_steps: 0,
+        })
+    }
+
+    /// P = X F_r + Y F_a, at least F_r; returns (P, the raw value when raised).
+    fn combined_load(&self, errors: &mut Vec<FieldError>) -> Option<(f64, Option<f64>)> {
+        let Some(radial) = self.radial_load_n.map(NonNegative::get) else {
+            errors.push(FieldError::new(
+                "/radial_load_n",
+                "the load components need radial_load_n (0 for a purely axial load)",
+            ));
+            return None;
+        };
+        let axial = self.axial_load_n.map_or(0.0, NonNegative::get);
+        let (x, y) = match (self.x_factor, self.y_factor) {
+            (Some(x), Some(y)) => (x.get(), y.get()),
+            (None, None) if axial == 0.0 => (1.0, 0.0),
+            (None, _) => {
+                errors.push(FieldError::new(
+                    "/x_factor",
+                    "an axial load needs the bearing's X and Y factors (catalogue, or Khonsari & Booser Table 13.8)",
+                ));
+                return None;
+            }
+            (Some(_), None) => {
+                errors.push(FieldError::new(
+                    "/y_factor",
+                    "give the Y factor with the X factor",
+                ));
+                return None;
+            }
+        };
+        for (value, pointer) in [(x, "/x_factor"), (y, "/y_factor")] {
+            if value > 100.0 {
+                errors.push(FieldError::new(
+                    pointer,
+                    format!("must be at most 100, got {value}"),
+                ));
+            }
+        }
+        for (value, pointer) in [(radial, "/radial_load_n"), (axial, "/axial_load_n")] {
+            if value > MAX_LOAD_N {
+                errors.push(FieldError::new(
+                    pointer,
+                    format!("must be at most {MAX_LOAD_N:e} N, got {value}"),
+                ));
+            }
+        }
+        let combined = x * radial + y * axial;
+        let load = combined.max(radial);
+        if load <= 0.0 {
+            errors.push(FieldError::new(
+                "/radial_load_n",
+                format!(
+                    "the equivalent load X F_r + Y F_a = {x}·{radial} + {y}·{axial} is 0: a bearing without load has no fatigue life to rate"
+                ),
+            ));
+            return None;
+        }
+        Some((load, (combined < radial).then_some(combined)))
+    }
+
+    /// κ's source, e_C and C_u, or None when the request asks for no modified life.
+    fn lubrication(&self, errors: &mut Vec<FieldError>) -> Option<Lubrication> {
+        let kappa = match (self.kappa, self.operating_viscosity_mm2_s) {
+            (Some(_), Some(_)) => {
+                errors.push(FieldError::new(
+                    "/kappa",
+                    "give kappa or operating_viscosity_mm2_s (with pitch_diameter_m), not both",
+                ));
+                return None;
+            }
+            (Some(k), None) => Some(KappaSource::Given(k.get())),
+            (None, Some(nu)) => match self.pitch_diameter_m {
+                Some(dm) => Some(KappaSource::Viscosity {
+                    viscosity_mm2_s: nu.get(),
+                    pitch_diameter_mm: dm.get() * 1e3,
+                }),
+                None => {
+                    errors.push(FieldError::new(
+                        "/pitch_diameter_m",
+                        "the rated viscosity ν1 that κ = ν/ν1 needs comes from the pitch diameter",
+                    ));
+                    return None;
+                }
+            },
+            (None, None) => None,
+        };
+        for (value, pointer, limit) in [
+            (self.kappa.map(Positive::get), "/kappa", 1e6),
+            (
+                self.operating_viscosity_mm2_s.map(Positive::get),
+                "/operating_viscosity_mm2_s",
+                1e6,
+            ),
+            (
+                self.fatigue_load_limit_n.map(Positive::get),
+                "/fatigue_load_limit_n",
+                MAX_LOAD_N,
+            ),
+        ] {
+            if let Some(v) = value.filter(|v| *v > limit) {
+                errors.push(FieldError::new(
+                    pointer,
+                    format!("must be at most {limit:e}, got {v}"),
+                ));
+            }
+        }
+        match (kappa, self.contamination_factor, self.fatigue_load_limit_n) {
+            (None, None, None) => None,
+            (Some(kappa), Some(e_c), Some(c_u)) => Some(Lubrication {
+                kappa,
+                contamination: e_c.0,
+                fatigue_load_limit_n: c_u.get(),
+            }),
+            (None, _, _) => {
+                errors.push(FieldError::new(
+                    "/kappa",
+                    "a_ISO needs the viscosity ratio: give kappa, or operating_viscosity_mm2_s with pitch_diameter_m",
+                ));
+                None
+            }
+            (Some(_), e_c, c_u) => {
+                if e_c.is_none() {
+                    errors.push(FieldError::new(
+                        "/contamination_factor",
+                        "a_ISO needs the contamination factor e_C (1 very clean … 0 severely contaminated)",
+                    ));
+                }
+                if c_u.is_none() {
+                    errors.push(FieldError::new(
+                        "/fatigue_load_limit_n",
+                        "a_ISO needs the bearing's fatigue load limit C_u (catalogue)",
+                    ));
+                }
+                None
+            }
+        }
+    }
+}
+
+fn check_speed(n: f64, pointer: &str, errors: &mut Vec<FieldError>) -> Option<f64> {
+    if (SPEED_RANGE_RPM.0..=SPEED_RANGE_RPM.1).contains(&n) {
+        Some(n)
+    } else {
+        errors.push(FieldError::new(
+            pointer,
+            format!(
+                "must be within [{:e}, {:e}] rpm, got {n}",
+                SPEED_RANGE_RPM.0, SPEED_RANGE_RPM.1
+            ),
+        ));
+        None
+    }
+}
+
+fn check_load(p: f64, pointer: &str, errors: &mut Vec<FieldError>) -> Option<f64> {
+    if p <= MAX_LOAD_N {
+        Some(p)
+    } else {
+        errors.push(FieldError::new(
+            pointer,
+            format!("must be at most {MAX_LOAD_N:e} N, got {p}"),
+        ));
+        None
+    }
+}
+
+/// Mean load P_m = [Σ P_iᵖ u_i / Σ u_i]^{1/p} and time-mean speed Σ u_i / Σ t_i of a duty cycle.
+fn duty_cycle(steps: &[DutyStep], p: f64, errors: &mut Vec<FieldError>) -> Option<Loading> {
+    if steps.is_empty() || steps.len() > MAX_DUTY_STEPS {
+        errors.push(FieldError::new(
+            "/duty_cycle",
+            format!("needs 1 … {MAX_DUTY_STEPS} steps, got {}", steps.len()),
+        ));
+        return None;
+    }
+    let by_time = steps[0].time_fraction.is_some();
+    let before = errors.len();
+    // (revolutions, time, load) per step, in consistent relative units.
+    let mut shares = Vec::with_capacity(steps.len());
+    for (i, step) in steps.iter().enumerate() {
+        let at = |field: &str| format!("/duty_cycle/{i}/{field}");
+        let load = check_load(
+            step.equivalent_load_n.get(),
+            &at("equivalent_load_n"),
+            errors,
+        );
+        let speed = check_speed(step.speed_rpm.get(), &at("speed_rpm"), errors);
+        let share = match (step.time_fraction, step.revolution_fraction) {
+            (Some(t), None) if by_time => Some(t.get()),
+            (None, Some(u)) if !by_time => Some(u.get()),
+            (Some(_), Some(_)) => {
+                errors.push(FieldError::new(
+                    at("revolution_fraction"),
+                    "give time_fraction or revolution_fraction, not both",
+                ));
+                None
+            }
+            (None, None) => {
+                errors.push(FieldError::new(
+                    at("time_fraction"),
+                    "give the step's time_fraction or revolution_fraction",
+                ));
+                None
+            }
+            _ => {
+                let (field, kind) = if by_time {
+                    ("revolution_fraction", "time_fraction")
+                } else {
+                    ("time_fraction", "revolution_fraction")
+                };
+                errors.push(FieldError::new(
+                    at(field),
+                    format!("the first step gives {kind}: give {kind} in every step"),
+                ));
+                None
+            }
+        };
+        if let (Some(load), Some(speed), Some(share)) = (load, speed, share) {
+            let (revolutions, time) = if by_time {
+                (share * speed, share)
+            } else {
+                (share, share / speed)
+            };
+            shares.push((revolutions, time, load));
+        }
+    }
+    if errors.len() > before {
+        return None;
+    }
+    // Normalise by the largest load first so that Pᵖ cannot overflow.
+    let p_max = shares.iter().map(|s| s.2).fold(0.0, f64::max);
+    let revolutions: f64 = shares.iter().map(|s| s.0).sum();
+    let time: f64 = shares.iter().map(|s| s.1).sum();
+    let weighted: f64 = shares.iter().map(|s| (s.2 / p_max).powf(p) * s.0).sum();
+    let load_n = p_max * (weighted / revolutions).powf(1.0 / p);
+    let speed_rpm = revolutions / time;
+    if !(load_n.is_finite() && speed_rpm.is_finite() && load_n > 0.0 && speed_rpm > 0.0) {
+        errors.push(FieldError::new(
+            "/duty_cycle",
+            "the step shares are too disparate for a finite mean load and speed",
+        ));
+        return None;
+    }
+    Some(Loading {
+        load_n,
+        raised_from_n: None,
+        speed_rpm,
+        duty_steps: steps.len(),
+    })
+}
+
+impl Validate for LifeInput {
+    type Valid = LifeCase;
+    fn validate(self) -> Result<LifeCase, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let rating_n = self.dynamic_load_rating_n.get();
+        if rating_n > MAX_LOAD_N {
+            errors.push(FieldError::new(
+                "/dynamic_load_rating_n",
+                format!("must be at most {MAX_LOAD_N:e} N, got {rating_n}"),
+            ));
+        }
+        let loading = self.loading(&mut errors);
+        if let Some(l) = &loading {
+            if rating_n / l.load_n > MAX_LOAD_RATIO {
+                let pointer = if self.duty_cycle.is_some() {
+                    "/duty_cycle"
+                } else if self.equivalent_load_n.is_some() {
+                    "/equivalent_load_n"
+                } else {
+                    "/radial_load_n"
+                };
+                errors.push(FieldError::new(
+                    pointer,
+                    format!(
+                        "the load {} N is below C/{MAX_LOAD_RATIO:e}: far below any load a rating life means anything for",
+                        l.load_n
+                    ),
+                ));
+            }
+        }
+        let factor_set = self.reliability_factor.unwrap_or_default();
+        let weibull_slope = match (self.weibull_slope.map(Positive::get), factor_set) {
+            (None, _) => TEXTS_WEIBULL_SLOPE,
+            (Some(e), ReliabilityFactorSet::Weibull) if (0.1..=10.0).contains(&e) => e,
+            (Some(e), ReliabilityFactorSet::Weibull) => {
+                errors.push(FieldError::new(
+                    "/weibull_slope",
+                    format!("must be within [0.1, 10], got {e}"),
+                ));
+                TEXTS_WEIBULL_SLOPE
+            }
+            (Some(_), ReliabilityFactorSet::Iso281_2007) => {
+                errors.push(FieldError::new(
+                    "/weibull_slope",
+                    "belongs to reliability_factor weibull; ISO 281:2007's a1 has its own form",
+                ));
+                TEXTS_WEIBULL_SLOPE
+            }
+        };
+        let pitch_diameter_mm = match self.pitch_diameter_m.map(Positive::get) {
+            Some(d) if d > MAX_PITCH_DIAMETER_M => {
+                errors.push(FieldError::new(
+                    "/pitch_diameter_m",
+                    format!("must be at most {MAX_PITCH_DIAMETER_M} m, got {d}"),
+                ));
+                None
+            }
+            d => d.map(|d| d * 1e3),
+        };
+        let lubrication = self.lubrication(&mut errors);
+        match loading {
+            Some(l) if errors.is_empty() => Ok(LifeCase {
+                kind: self.bearing_kind,
+                rating_n,
+                load_n: l.load_n,
+                raised_from_n: l.raised_from_n,
+                speed_rpm: l.speed_rpm,
+                duty_steps: l.duty_steps,
+                reliability_percent: self.reliability_percent.map_or(90.0, |r| r.0),
+                factor_set,
+                weibull_slope,
+                pitch_diameter_mm,
+                lubrication,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// Result.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct LifeOutput {
+    /// `ball` or `roller`.
+    pub bearing_kind: BearingKind,
+    /// Life exponent p: 3 (ball) or 10/3 (roller), dimensionless.
+    #[schema(example = 3.0)]
+    pub life_exponent: f64,
+    /// Equivalent dynamic load P used, N (the duty cycle's mean load P_m, or X F_r + Y F_a
+    /// raised to F_r when smaller).
+    #[schema(example = 5000.0)]
+    pub equivalent_load_n: f64,
+    /// C/P, dimensionless.
+    #[schema(example = 7.14)]
+    pub load_ratio: f64,
+    /// Speed used for hours and ν1, rpm (the duty cycle's time-mean speed).
+    #[schema(example = 5000.0)]
+    pub speed_rpm: f64,
+    /// Basic rating life L10 = (C/P)^p, million revolutions (90 % reliability).
+    #[schema(example = 364.0)]
+    pub l10_million_revolutions: f64,
+    /// L10h = 10⁶ L10/(60 n), hours.
+    #[schema(example = 1213.4)]
+    pub l10_hours: f64,
+    /// Reliability R used, percent.
+    #[schema(example = 90.0)]
+    pub reliability_percent: f64,
+    /// Which a1 set was used: `weibull` or `iso_281_2007`.
+    pub reliability_factor: ReliabilityFactorSet,
+    /// Reliability factor a1, dimensionless (1 at 90 %).
+    #[schema(example = 1.0)]
+    pub a1: f64,
+    /// a1 L10, million revolutions: the life reached by R % of the bearings.
+    #[schema(example = 364.0)]
+    pub life_at_reliability_million_revolutions: f64,
+    /// a1 L10h, hours.
+    #[schema(example = 1213.4)]
+    pub life_at_reliability_hours: f64,
+    /// Rated viscosity ν1 (ISO 281 / SKF) at the speed and pitch diameter, mm²/s; when
+    /// `pitch_diameter_m` is given.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 7.61)]
+    pub rated_viscosity_mm2_s: Option<f64>,
+    /// Viscosity ratio κ = ν/ν1 (or as given) before clipping, dimensionless; with a_ISO.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 2.63)]
+    pub kappa: Option<f64>,
+    /// κ used in a_ISO, clipped to [0.1, 4], dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 2.63)]
+    pub kappa_used: Option<f64>,
+    /// e_C C_u / P, dimensionless; with a_ISO.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 0.196)]
+    pub contamination_load_ratio: Option<f64>,
+    /// ISO 281:2007 life modification factor a_ISO, dimensionless, 0.1 (about) … 50.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 18.6)]
+    pub a_iso: Option<f64>,
+    /// Modified rating life a1 a_ISO L10, million revolutions.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 6760.0)]
+    pub modified_life_million_revolutions: Option<f64>,
+    /// Modified rating life a1 a_ISO L10h, hours.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = 22530.0)]
+    pub modified_life_hours: Option<f64>,
+}
+
+impl Calculation for Life {
+    const PATH: &'static str = "/v1/rolling-bearings/life";
+    const SUMMARY: &'static str =
+        "Rolling-bearing fatigue life: L10, reliability factor a1, ISO 281 a_ISO and modified life";
+    const DESCRIPTION: &'static str = "Basic rating life L10 = (C/P)^p million revolutions (p = 3 ball, 10/3 roller) and \
+L10h = 10⁶L10/(60n) (Khonsari & Booser eqs 13.5–13.7; Hamrock 21.3.6), with P given, from P = XF_r + YF_a (at least F_r; eq 13.8) \
+or the duty-cycle mean P_m = [ΣP_iᵖu_i/Σu_i]^{1/p} over revolutions u_i (eqs 13.9–13.10, Ex 13.3). Reliability factor a1: \
+the texts' Weibull relation [ln(100/R)/ln(100/90)]^{1/e}, e = 1.5 (Table 13.9), or ISO 281:2007's \
+0.95[ln(100/R)/ln(100/90)]^{2/3} + 0.05. Modified life a1·a_ISO·L10 with ISO 281:2007's a_ISO(κ, e_C C_u/P) for radial ball and \
+roller bearings (κ bands 0.1–0.4, 0.4–1, 1–4; κ clipped to [0.1, 4]; a_ISO capped at 50) and the rated viscosity \
+ν1 = 45000n^−0.83 d_m^−0.5 (n < 1000 rpm) or 4500n^−0.5 d_m^−0.5 mm²/s, κ = ν/ν1.";
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm];
+    const EFFECTS: &'static [&'static str] = &[];
+    const EXAMPLE: &'static str = r#"{"bearing_kind": "ball", "dynamic_load_rating_n": 35700, "equivalent_load_n": 5000, "speed_rpm": 5000, "operating_viscosity_mm2_s": 20, "pitch_diameter_m": 0.07, "contamination_factor": 0.5, "fatigue_load_limit_n": 980}"#;
+
+    type Input = LifeInput;
+    type Output = LifeOutput;
+
+    fn run(case: LifeCase, ctx: &mut Context) -> Result<LifeOutput, CalcError> {
+        ctx.report(SolverReport::closed_form("closed_form"));
+        Ok(life(&case, ctx))
+    }
+}
+
+/// Reliability factor a1 at `reliability_percent` (see the module documentation).
+fn reliability_factor(set: ReliabilityFactorSet, reliability_percent: f64, slope: f64) -> f64 {
+    let w = (100.0 / reliability_percent).ln() / (100.0_f64 / 90.0).ln();
+    match set {
+        ReliabilityFactorSet::Weibull => w.powf(1.0 / slope),
+        ReliabilityFactorSet::Iso281_2007 => 0.95 * w.powf(2.0 / 3.0) + 0.05,
+    }
+}
+
+/// Rated viscosity ν1, mm²/s, at `speed_rpm` for a pitch diameter in mm.
+fn rated_viscosity(speed_rpm: f64, pitch_diameter_mm: f64) -> f64 {
+    if speed_rpm < NU1_BREAK_RPM {
+        45_000.0 * speed_rpm.powf(-0.83) / pitch_diameter_mm.sqrt()
+    } else {
+        4_500.0 / speed_rpm.sqrt() / pitch_diameter_mm.sqrt()
+    }
+}
+
+/// ISO 281:2007's a_ISO for κ already within [0.1, 4] and x = e_C C_u/P ≥ 0, capped at 50.
+fn a_iso(kind: BearingKind, kappa: f64, x: f64) -> f64 {
+    let (x1, m, q, r) = match kind {
+        BearingKind::Ball => (2.5671, 0.83, 1.0 / 3.0, 9.3),
+        BearingKind::Roller => (1.5859, 1.0, 0.4, 9.185),
+    };
+    let (x2, e) = match (kind, kappa) {
+        (BearingKind::Ball, k) if k < 0.4 => (2.2649, 0.054381),
+        (BearingKind::Roller, k) if k < 0.4 => (1.3993, 0.054381),
+        (BearingKind::Ball, k) if k < 1.0 => (1.9987, 0.19087),
+        (BearingKind::Roller, k) if k < 1.0 => (1.2348, 0.19087),
+        (BearingKind::Ball, _) => (1.9987, 0.071739),
+        (BearingKind::Roller, _) => (1.2348, 0.071739),
+    };
+    // At κ = 0.1 the lubrication term x₁ − x₂/κ^e is 0 to the constants' rounding (8·10⁻⁵ for
+    // balls, −1·10⁻⁴ for rollers): it is taken as ≥ 0, so a_ISO = 0.1 there for any x.
+    let lubrication = (x1 - x2 / kappa.powf(e)).max(0.0);
+    let bracket = 1.0 - lubrication.powf(m) * x.powf(q);
+    if bracket <= 0.0 {
+        return A_ISO_CAP;
+    }
+    (0.1 * bracket.powf(-r)).min(A_ISO_CAP)
+}
+
+/// The whole calculation, with its warnings.
+fn life(case: &LifeCase, ctx: &mut Context) -> LifeOutput {
+    let p = case.kind.life_exponent();
+    let ratio = case.rating_n / case.load_n;
+    let l10 = ratio.powf(p);
+    let hours_per_million = 1e6 / (60.0 * case.speed_rpm);
+    let l10_hours = l10 * hours_per_million;
+    if ratio < 1.0 {
+        ctx.warn(
+            "load_above_rating",
+            format!(
+                "P = {:.6} N exceeds the dynamic load rating C = {} N: L10 < 10⁶ revolutions, beyond the range the rating life is meant for (and likely beyond the static capacity)",
+                case.load_n, case.rating_n
+            ),
+        );
+    }
+    if let Some(raw) = case.raised_from_n {
+        ctx.warn(
+            "equivalent_load_raised_to_radial",
+            format!(
+                "X F_r + Y F_a = {raw:.6} N is below the radial load; P = F_r = {:.6} N is used (Khonsari & Booser RB-4)",
+                case.load_n
+            ),
+        );
+    }
+    if case.duty_steps > 0 && case.lubrication.is_some() {
+        ctx.warn(
+            "duty_cycle_mean_speed",
+            format!(
+                "the rated viscosity and a_ISO use the duty cycle's time-mean speed {:.6} rpm and mean load {:.6} N",
+                case.speed_rpm, case.load_n
+            ),
+        );
+    }
+    let r = case.reliability_percent;
+    if r < ISO_RELIABILITY_RANGE.0 {
+        ctx.warn(
+            "reliability_below_90",
+            format!(
+                "R = {r} % is below the rating's 90 %: a1 > 1 extrapolates the Weibull relation"
+            ),
+        );
+    } else if case.factor_set == ReliabilityFactorSet::Iso281_2007 && r > ISO_RELIABILITY_RANGE.1 {
+        ctx.warn(
+            "reliability_beyond_iso_281",
+            format!(
+                "R = {r} % exceeds ISO 281:2007's a1 table (up to {} %): the formula is extrapolated",
+                ISO_RELIABILITY_RANGE.1
+            ),
+        );
+    }
+    let a1 = reliability_factor(case.factor_set, r, case.weibull_slope);
+    let rated = case
+        .pitch_diameter_mm
+        .map(|dm| rated_viscosity(case.speed_rpm, dm));
+    let mut out = LifeOutput {
+        bearing_kind: case.kind,
+        life_exponent: p,
+        equivalent_load_n: case.load_n,
+        load_ratio: ratio,
+        speed_rpm: case.speed_rpm,
+        l10_million_revolutions: l10,
+        l10_hours,
+        reliability_percent: r,
+        reliability_factor: case.factor_set,
+        a1,
+        life_at_reliability_million_revolutions: a1 * l10,
+        life_at_reliability_hours: a1 * l10_hours,
+        rated_viscosity_mm2_s: rated,
+        kappa: None,
+        kappa_used: None,
+        contamination_load_ratio: None,
+        a_iso: None,
+        modified_life_million_revolutions: None,
+        modified_life_hours: None,
+    };
+    let Some(lub) = case.lubrication else {
+        return out;
+    };
+    let kappa = match lub.kappa {
+        KappaSource::Given(k) => k,
+        KappaSource::Viscosity {
+            viscosity_mm2_s,
+            pitch_diameter_mm,
+        } => viscosity_mm2_s / rated_viscosity(case.speed_rpm, pitch_diameter_mm),
+    };
+    let kappa_used = kappa.clamp(KAPPA_RANGE.0, KAPPA_RANGE.1);
+    if kappa_used != kappa {
+        ctx.warn(
+            "kappa_clipped",
+            format!(
+                "κ = {kappa:.6} is outside ISO 281's range [{}, {}]: a_ISO uses κ = {kappa_used}{}",
+                KAPPA_RANGE.0,
+                KAPPA_RANGE.1,
+                if kappa < KAPPA_RANGE.0 {
+                    " (below 0.1 the film cannot separate the surfaces; the modified life is not reliable)"
+                } else {
+                    " (a thicker film does not lengthen the life further)"
+                }
+            ),
+        );
+    }
+    let x = lub.contamination * lub.fatigue_load_limit_n / case.load_n;
+    let a = a_iso(case.kind, kappa_used, x);
+    if a >= A_ISO_CAP {
+        ctx.warn(
+            "a_iso_capped",
+            format!("a_ISO reaches its cap {A_ISO_CAP} (e_C C_u/P = {x:.6}, κ = {kappa_used:.4}): the load is near or below the fatigue load limit"),
+        );
+    }
+    out.kappa = Some(kappa);
+    out.kappa_used = Some(kappa_used);
+    out.contamination_load_ratio = Some(x);
+    out.a_iso = Some(a);
+    out.modified_life_million_revolutions = Some(a1 * a * l10);
+    out.modified_life_hours = Some(a1 * a * l10_hours);
+    out
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::calc::{execute, Failure};
+    use proptest::prelude::*;
+    use serde_json::{json, Value};
+    use std::time::{Duration, Instant};
+
+    fn post(request: &Value) -> Result<Value, Failure> {
+        let body = serde_json::to_vec(request).unwrap();
+        let deadline = Instant::now() + Duration::from_secs(10);
+        execute::<Life>(&body, deadline, Default::default())
+            .map(|out| serde_json::from_slice(&out.body).unwrap())
+    }
+
+    fn ok(request: &Value) -> Value {
+        post(request).unwrap_or_else(|e| panic!("{request}: {e:?}"))
+    }
+
+    fn pointers(request: &Value) -> Vec<String> {
+        match post(request) {
+            Err(Failure::Invalid(errors)) => errors.into_iter().map(|e| e.pointer).collect(),
+            other => panic!("{request}: expected 422, got {other:?}"),
+        }
+    }
+
+    fn get(v: &Value, field: &str) -> f64 {
+        v["result"][field]
+            .as_f64()
+            .unwrap_or_else(|| panic!("{field} missing in {v}"))
+    }
+
+    fn assert_rel(got: f64, want: f64, rel: f64, what: &str) {
+        assert!(
+            ((got - want) / want).abs() <= rel,
+            "{what}: got {got}, want {want} ±{rel}"
+        );
+    }
+
+    fn codes(v: &Value) -> Vec<String> {
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w["code"].as_str().unwrap().to_owned())
+            .collect()
+    }
+
+    #[test]
+    fn the_example_runs() {
+        let v: Value = serde_json::from_str(Life::EXAMPLE).unwrap();
+        let r = ok(&v);
+        assert!(get(&r, "modified_life_hours") > 0.0);
+    }
+
+    /// Khonsari & Booser Ex 13.1: P = 20 000 N, 1000 rpm; recomputed L_h 482, 2377, 6362,
+    /// 38 357 h (book 480, 2380, 6360, 38 360).
+    #[test]
+    fn khonsari_ex13_1_four_bearings() {
+        for (kind, c, hours) in [
+            ("ball", 61_400.0, 482.0),
+            ("ball", 104_500.0, 2377.0),
+            ("roller", 119_000.0, 6362.0),
+            ("roller", 204_000.0, 38_357.0),
+        ] {
+            let r = ok(&json!({"bearing_kind": kind, "dynamic_load_rating_n": c,
+                               "equivalent_load_n": 20000, "speed_rpm": 1000}));
+            assert_rel(
+                get(&r, "l10_hours"),
+                hours,
+                1e-3,
+                &format!("{kind} C = {c}"),
+            );
+        }
+    }
+
+    /// Khonsari & Booser Ex 13.2 with X, Y pinned as the book reads them: 6214 P = 12 180 N,
+    /// 2135 h; 7214 P = 8170 N, 10 393 h.
+    #[test]
+    fn khonsari_ex13_2_combined_loads() {
+        for (c, x, y, p, hours) in [
+            (61_400.0, 0.56, 1.5, 12_180.0, 2135.0),
+            (69_800.0, 0.39, 1.0, 8170.0, 10_393.0),
+        ] {
+            let r = ok(&json!({"bearing_kind": "ball", "dynamic_load_rating_n": c,
+                               "radial_load_n": 3000, "axial_load_n": 7000,
+                               "x_factor": x, "y_factor": y, "speed_rpm": 1000}));
+            assert_rel(get(&r, "equivalent_load_n"), p, 1e-9, "P");
+            assert_rel(get(&r, "l10_hours"), hours, 1e-3, "L_h");
+        }
+    }
+
+    /// Khonsari & Booser Ex 13.3: duty cycle → P_m = 5663 N, 1274.5 Mrev, 22 360 h.
+    #[test]
+    fn khonsari_ex13_3_duty_cycle() {
+        let r = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 61400,
+            "duty_cycle": [
+                {"equivalent_load_n": 8000, "speed_rpm": 500, "time_fraction": 10},
+                {"equivalent_load_n": 4000, "speed_rpm": 1200, "time_fraction": 30},
+                {"equivalent_load_n": 7000, "speed_rpm": 800, "time_fraction": 20}]}),
+        );
+        assert_rel(get(&r, "equivalent_load_n"), 5663.0, 2e-4, "P_m");
+        assert_rel(get(&r, "l10_million_revolutions"), 1274.5, 1e-3, "L10");
+        assert_rel(get(&r, "l10_hours"), 22_360.0, 1e-3, "L_h");
+        assert_rel(get(&r, "speed_rpm"), 950.0, 1e-12, "mean speed");
+        // The same cycle by revolutions: 5000, 36 000, 16 000 per hour.
+        let by_revs = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 61400,
+            "duty_cycle": [
+                {"equivalent_load_n": 8000, "speed_rpm": 500, "revolution_fraction": 5000},
+                {"equivalent_load_n": 4000, "speed_rpm": 1200, "revolution_fraction": 36000},
+                {"equivalent_load_n": 7000, "speed_rpm": 800, "revolution_fraction": 16000}]}),
+        );
+        for field in ["equivalent_load_n", "l10_hours", "speed_rpm"] {
+            assert_rel(get(&by_revs, field), get(&r, field), 1e-12, field);
+        }
+    }
+
+    /// Khonsari & Booser Ex 13.4 (6210, 5000 rpm, P = 5000 N, C = 35 700 N, κ = 2.5,
+    /// C_u/P = 0.196): L10 = 364.0 Mrev; the spec's ISO 281 a_ISO 18.56 (e_C = 1) and 4.84
+    /// (e_C = 0.5) against the book's chart readings 20 and 5.
+    #[test]
+    fn khonsari_ex13_4_modified_life() {
+        for (e_c, a, chart) in [(1.0, 18.56, 20.0), (0.5, 4.84, 5.0)] {
+            let r = ok(
+                &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 35700,
+                               "equivalent_load_n": 5000, "speed_rpm": 5000, "kappa": 2.5,
+                               "contamination_factor": e_c, "fatigue_load_limit_n": 980}),
+            );
+            assert_rel(get(&r, "l10_million_revolutions"), 364.0, 5e-4, "L10");
+            assert_rel(get(&r, "a_iso"), a, 1e-3, "a_ISO");
+            assert_rel(get(&r, "a_iso"), chart, 0.15, "a_SKF chart");
+            assert_rel(
+                get(&r, "modified_life_million_revolutions"),
+                364.0 * a,
+                2e-3,
+                "L_nm",
+            );
+            assert_eq!(get(&r, "a1"), 1.0);
+        }
+        // The third cross-check of the spec, (κ = 2.5, "0.157") → 11.38, is e_C = 0.8:
+        // x = 0.8 · 0.196 = 0.1568 (at x = 0.157 exactly a_ISO = 11.41).
+        assert_rel(
+            a_iso(BearingKind::Ball, 2.5, 0.8 * 0.196),
+            11.38,
+            1e-3,
+            "a_ISO(0.1568)",
+        );
+    }
+
+    /// ISO 281 ν1 cross-checks of the spec: ν1(5000 rpm, 70 mm) = 7.61, ν1(900, 70) = 19.00
+    /// (Khonsari & Booser Fig 15.9 reads 8 and 18).
+    #[test]
+    fn rated_viscosity_reproduces_the_chart_readings() {
+        let r = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 35700,
+                           "equivalent_load_n": 5000, "speed_rpm": 5000, "pitch_diameter_m": 0.07}),
+        );
+        assert_rel(get(&r, "rated_viscosity_mm2_s"), 7.61, 1e-3, "ν1 5000");
+        assert!(r["result"].get("a_iso").is_none());
+        assert_rel(rated_viscosity(900.0, 70.0), 19.00, 1e-3, "ν1 900");
+        let with_oil = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 35700,
+                           "equivalent_load_n": 5000, "speed_rpm": 5000, "pitch_diameter_m": 0.07,
+                           "operating_viscosity_mm2_s": 20, "contamination_factor": 1,
+                           "fatigue_load_limit_n": 980}),
+        );
+        assert_rel(get(&with_oil, "kappa"), 20.0 / 7.606, 1e-3, "κ");
+    }
+
+    /// Khonsari & Booser Table 13.9 (Weibull slope 1.5) prints 0.62, 0.53, 0.44, 0.33, 0.21; the
+    /// formula gives 0.61885, 0.53147, 0.43721, 0.33252, 0.20877 (the spec's 0.6187 and 0.5313 at
+    /// 95 and 96 % are 2·10⁻⁴ low). ISO 281:2007 (verify): 0.64, 0.55, 0.47, 0.37, 0.25, and
+    /// 0.077 at 99.95 %.
+    #[test]
+    fn reliability_factors_match_both_published_sets() {
+        for (r, table, exact, iso) in [
+            (95.0, 0.62, 0.61885, 0.64),
+            (96.0, 0.53, 0.53147, 0.55),
+            (97.0, 0.44, 0.43721, 0.47),
+            (98.0, 0.33, 0.33252, 0.37),
+            (99.0, 0.21, 0.20877, 0.25),
+        ] {
+            let w = reliability_factor(ReliabilityFactorSet::Weibull, r, TEXTS_WEIBULL_SLOPE);
+            assert!((w - table).abs() <= 0.005, "Table 13.9 {r}: {w} vs {table}");
+            assert_rel(w, exact, 2e-5, &format!("texts {r}"));
+            let i = reliability_factor(ReliabilityFactorSet::Iso281_2007, r, 1.5);
+            assert!((i - iso).abs() <= 0.005, "ISO {r}: {i} vs {iso}");
+        }
+        let i = reliability_factor(ReliabilityFactorSet::Iso281_2007, 99.95, 1.5);
+        assert!((i - 0.077).abs() <= 0.0005, "ISO 99.95: {i}");
+        let r = ok(
+            &json!({"bearing_kind": "roller", "dynamic_load_rating_n": 1e5,
+                           "equivalent_load_n": 1e4, "speed_rpm": 100, "reliability_percent": 99,
+                           "reliability_factor": "iso_281_2007"}),
+        );
+        assert_rel(get(&r, "a1"), 0.2484, 1e-3, "a1 ISO 99 %");
+        assert_eq!(r["result"]["reliability_factor"], "iso_281_2007");
+    }
+
+    #[test]
+    fn roller_a_iso_is_continuous_across_its_kappa_bands() {
+        for x in [0.01, 0.1, 0.5] {
+            for kind in [BearingKind::Ball, BearingKind::Roller] {
+                for k in [0.4, 1.0] {
+                    let below = a_iso(kind, k * (1.0 - 1e-9), x);
+                    let above = a_iso(kind, k, x);
+                    // Continuous to the 5 digits of the constants.
+                    assert_rel(below, above, 1e-3, &format!("{kind:?} κ = {k}, x = {x}"));
+                }
+                // a_ISO → 0.1 at κ = 0.1 and as x → 0.
+                assert_rel(a_iso(kind, 0.1, x), 0.1, 5e-3, "κ = 0.1");
+                assert_eq!(a_iso(kind, 2.0, 0.0), 0.1);
+            }
+        }
+    }
+
+    #[test]
+    fn warnings_flag_clipping_capping_and_overload() {
+        let r = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 1000,
+                           "equivalent_load_n": 2000, "speed_rpm": 100, "kappa": 9,
+                           "contamination_factor": 1, "fatigue_load_limit_n": 5000}),
+        );
+        let c = codes(&r);
+        for code in ["load_above_rating", "kappa_clipped", "a_iso_capped"] {
+            assert!(c.iter().any(|x| x == code), "{code} in {c:?}");
+        }
+        assert_eq!(get(&r, "kappa_used"), 4.0);
+        assert_eq!(get(&r, "a_iso"), 50.0);
+        let raised = ok(
+            &json!({"bearing_kind": "ball", "dynamic_load_rating_n": 1e4,
+                           "radial_load_n": 1000, "axial_load_n": 100,
+                           "x_factor": 0.56, "y_factor": 1.0, "speed_rpm": 100}),
+        );
+        assert_eq!(get(&raised, "equivalent_load_n"), 1000.0);
+        assert!(codes(&raised)
+            .iter()
+            .any(|x| x == "equivalent_load_raised_to_radial"));
+    }
+
+    #[test]
+    fn bad_input_is_refused_with_its_pointer() {
+        let good = json!({"bearing_kind": "ball", "dynamic_load_rating_n": 35700,
+                          "equivalent_load_n": 5000, "speed_rpm": 5000});
+        let with = |pairs: &[(&str, Value)]| {
+            let mut v = good.clone();
+            for (k, val) in pairs {
+                v[*k] = val.clone();
+            }
+            v
+        };
+        let without = |v: Value, key: &str| {
+            let mut v = v;
+            v.as_object_mut().unwrap().remove(key);
+            v
+        };
+        let lub = [
+            ("kappa", json!(2.0)),
+            ("contamination_factor", json!(0.5)),
+            ("fatigue_load_limit_n", json!(980)),
+        ];
+        let rows: Vec<(Value, &str, &str)> = vec![
+            (
+                with(&[("equivalent_load_n", json!(0))]),
+                "/equivalent_load_n",
+                "P = 0",
+            ),
+            (
+                with(&[("equivalent_load_n", json!(-5))]),
+                "/equivalent_load_n",
+                "P < 0",
+            ),
+            (
+                with(&[("dynamic_load_rating_n", json!(0))]),
+                "/dynamic_load_rating_n",
+                "C = 0",
+            ),
+            (
+                with(&[("bearing_kind", json!("needle"))]),
+                "/bearing_kind",
+                "unknown kind",
+            ),
+            (
+                with(&[("reliability_percent", json!(100))]),
+                "/reliability_percent",
+                "R = 100",
+            ),
+            (
+                with(&[("reliability_percent", json!(0))]),
+                "/reliability_percent",
+                "R = 0",
+            ),
+            (
+                with(&[("reliability_percent", json!(-10))]),
+                "/reliability_percent",
+                "R < 0",
+            ),
+            (with(&[("speed_rpm", json!(0))]), "/speed_rpm", "n = 0"),
+            (with(&[("speed_rpm", json!(1e9))]), "/speed_rpm", "n huge"),
+            (
+                without(good.clone(), "speed_rpm"),
+                "/speed_rpm",
+                "n missing",
+            ),
+            (
+                without(good.clone(), "equivalent_load_n"),
+                "/equivalent_load_n",
+                "no load",
+            ),
+            (
+                with(&[("radial_load_n", json!(1000))]),
+                "/radial_load_n",
+                "P and components",
+            ),
+            (
+                with(&[(
+                    "duty_cycle",
+                    json!([{"equivalent_load_n": 1, "speed_rpm": 1, "time_fraction": 1}]),
+                )]),
+                "/duty_cycle",
+                "P and duty cycle",
+            ),
+            (
+                without(with(&[("axial_load_n", json!(100))]), "equivalent_load_n"),
+                "/radial_load_n",
+                "axial without radial",
+            ),
+            (
+                without(
+                    with(&[("radial_load_n", json!(1000)), ("axial_load_n", json!(500))]),
+                    "equivalent_load_n",
+                ),
+                "/x_factor",
+                "axial without X, Y",
+            ),
+            (
+                without(
+                    with(&[
+                        ("radial_load_n", json!(1000)),
+                        ("axial_load_n", json!(500)),
+                        ("x_factor", json!(0.5)),
+                    ]),
+                    "equivalent_load_n",
+                ),
+                "/y_factor",
+                "X without Y",
+            ),
+            (
+                without(
+                    with(&[("radial_load_n", json!(0)), ("axial_load_n", json!(0))]),
+                    "equivalent_load_n",
+                ),
+                "/radial_load_n",
+                "zero components",
+            ),
+            (with(&[("kappa", json!(0))]), "/kappa", "κ = 0"),
+            (with(&[("kappa", json!(-1))]), "/kappa", "κ < 0"),
+            (
+                with(&[
+                    lub[0].clone(),
+                    lub[2].clone(),
+                    ("contamination_factor", json!(1.5)),
+                ]),
+                "/contamination_factor",
+                "e_C > 1",
+            ),
+            (
+                with(&[
+                    lub[0].clone(),
+                    lub[2].clone(),
+                    ("contamination_factor", json!(-0.1)),
+                ]),
+                "/contamination_factor",
+                "e_C < 0",
+            ),
+            (
+                with(&[lub[0].clone(), lub[2].clone()]),
+                "/contamination_factor",
+                "e_C missing",
+            ),
+            (
+                with(&[lub[0].clone(), lub[1].clone()]),
+                "/fatigue_load_limit_n",
+                "C_u missing",
+            ),
+            (
+                with(&[lub[1].clone(), lub[2].clone()]),
+                "/kappa",
+                "no κ source",
+            ),
+            (
+                with(&[
+                    lub[0].clone(),
+                    lub[1].clone(),
+                    lub[2].clone(),
+                    ("operating_viscosity_mm2_s", json!(20)),
+                    ("pitch_diameter_m", json!(0.07)),
+                ]),
+                "/kappa",
+                "κ and ν both",
+            ),
+            (
+                with(&[
+                    lub[1].clone(),
+                    lub[2].clone(),
+                    ("operating_viscosity_mm2_s", json!(20)),
+                ]),
+                "/pitch_diameter_m",
+                "ν without d_m",
+            ),
+            (
+                with(&[
+                    ("weibull_slope", json!(1.2)),
+                    ("reliability_factor", json!("iso_281_2007")),
+                ]),
+                "/weibull_slope",
+                "slope with ISO",
+            ),
+            (
+                with(&[("weibull_slope", json!(50))]),
+                "/weibull_slope",
+                "slope huge",
+            ),
+            (
+                with(&[("reliability_factor", json!("iso"))]),
+                "/reliability_factor",
+                "unknown set",
+            ),
+            (
+                with(&[("equivalent_load_n", json!(1e-3))]),
+                "/equivalent_load_n",
+                "C/P > 1e6",
+            ),
+            (
+                with(&[("equivalnt_load_n", json!(1))]),
+                "/equivalnt_load_n",
+                "typo",
+            ),
+            (
+                without(with(&[("duty_cycle", json!([]))]), "equivalent_load_n"),
+                "/duty_cycle",
+                "empty duty cycle",
+            ),
+            (
+                without(
+                    without(
+                        with(&[(
+                            "duty_cycle",
+                            json!([
+                    {"equivalent_load_n": 1000, "speed_rpm": 100, "time_fraction": 1},
+                    {"equivalent_load_n": 1000, "speed_rpm": 100, "revolution_fraction": 1}]),
+                        )]),
+                        "equivalent_load_n",
+                    ),
+                    "speed_rpm",
+                ),
+                "/duty_cycle/1/revolution_fraction",
+                "mixed shares",
+            ),
+            (
+                without(
+                    without(
+                        with(&[(
+                            "duty_cycle",
+                            json!([
+                    {"equivalent_load_n": 1000, "speed_rpm": 100}]),
+                        )]),
+                        "equivalent_load_n",
+                    ),
+                    "speed_rpm",
+                ),
+                "/duty_cycle/0/time_fraction",
+                "no share",
+            ),
+            (
+                without(
+                    without(
+                        with(&[(
+                            "duty_cycle",
+                            json!([
+                    {"equivalent_load_n": 1000, "speed_rpm": 0, "time_fraction": 1}]),
+                        )]),
+                        "equivalent_load_n",
+                    ),
+                    "speed_rpm",
+                ),
+                "/duty_cycle/0/speed_rpm",
+                "step speed 0",
+            ),
+            (
+                without(
+                    with(&[(
+                        "duty_cycle",
+                        json!([
+                    {"equivalent_load_n": 1000, "speed_rpm": 10, "time_fraction": 1}]),
+                    )]),
+                    "equivalent_load_n",
+                ),
+                "/speed_rpm",
+                "duty cycle with speed",
+            ),
+        ];
+        for (body, pointer, why) in rows {
+            let got = pointers(&body);
+            assert!(
+                got.iter().any(|p| p == pointer),
+                "{why}: expected {pointer}, got {got:?}"
+            );
+        }
+    }
+
+    fn case(kind: BearingKind, c: f64, p: f64, reliability: f64) -> LifeCase {
+        LifeCase {
+            kind,
+            rating_n: c,
+            load_n: p,
+            raised_from_n: None,
+            speed_rpm: 1500.0,
+            duty_steps: 0,
+            reliability_percent: reliability,
+            factor_set: ReliabilityFactorSet::Weibull,
+            weibull_slope: TEXTS_WEIBULL_SLOPE,
+            pitch_diameter_mm: Some(70.0),
+            lubrication: Some(Lubrication {
+                kappa: KappaSource::Viscosity {
+                    viscosity_mm2_s: 20.0,
+                    pitch_diameter_mm: 70.0,
+                },
+                contamination: 0.5,
+                fatigue_load_limit_n: 0.03 * c,
+            }),
+        }
+    }
+
+    fn run(case: &LifeCase) -> LifeOutput {
+        let mut ctx = Context::new(Instant::now() + Duration::from_secs(10), Default::default());
+        life(case, &mut ctx)
+    }
+
+    fn kind_of(roller: bool) -> BearingKind {
+        if roller {
+            BearingKind::Roller
+        } else {
+            BearingKind::Ball
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(256))]
+
+        #[test]
+        fn l10_decreases_with_load(roller in any::<bool>(), c in 1e2f64..1e7, f1 in 1e-5f64..10.0, f2 in 1e-5f64..10.0) {
+            let kind = kind_of(roller);
+            let (lo, hi) = if f1 < f2 { (f1, f2) } else { (f2, f1) };
+            prop_assume!(hi > lo * (1.0 + 1e-9));
+            let a = run(&case(kind, c, c * lo, 90.0));
+            let b = run(&case(kind, c, c * hi, 90.0));
+            prop_assert!(a.l10_million_revolutions > b.l10_million_revolutions);
+            prop_assert!(a.modified_life_hours.unwrap() > b.modified_life_hours.unwrap());
+        }
+
+        #[test]
+        fn a1_decreases_with_reliability(r1 in 1.0f64..99.99, r2 in 1.0f64..99.99, iso in any::<bool>(), slope in 0.1f64..10.0) {
+            prop_assume!((r1 - r2).abs() > 1e-6);
+            let set = if iso { ReliabilityFactorSet::Iso281_2007 } else { ReliabilityFactorSet::Weibull };
+            let (lo, hi) = if r1 < r2 { (r1, r2) } else { (r2, r1) };
+            let (a_lo, a_hi) = (reliability_factor(set, lo, slope), reliability_factor(set, hi, slope));
+            prop_assert!(a_lo > a_hi && a_hi > 0.0 && a_lo.is_finite(), "{a_lo} {a_hi}");
+        }
+
+        #[test]
+        fn a_iso_increases_with_kappa_and_load_ratio(roller in any::<bool>(), k1 in 0.1f64..4.0, k2 in 0.1f64..4.0, x1 in 0.0f64..5.0, x2 in 0.0f64..5.0) {
+            let kind = kind_of(roller);
+            let (klo, khi) = if k1 < k2 { (k1, k2) } else { (k2, k1) };
+            let (xlo, xhi) = if x1 < x2 { (x1, x2) } else { (x2, x1) };
+            let base = a_iso(kind, klo, xlo);
+            prop_assert!(a_iso(kind, khi, xlo) >= base);
+            prop_assert!(a_iso(kind, klo, xhi) >= base);
+            for a in [base, a_iso(kind, khi, xhi)] {
+                prop_assert!(a.is_finite() && (0.09..=A_ISO_CAP).contains(&a), "{a}");
+            }
+        }
+
+        #[test]
+        fn everything_is_finite_over_the_ranges(
+            roller in any::<bool>(), c in 1.0f64..1e12, log_ratio in -6.0f64..6.0,
+            r in 0.01f64..99.99, speed in 1e-6f64..1e7, nu in 1e-3f64..1e6, e_c in 0.0f64..1.0,
+            dm in 1e-3f64..100.0, iso in any::<bool>(),
+        ) {
+            let mut lc = case(kind_of(roller), c, c / 10f64.powf(log_ratio), r);
+            lc.speed_rpm = speed;
+            lc.pitch_diameter_mm = Some(dm * 1e3);
+            lc.factor_set = if iso { ReliabilityFactorSet::Iso281_2007 } else { ReliabilityFactorSet::Weibull };
+            lc.lubrication = Some(Lubrication {
+                kappa: KappaSource::Viscosity { viscosity_mm2_s: nu, pitch_diameter_mm: dm * 1e3 },
+                contamination: e_c,
+                fatigue_load_limit_n: 0.02 * c,
+            });
+            let out = run(&lc);
+            let body = crate::calc::registry::finite_json::to_vec(&out);
+            prop_assert!(body.is_ok(), "{out:?}");
+            prop_assert!(out.l10_hours > 0.0 && out.a1 > 0.0 && out.modified_life_hours.unwrap() > 0.0);
+        }
+    }
+}

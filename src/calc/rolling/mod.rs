@@ -1,0 +1,12 @@
+//! Rolling-element bearings: the kinematics of balls and rollers between two rings (cage and
+//! spin speeds, defect frequencies, entrainment speeds for EHL) and the fatigue life of a
+//! bearing (basic rating life L10, reliability factor a1, ISO 281's life modification factor
+//! a_ISO and the modified life).
+//!
+//! Sources: Hamrock's handbook chapter 21 (kinematics, eqs 21.93–21.98; fatigue life and the
+//! Weibull reliability relation), Khonsari & Booser chapters 13–14 (RB-3…RB-7, RI-7, Ex 13.1–13.4,
+//! the 6210 defect frequencies), and ISO 281:2007 for a_ISO and the rated viscosity ν1 (outside
+//! the texts; each constant cites where it was checked).
+
+pub mod kinematics;
+pub mod life;
