@@ -1,6 +1,8 @@
 //! Oil feed: pressure-fed flow through a hole or axial grooves and the total flow the bearing
 //! draws, by Martin's model (Khonsari & Booser §8.13, Eq. 8.48–8.60, Table 8.8).
 
+use std::f64::consts::PI;
+
 use serde::Deserialize;
 use utoipa::ToSchema;
 
@@ -17,6 +19,9 @@ pub enum FeedKind {
     AxialGroove,
     /// Two axial grooves at ±90° to the load line (`groove_length_m`, `groove_width_m`).
     TwoAxialGrooves,
+    /// A central circumferential groove (`groove_width_m`): each side is a bearing of length
+    /// (L − w_g)/2 carrying half the load (Khonsari & Booser §8.13, Eq. 8.61, 8.62).
+    CircumferentialGroove,
 }
 
 /// Where a single hole or groove sits.
@@ -71,6 +76,34 @@ pub enum Feed {
         length_ratio: f64,
         width_over_diameter: f64,
     },
+    CircumferentialGroove {
+        supply_pressure_pa: f64,
+        width_m: f64,
+    },
+}
+
+impl Feed {
+    pub fn supply_pressure_pa(&self) -> f64 {
+        match *self {
+            Feed::Hole {
+                supply_pressure_pa, ..
+            }
+            | Feed::AxialGroove {
+                supply_pressure_pa, ..
+            }
+            | Feed::TwoAxialGrooves {
+                supply_pressure_pa, ..
+            }
+            | Feed::CircumferentialGroove {
+                supply_pressure_pa, ..
+            } => supply_pressure_pa,
+        }
+    }
+
+    /// A circumferential groove splits the bearing into two halves.
+    pub fn halves(&self) -> bool {
+        matches!(self, Feed::CircumferentialGroove { .. })
+    }
 }
 
 impl FeedSpec {
@@ -136,6 +169,24 @@ impl FeedSpec {
                     width_over_diameter,
                 })
             }
+            FeedKind::CircumferentialGroove => {
+                let Some(wg) = self.groove_width_m else {
+                    return Err(vec![FieldError::new(
+                        "/feed/groove_width_m",
+                        "a circumferential groove needs groove_width_m",
+                    )]);
+                };
+                if wg.get() >= 0.5 * length_m {
+                    return Err(vec![FieldError::new(
+                        "/feed/groove_width_m",
+                        "must be less than half the bearing length (each side keeps a land)",
+                    )]);
+                }
+                Ok(Feed::CircumferentialGroove {
+                    supply_pressure_pa: p_s,
+                    width_m: wg.get(),
+                })
+            }
             FeedKind::TwoAxialGrooves => {
                 let (length_ratio, width_over_diameter) = grooves()?;
                 Ok(Feed::TwoAxialGrooves {
@@ -159,17 +210,32 @@ pub struct Flows {
     pub total: f64,
 }
 
-/// Martin's flows. `leakage` is the film's side leakage (Table 8.6 convention, feed opposite
-/// the load); `mu_inlet` the viscosity at the supply temperature; ε, φ the operating point.
-pub fn flows(
-    feed: Feed,
-    leakage: f64,
-    l_over_d: f64,
-    clearance_m: f64,
-    mu_inlet: f64,
-    eps: f64,
-    attitude: f64,
-) -> Flows {
+/// The operating point the flows are taken at.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct FlowPoint {
+    /// The film's side leakage, m³/s (Table 8.6 convention, feed opposite the load).
+    pub leakage: f64,
+    pub diameter_m: f64,
+    pub l_over_d: f64,
+    pub clearance_m: f64,
+    /// Viscosity at the supply temperature, Pa·s.
+    pub mu_inlet: f64,
+    pub eps: f64,
+    /// Attitude angle, rad.
+    pub attitude: f64,
+}
+
+/// Martin's flows for `feed` at operating point `at`.
+pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
+    let FlowPoint {
+        leakage,
+        diameter_m,
+        l_over_d,
+        clearance_m,
+        mu_inlet,
+        eps,
+        attitude,
+    } = at;
     let c3 = clearance_m.powi(3);
     // Film thickness at the feed, cubed: (h_g/C)³ (Eq. 8.55–8.57).
     let at_load_opposite = (1.0 + eps * attitude.cos()).powi(3);
@@ -229,6 +295,22 @@ pub fn flows(
                 total,
             }
         }
+        Feed::CircumferentialGroove {
+            supply_pressure_pa, ..
+        } => {
+            // Pressure flow out of the groove past each land (Eq. 8.61), l′ the land length
+            // (this half-bearing's length); the hydrodynamic leakage is the half's, whose
+            // inner end faces the groove (Ex 8.5: Q_total = Q_L + 2 Q_c, Eq. 8.62).
+            let land = l_over_d * diameter_m;
+            let per_side =
+                PI * 0.5 * diameter_m * c3 * supply_pressure_pa * (1.0 + 1.5 * eps * eps)
+                    / (6.0 * mu_inlet * land);
+            Flows {
+                leakage,
+                pressure_fed: 2.0 * per_side,
+                total: leakage + 2.0 * per_side,
+            }
+        }
         Feed::TwoAxialGrooves {
             supply_pressure_pa,
             length_ratio,
@@ -276,12 +358,15 @@ mod tests {
         };
         let f = flows(
             feed,
-            15.1e-6,
-            l / d,
-            d / 1600.0,
-            0.03,
-            0.45,
-            59.14f64.to_radians(),
+            FlowPoint {
+                leakage: 15.1e-6,
+                diameter_m: d,
+                l_over_d: l / d,
+                clearance_m: d / 1600.0,
+                mu_inlet: 0.03,
+                eps: 0.45,
+                attitude: 59.14f64.to_radians(),
+            },
         );
         assert!(
             (f.pressure_fed / 3.69e-6 - 1.0).abs() < 0.01,
@@ -307,8 +392,16 @@ mod tests {
             supply_pressure_pa: p,
             hole_over_length: 0.2,
         };
-        let a = flows(feed(1e5), 1e-5, 1.0, 1e-4, 0.02, 0.5, 0.9);
-        let b = flows(feed(3e5), 1e-5, 1.0, 1e-4, 0.02, 0.5, 0.9);
+        let at = FlowPoint {
+            leakage: 1e-5,
+            diameter_m: 0.1,
+            l_over_d: 1.0,
+            clearance_m: 1e-4,
+            mu_inlet: 0.02,
+            eps: 0.5,
+            attitude: 0.9,
+        };
+        let (a, b) = (flows(feed(1e5), at), flows(feed(3e5), at));
         assert!(b.pressure_fed > a.pressure_fed && b.total > a.total);
         assert!(a.total > a.pressure_fed.min(a.leakage));
     }

@@ -173,12 +173,15 @@ impl Case {
             let p = &op.point;
             feed::flows(
                 feed,
-                self.side_leakage(op),
-                g.l_over_d(),
-                g.radial_clearance_m,
-                self.lubricant.viscosity_pa_s(t_in),
-                p.eccentricity_ratio,
-                p.attitude_angle,
+                feed::FlowPoint {
+                    leakage: self.side_leakage(op),
+                    diameter_m: g.diameter_m,
+                    l_over_d: g.l_over_d(),
+                    clearance_m: g.radial_clearance_m,
+                    mu_inlet: self.lubricant.viscosity_pa_s(t_in),
+                    eps: p.eccentricity_ratio,
+                    attitude: p.attitude_angle,
+                },
             )
         })
     }
@@ -191,7 +194,17 @@ impl Case {
             .map_or_else(|| self.side_leakage(op), |f| f.total);
         let t = op.temperature_c;
         let heat = self.lubricant.density_kg_m3(t) * self.lubricant.specific_heat_j_kg_k(t) * q;
-        (q > 0.0 && heat > 0.0).then(|| self.power_loss(op) / heat)
+        (q > 0.0 && heat > 0.0).then(|| self.halves() * self.power_loss(op) / heat)
+    }
+
+    /// 2 when a circumferential groove splits the bearing into halves (each solved as a bearing
+    /// of the land length carrying half the load), else 1.
+    fn halves(&self) -> f64 {
+        if self.feed.is_some_and(|f| f.halves()) {
+            2.0
+        } else {
+            1.0
+        }
     }
 
     /// k in T_e = T_in + k ΔT: 1 (Eq. 8.63, heat to the housing neglected for D > 2 in), ½ for
@@ -299,17 +312,9 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
 
     let power = case.power_loss(&op);
     let flows = case.flows(&op);
-    let supply_pressure = case.feed.map_or(0.0, |f| match f {
-        Feed::Hole {
-            supply_pressure_pa, ..
-        }
-        | Feed::AxialGroove {
-            supply_pressure_pa, ..
-        }
-        | Feed::TwoAxialGrooves {
-            supply_pressure_pa, ..
-        } => supply_pressure_pa,
-    });
+    let supply_pressure = case.feed.map_or(0.0, |f| f.supply_pressure_pa());
+    // A circumferential groove makes two half-bearings: the solve is of one half.
+    let halves = case.halves();
     let friction = point.friction_parameter / g.r_over_c();
     let rise = case.temperature_rise(&op);
     if rise.is_none() {
@@ -324,7 +329,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         None
     };
     let mut output = PlainOutput {
-        load_n: op.load_n,
+        load_n: halves * op.load_n,
         sommerfeld_number: point.sommerfeld_number,
         eccentricity_ratio: point.eccentricity_ratio,
         attitude_angle_deg: point.attitude_angle.to_degrees(),
@@ -335,11 +340,14 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
         friction_coefficient: friction,
         friction_parameter: point.friction_parameter,
-        friction_torque_n_m: friction * op.load_n * 0.5 * g.diameter_m,
-        power_loss_w: power,
+        friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
+        power_loss_w: halves * power,
         side_leakage_m3_s: point.side_leakage_bar * flow_scale,
         side_leakage_dimensionless: point.side_leakage_bar,
-        inlet_flow_m3_s: point.inlet_flow_bar.map(|q| q * flow_scale),
+        inlet_flow_m3_s: point
+            .inlet_flow_bar
+            .filter(|_| halves == 1.0)
+            .map(|q| q * flow_scale),
         temperature_rise_k: rise,
         max_temperature_c: thd.map(|t| t.0),
         shaft_temperature_c: thd.map(|t| t.1),
@@ -367,7 +375,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         stability: None,
     };
     if let Some((coefficients, stability)) = dynamics {
-        let (w, c, omega) = (op.load_n, g.radial_clearance_m, 2.0 * PI * n_s);
+        let (w, c, omega) = (halves * op.load_n, g.radial_clearance_m, 2.0 * PI * n_s);
         let [kxx, kxy, kyx, kyy] = coefficients.stiffness.map(|v| v * w / c);
         let [cxx, cxy, cyx, cyy] = coefficients.damping.map(|v| v * w / (c * omega));
         output.dynamic_coefficients = Some(DynamicCoefficients {
@@ -672,7 +680,10 @@ fn dynamic_coefficients(
     };
     let g = case.geometry;
     let w = op.load_n;
-    let mass = case.rotor_mass_kg.unwrap_or(w / GRAVITY);
+    // Per half-bearing with a circumferential groove: half the rotor on half the load.
+    let mass = case
+        .rotor_mass_kg
+        .map_or(w / GRAVITY, |m| m / case.halves());
     let omega = 2.0 * PI * case.speed_rps();
     let s_op = coefficients.sommerfeld_number;
     let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;

@@ -247,11 +247,30 @@ impl Validate for PlainInput {
                 None
             }
         };
+        // A circumferential groove: each land is a bearing of length (L − w_g)/2 carrying half
+        // the load (Khonsari & Booser Eq. 8.61); the solve is of one land.
+        let (length, operating) = match feed {
+            Some(super::feed::Feed::CircumferentialGroove { width_m, .. }) => {
+                let land = 0.5 * (l - width_m);
+                if land / d < 0.05 {
+                    errors.push(FieldError::new(
+                        "/feed/groove_width_m",
+                        "each land must keep L/D ≥ 0.05",
+                    ));
+                }
+                let half = operating.map(|g| match g {
+                    operating::Given::Load(w) => operating::Given::Load(0.5 * w),
+                    e => e,
+                });
+                (land, half)
+            }
+            _ => (l, operating),
+        };
         match (errors.is_empty(), operating, method, lubricant) {
             (true, Some(given), Some(method), Some(lubricant)) => Ok(Case {
                 geometry: Geometry {
                     diameter_m: d,
-                    length_m: l,
+                    length_m: length,
                     radial_clearance_m: c,
                 },
                 speed_rpm: self.speed_rpm.get(),
@@ -373,7 +392,8 @@ pub struct PlainOutput {
     pub friction_torque_n_m: f64,
     /// Power loss F U, W.
     pub power_loss_w: f64,
-    /// Side leakage from both ends Q_L, m³/s.
+    /// Side leakage from both ends Q_L, m³/s (with a circumferential groove: one land's, as
+    /// Khonsari & Booser Ex 8.5 count the hydrodynamic flow of the whole bearing).
     pub side_leakage_m3_s: f64,
     /// Q_L/((π/2) N_s D L C), dimensionless.
     pub side_leakage_dimensionless: f64,
