@@ -360,3 +360,53 @@ fn turbulent_film_is_decided_reported_and_tends_to_laminar() {
     );
     assert!((a / b - 1.0).abs() < 1e-4, "{a} vs {b}");
 }
+
+/// Misalignment (Khonsari & Booser Eq. 8.70): a vanishing tilt reproduces the aligned bearing on
+/// the whole-length grid; a tilt in the load plane thins the film at an end and raises the peak
+/// pressure while the bearing still carries its load; a tilt that makes the journal touch is
+/// refused with the reason.
+#[test]
+fn misalignment_is_solved_on_the_whole_length() {
+    let bearing = |slope: f64| {
+        json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000.0,
+            "lubricant": {"viscosity_pa_s": 0.02, "density_15c_kg_m3": 870.0},
+            "load_n": 10000.0,
+            "misalignment": {"slope_rad": slope},
+            "fidelity": "fast",
+            "dynamics": false
+        })
+    };
+    let aligned = run(&bearing(0.0)).unwrap();
+    let tiny = run(&bearing(1e-8)).unwrap();
+    let tilted = run(&bearing(5e-4)).unwrap();
+    let (a, t0, t) = (&aligned["result"], &tiny["result"], &tilted["result"]);
+    assert_eq!(aligned["effects"]["misalignment"]["applied"], false);
+    assert_eq!(tilted["effects"]["misalignment"]["applied"], true);
+    for key in [
+        "eccentricity_ratio",
+        "attitude_angle_deg",
+        "max_pressure_pa",
+        "side_leakage_m3_s",
+    ] {
+        assert!(
+            (num(t0, key) / num(a, key) - 1.0).abs() < 2e-3,
+            "{key}: {} vs {}",
+            num(t0, key),
+            num(a, key)
+        );
+    }
+    assert!(num(t, "min_film_thickness_m") < 0.8 * num(a, "min_film_thickness_m"));
+    assert!(num(t, "max_pressure_pa") > num(a, "max_pressure_pa"));
+    assert_eq!(num(t, "load_n"), 10000.0);
+    match run(&bearing(1.5e-3)) {
+        Err(Failure::Calc(stribeck::calc::CalcError::Impossible { pointer, .. })) => {
+            assert!(
+                pointer == "/load_n" || pointer == "/misalignment",
+                "{pointer}"
+            )
+        }
+        other => panic!("a touching journal must be refused, got {other:?}"),
+    }
+}

@@ -44,6 +44,8 @@ pub struct FilmSolution {
     pub inlet_flow_bar: f64,
     /// The film's extent (θ start, θ end).
     pub span: (f64, f64),
+    /// The smallest film thickness h̄_min = h_min/C.
+    pub min_thickness: f64,
     /// (θ, P̄) at the grid nodes of the mid-plane.
     pub midplane: Vec<(f64, f64)>,
     pub solved: Solved,
@@ -85,11 +87,16 @@ pub fn grid(mesh: Mesh, film: &Film) -> Grid {
                 .collect()
         }
     };
+    let symmetric = film.tilt.is_none();
     Grid {
         x,
-        ny: mesh.axial_half,
-        width: 0.5,
-        symmetric: true,
+        ny: if symmetric {
+            mesh.axial_half
+        } else {
+            2 * mesh.axial_half
+        },
+        width: if symmetric { 0.5 } else { 1.0 },
+        symmetric,
     }
 }
 
@@ -107,6 +114,9 @@ pub struct Film {
     pub physics: FilmModel,
     /// The film's extent in θ (from h_max): (start, end); the full circle from h_max when None.
     pub span: Option<(f64, f64)>,
+    /// Misalignment in the film frame: (ε′, direction of the tilt θ_δ from h_max); the film is
+    /// then h̄ = 1 + A cos θ + B sin θ − ε′ (ȳ − ½) cos(θ − θ_δ) over the whole length ȳ ∈ [0, 1].
+    pub tilt: Option<(f64, f64)>,
 }
 
 /// What the film model includes beyond the isoviscous, laminar Reynolds equation.
@@ -121,6 +131,10 @@ pub struct FilmModel {
     /// A partial bearing: its arc, rad, centred on the load line (None: the full 360° bearing,
     /// fed at h_max).
     pub arc: Option<f64>,
+    /// A misaligned journal (Khonsari & Booser Eq. 8.70): ε′ = (difference of the journal-centre
+    /// displacements at the two ends)/C, and the direction of that tilt from the load line in
+    /// the direction of rotation, rad. None: aligned.
+    pub misalignment: Option<(f64, f64)>,
 }
 
 impl FilmModel {
@@ -129,6 +143,7 @@ impl FilmModel {
         cavitation: true,
         turbulence_reynolds: None,
         arc: None,
+        misalignment: None,
     };
 }
 
@@ -158,14 +173,29 @@ impl Film {
             sin_rate: 0.0,
             physics: FilmModel::REYNOLDS,
             span: None,
+            tilt: None,
         }
     }
     fn a(&self) -> f64 {
         self.eccentricity_ratio + self.cos_offset
     }
-    /// h̄(θ).
-    pub fn thickness(&self, theta: f64) -> f64 {
-        1.0 + self.a() * theta.cos() + self.sin_offset * theta.sin()
+    /// h̄(θ, ȳ), ȳ = y/L from one end.
+    pub fn thickness(&self, theta: f64, y: f64) -> f64 {
+        let tilt = self
+            .tilt
+            .map_or(0.0, |(e, dir)| e * (y - 0.5) * (theta - dir).cos());
+        1.0 + self.a() * theta.cos() + self.sin_offset * theta.sin() - tilt
+    }
+
+    /// The smallest h̄ anywhere in the clearance: 1 − |e| of the journal centre at the mid-plane,
+    /// or at the worse end when tilted.
+    pub fn min_thickness(&self) -> f64 {
+        let centre = |y: f64| {
+            let (e, dir) = self.tilt.unwrap_or((0.0, 0.0));
+            let s = e * (y - 0.5);
+            (self.a() - s * dir.cos()).hypot(self.sin_offset - s * dir.sin())
+        };
+        1.0 - centre(0.0).max(centre(1.0))
     }
 }
 
@@ -179,13 +209,13 @@ pub fn solve(
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
     let g = grid(mesh, &film);
-    let thickness = move |theta: f64, _y: f64| film.thickness(theta);
+    let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
     let squeeze = move |theta: f64, _y: f64| {
         12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
     };
     let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
-    let turbulent = move |theta: f64, _y: f64, axis: Axis| {
-        let h = film.thickness(theta);
+    let turbulent = move |theta: f64, y: f64, axis: Axis| {
+        let h = film.thickness(theta, y);
         let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
         h.powi(3) * if axis == Axis::X { gx } else { gy }
     };
@@ -236,12 +266,15 @@ pub fn solve_nested(
 }
 
 fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
-    let h = |theta: f64| film.thickness(theta);
+    let h = |theta: f64, y: f64| film.thickness(theta, y);
     let l_over_d = film.l_over_d;
+    // A symmetric grid holds half the length: its integrals count twice.
+    let halves = if g.symmetric { 2.0 } else { 1.0 };
+    let mid_row = if g.symmetric { g.ny } else { g.ny / 2 };
     let (mut radial, mut tangential) = (0.0, 0.0);
     for j in 0..=g.ny {
         for i in 0..=g.nx() {
-            let w = g.cv_x(i) * g.cv_y(j) * 2.0; // both halves of the length
+            let w = g.cv_x(i) * g.cv_y(j) * halves;
             let v = p[at(g, i, j)];
             radial -= v * g.x[i].cos() * w;
             tangential += v * g.x[i].sin() * w;
@@ -249,13 +282,26 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
     }
 
     // Peak and rupture on the mid-plane row.
-    let mid: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, g.ny)]).collect();
+    let mid: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, mid_row)]).collect();
     let imax = mid
         .iter()
         .enumerate()
         .max_by(|a, b| a.1.total_cmp(b.1))
         .map_or(0, |m| m.0);
-    let (max_pressure_bar, max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
+    let (mut max_pressure_bar, mut max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
+    if !g.symmetric {
+        // A tilted film peaks towards an end: take the row that holds the largest pressure.
+        let (k, _) = p
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))
+            .unwrap_or((0, &0.0));
+        let row_index = k / (g.nx() + 1);
+        if row_index != mid_row {
+            let row: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, row_index)]).collect();
+            (max_pressure_bar, max_pressure_angle) = parabolic_peak(&g.x, &row, k % (g.nx() + 1));
+        }
+    }
     let cavitation_angle = match (imax..=g.nx()).find(|&i| mid[i] <= 0.0) {
         Some(k) if k > imax && k < g.nx() && mid[k - 1] > 0.0 => {
             // Near rupture p ~ (θc − θ)²: √p is linear; extrapolate it to zero.
@@ -274,19 +320,27 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         None => g.x[g.nx()],
     };
 
-    // Side leakage: h³ ∂P/∂ȳ at the edge ȳ = 0 (second-order one-sided), both ends.
+    // Side leakage: h³ |∂P/∂ȳ| at the ends (second-order one-sided), both ends.
     let dy = g.dy();
-    let mut edge = 0.0;
-    for i in 1..g.nx() {
-        let (p1, p2) = (p[at(g, i, 1)], p[at(g, i, 2.min(g.ny))]);
-        let dpdy = if g.ny >= 2 {
-            (4.0 * p1 - p2) / (2.0 * dy)
-        } else {
-            p1 / dy
-        };
-        edge += h(g.x[i]).powi(3) * dpdy * g.cv_x(i);
-    }
-    let side_leakage_bar = 2.0 * edge / (48.0 * PI * l_over_d * l_over_d);
+    let edge_flow = |row1: usize, row2: usize, y_edge: f64| {
+        let mut flow = 0.0;
+        for i in 1..g.nx() {
+            let (p1, p2) = (p[at(g, i, row1)], p[at(g, i, row2)]);
+            let dpdy = if g.ny >= 2 {
+                (4.0 * p1 - p2) / (2.0 * dy)
+            } else {
+                p1 / dy
+            };
+            flow += h(g.x[i], y_edge).powi(3) * dpdy * g.cv_x(i);
+        }
+        flow
+    };
+    let edges = if g.symmetric {
+        2.0 * edge_flow(1, 2.min(g.ny), 0.0)
+    } else {
+        edge_flow(1, 2, 0.0) + edge_flow(g.ny - 1, g.ny - 2, 1.0)
+    };
+    let side_leakage_bar = edges / (48.0 * PI * l_over_d * l_over_d);
 
     // Inlet flow at θ = 0: ∫ [h̄ − h̄³ ∂θP̄/(12π)] dȳ, second-order one-sided derivative.
     let (d1, d2) = (g.x[1] - g.x[0], g.x[2] - g.x[1]);
@@ -294,8 +348,8 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
     for j in 0..=g.ny {
         let (p1, p2) = (p[at(g, 1, j)], p[at(g, 2, j)]);
         let dpdt = (d1 + d2) / (d1 * d2) * p1 - d1 / (d2 * (d1 + d2)) * p2;
-        let h0 = h(g.x[0]);
-        inlet += (h0 - h0.powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * 2.0;
+        let h0 = h(g.x[0], g.y(j));
+        inlet += (h0 - h0.powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * halves;
     }
 
     FilmSolution {
@@ -307,6 +361,7 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         side_leakage_bar,
         inlet_flow_bar: inlet,
         span: (g.x[0], g.x[g.nx()]),
+        min_thickness: film.min_thickness(),
         midplane: g.x.iter().cloned().zip(mid.iter().cloned()).collect(),
         solved,
     }

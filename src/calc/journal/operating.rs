@@ -57,6 +57,8 @@ pub struct Case {
     pub feed: Option<Feed>,
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
+    /// (ε′, direction of the tilt from the load line, rad); None when aligned.
+    pub misalignment: Option<(f64, f64)>,
     pub rotor_mass_kg: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
@@ -107,6 +109,7 @@ impl Case {
             cavitation: self.cavitation(),
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
+            misalignment: self.misalignment,
         }
     }
 
@@ -302,10 +305,18 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     ctx.decide("cavitation", cavitation);
     ctx.decide(
         "misalignment",
-        Decision::not_applicable(
-            Mode::Auto,
-            "the request gives no misalignment: journal aligned",
-        ),
+        match case.misalignment {
+            None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
+            Some((e, dir)) => Decision {
+                applied: true,
+                mode: Mode::On,
+                reason: format!(
+                    "journal tilted {:.1}° from the load line: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
+                    dir.to_degrees()
+                ),
+                criterion: None,
+            },
+        },
     );
 
     validity_warnings(ctx, case, point);
@@ -333,7 +344,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         sommerfeld_number: point.sommerfeld_number,
         eccentricity_ratio: point.eccentricity_ratio,
         attitude_angle_deg: point.attitude_angle.to_degrees(),
-        min_film_thickness_m: g.radial_clearance_m * (1.0 - point.eccentricity_ratio),
+        min_film_thickness_m: g.radial_clearance_m * point.min_film_bar,
         max_pressure_pa: point.max_pressure_bar * pressure_scale + supply_pressure,
         max_pressure_dimensionless: point.max_pressure_bar,
         max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),

@@ -110,19 +110,28 @@ pub fn positioned_film(
         physics: model,
         ..Film::steady(eps, l_over_d)
     };
-    let Some(arc) = model.arc else {
+    if model.arc.is_none() && model.misalignment.is_none() {
         let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
         return Ok((base, f, p));
-    };
-    // In the film frame the load line sits at θ = π − φ; the arc is centred on it.
+    }
+    // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
+    // misalignment's direction is measured from it.
     let place = |phi: f64| Film {
-        span: Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+        span: model
+            .arc
+            .map(|arc| (PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+        tilt: model.misalignment.map(|(e, dir)| (e, PI - phi + dir)),
         ..base
     };
     let mut warm = warm;
     let mut failure = None;
     let mut mismatch = |phi: f64| -> f64 {
-        match film::solve(place(phi), mesh, stop, warm.take(), keep_going) {
+        let film = place(phi);
+        if film.min_thickness() <= TOUCHING {
+            failure.get_or_insert(touching(eps));
+            return f64::NAN;
+        }
+        match film::solve(film, mesh, stop, warm.take(), keep_going) {
             Ok((f, p)) => {
                 warm = Some(p);
                 // The load is −F; its signed angle from the load line's direction.
@@ -149,15 +158,36 @@ pub fn positioned_film(
     let phi = match root {
         Ok(r) => r.x,
         Err(RootError::NotConverged { iterations, width }) => {
-            return Err(CalcError::NotConverged { method: "brent_attitude", iterations, residual: width })
+            return Err(CalcError::NotConverged {
+                method: "brent_attitude",
+                iterations,
+                residual: width,
+            })
         }
         Err(_) => {
-            return Err(CalcError::impossible("/arc_deg", "no attitude angle puts the film force on the load line of this arc at this eccentricity"))
+            return Err(CalcError::impossible(
+                if model.arc.is_some() {
+                    "/arc_deg"
+                } else {
+                    "/misalignment"
+                },
+                "no attitude angle puts the film force on the load line at this eccentricity",
+            ))
         }
     };
     let film = place(phi);
     let (f, p) = film::solve(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
     Ok((film, f, p))
+}
+
+/// Smallest film (h_min/C) a misaligned journal may reach before it counts as touching.
+const TOUCHING: f64 = 1e-3;
+
+fn touching(eps: f64) -> CalcError {
+    CalcError::impossible(
+        "/misalignment",
+        format!("at ε = {eps:.4} the misaligned journal touches the bearing at an end (h_min below 0.1 % of C): reduce the misalignment or the load"),
+    )
 }
 
 /// One operating point, dimensionless (Table 8.6 conventions).
@@ -172,6 +202,8 @@ pub struct Point {
     pub cavitation_angle: Option<f64>,
     pub side_leakage_bar: f64,
     pub inlet_flow_bar: Option<f64>,
+    /// h_min/C (at an end when misaligned).
+    pub min_film_bar: f64,
     /// (θ, P̄) along the mid-plane, numerical solutions only.
     pub midplane: Option<Vec<(f64, f64)>>,
     /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
@@ -245,6 +277,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         cavitation_angle: physics.cavitation.then_some(f.cavitation_angle),
         side_leakage_bar: f.side_leakage_bar,
         inlet_flow_bar: Some(f.inlet_flow_bar),
+        min_film_bar: f.min_thickness,
         midplane: Some(f.midplane.clone()),
         sweeps: f.solved.sweeps,
         residual: Some(f.solved.residual),
@@ -281,8 +314,9 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
-            let (fine, coarse) = match physics.arc {
-                None => {
+            let load_fixed = physics.arc.is_some() || physics.misalignment.is_some();
+            let (fine, coarse) = match load_fixed {
+                false => {
                     let film = Film {
                         physics,
                         ..Film::steady(eps, l_over_d)
@@ -291,7 +325,7 @@ fn at_eccentricity_from(
                         .map_err(solve_error)?;
                     (fine, coarse)
                 }
-                Some(_) => {
+                true => {
                     let half = Mesh {
                         circumferential: mesh.circumferential / 2,
                         axial_half: (mesh.axial_half / 2).max(2),
@@ -359,6 +393,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         cavitation_angle: p.cavitation_angle_rad,
         side_leakage_bar: p.side_leakage_bar,
         inlet_flow_bar: None,
+        min_film_bar: 1.0 - eps,
         midplane: None,
         sweeps: 0,
         residual: None,
@@ -424,6 +459,13 @@ pub fn equilibrium(
         _ => None,
     });
     let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, keep_going)?;
+    // A root at the edge where a misaligned journal starts to touch carries less than asked.
+    if (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
+        return Err(CalcError::impossible(
+            "/load_n",
+            "the load exceeds what the bearing carries before the journal touches it",
+        ));
+    }
     Ok((point, evaluations))
 }
 
@@ -466,7 +508,7 @@ impl Searcher<'_> {
             }
             Method::Numerical { mesh, stop, .. } => {
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
-                let (_, f, p) = positioned_film(
+                match positioned_film(
                     eps,
                     self.l_over_d,
                     self.physics,
@@ -474,9 +516,17 @@ impl Searcher<'_> {
                     stop,
                     start,
                     keep_going,
-                )?;
-                self.warm = Some((mesh, p));
-                f.sommerfeld_number()
+                ) {
+                    Ok((_, f, p)) => {
+                        self.warm = Some((mesh, p));
+                        f.sommerfeld_number()
+                    }
+                    // A misaligned journal touching at an end carries any load: S → 0.
+                    Err(CalcError::Impossible { pointer, .. }) if pointer == "/misalignment" => {
+                        return Ok(-50.0)
+                    }
+                    Err(e) => return Err(e),
+                }
             }
         };
         Ok(s.ln() - self.s_target.ln())

@@ -92,6 +92,8 @@ pub struct PlainInput {
     /// where the film force lies on the load line.
     #[schema(minimum = 30.0, maximum = 360.0, example = 360.0)]
     pub arc_deg: Option<f64>,
+    /// Journal misalignment: the shaft's slope in the bearing and the plane it tilts in.
+    pub misalignment: Option<MisalignmentSpec>,
     /// Oil feed: a hole or axial grooves with their supply pressure. Gives the pressure-fed and
     /// total flows (Martin's model) and puts the total flow in the heat balance; absent, the
     /// side leakage carries the heat (Table 8.6's ΔT).
@@ -231,6 +233,44 @@ impl Validate for PlainInput {
         if arc.is_some() && self.feed.is_some() {
             errors.push(FieldError::new("/feed", "Martin's feed-flow model is for the full 360° bearing; a partial arc is fed at its edges"));
         }
+        let misalignment = match self.misalignment {
+            None => None,
+            Some(m) => {
+                let tilt = m.slope_rad.get() * l / c;
+                if m.slope_rad.get() > 0.01 {
+                    errors.push(FieldError::new(
+                        "/misalignment/slope_rad",
+                        "must be within [0, 0.01] rad",
+                    ));
+                }
+                if !(-180.0..=180.0).contains(&m.direction_deg) {
+                    errors.push(FieldError::new(
+                        "/misalignment/direction_deg",
+                        "must be within [-180, 180] degrees",
+                    ));
+                }
+                if tilt >= 1.9 {
+                    errors.push(FieldError::new(
+                        "/misalignment/slope_rad",
+                        format!("the ends of the journal move {tilt:.3} C apart: it would touch the bearing even when centred"),
+                    ));
+                }
+                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm)) {
+                    errors.push(FieldError::new(
+                        "/misalignment",
+                        "the closed forms are for an aligned journal; use a numerical fidelity",
+                    ));
+                }
+                (tilt > 0.0).then_some((tilt, m.direction_deg.to_radians()))
+            }
+        };
+        if misalignment.is_some()
+            && self
+                .feed
+                .is_some_and(|f| f.kind == super::feed::FeedKind::CircumferentialGroove)
+        {
+            errors.push(FieldError::new("/misalignment", "a misaligned bearing with a circumferential groove is not modelled (the two lands tilt differently)"));
+        }
         let feed = match self.feed.map(|f| f.parse(l, d)) {
             Some(Ok(f)) => Some(f),
             Some(Err(mut e)) => {
@@ -279,6 +319,7 @@ impl Validate for PlainInput {
                 inlet_temperature_c: self.inlet_temperature_c.map(Celsius::get),
                 feed,
                 arc,
+                misalignment,
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
                 method,
                 effects: self.effects,
@@ -298,6 +339,21 @@ pub struct ProfilePoint {
     pub angle_deg: f64,
     /// Film pressure above the feed pressure, Pa.
     pub pressure_pa: f64,
+}
+
+/// A tilted journal (Khonsari & Booser Eq. 8.70).
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct MisalignmentSpec {
+    /// Slope of the journal axis relative to the bearing axis, rad (0 … 0.01; the text's rule of
+    /// thumb for shaft deflection is 0.002 over half the bearing length).
+    #[schema(value_type = f64, minimum = 0.0, maximum = 0.01, example = 0.0005)]
+    pub slope_rad: crate::calc::quantity::NonNegative,
+    /// Direction of the tilt: the plane it lies in, from the load line in the direction of
+    /// rotation, degrees (−180 … 180; default 0, tilt in the load plane as a shaft bends under it).
+    #[serde(default)]
+    #[schema(minimum = -180.0, maximum = 180.0, example = 0.0)]
+    pub direction_deg: f64,
 }
 
 /// Stiffness and damping of the film.
@@ -376,7 +432,7 @@ pub struct PlainOutput {
     pub max_pressure_pa: f64,
     /// P̄_max = p_max (C/R)²/(μ N_s), dimensionless (Table 8.6 convention).
     pub max_pressure_dimensionless: f64,
-    /// Angle of the peak from h_max, degrees.
+    /// Angle of the peak from h_max (of the mid-plane when misaligned), degrees.
     pub max_pressure_angle_deg: f64,
     /// Film rupture angle from h_max (mid-plane), degrees; absent for a full film.
     #[serde(skip_serializing_if = "Option::is_none")]
