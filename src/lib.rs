@@ -11,3 +11,4 @@ pub mod fidelity;
 pub mod http;
 pub mod numerics;
 pub mod telemetry;
+pub mod validation;

@@ -39,6 +39,12 @@ enum Command {
     Openapi,
     /// List the calculations.
     List,
+    /// Run every reference case below DIR and print the validation dossier (Markdown); exit 1
+    /// when any value is outside its tolerance.
+    Validation {
+        #[arg(default_value = "tests/data")]
+        dir: std::path::PathBuf,
+    },
 }
 
 fn main() -> ExitCode {
@@ -57,6 +63,20 @@ fn main() -> ExitCode {
             print!("{}", http::openapi::document_json());
             ExitCode::SUCCESS
         }
+        Command::Validation { dir } => match stribeck::validation::report(&dir) {
+            Ok((text, failures)) => {
+                print!("{text}");
+                if failures == 0 {
+                    ExitCode::SUCCESS
+                } else {
+                    ExitCode::from(1)
+                }
+            }
+            Err(e) => {
+                eprintln!("stribeck: validation: {e}");
+                ExitCode::from(2)
+            }
+        },
         Command::List => {
             for e in calc::REGISTRY {
                 println!("POST {:40} {}", e.path, e.summary);

@@ -1,7 +1,5 @@
 //! Spawn the real service on 127.0.0.1:0 and talk to it over HTTP.
 
-use std::path::{Path, PathBuf};
-
 use serde_json::Value;
 use stribeck::calc::Entry;
 use stribeck::config::Config;
@@ -135,27 +133,6 @@ impl Reply {
             })
             .unwrap_or_default()
     }
-}
-
-/// Every reference case under tests/data.
-pub fn case_files() -> Vec<PathBuf> {
-    fn walk(dir: &Path, out: &mut Vec<PathBuf>) {
-        for entry in std::fs::read_dir(dir).unwrap() {
-            let path = entry.unwrap().path();
-            if path.is_dir() {
-                walk(&path, out);
-            } else if path.extension().is_some_and(|e| e == "json") {
-                out.push(path);
-            }
-        }
-    }
-    let mut out = Vec::new();
-    walk(
-        &Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data"),
-        &mut out,
-    );
-    out.sort();
-    out
 }
 
 /// Every number in a JSON value is finite, and no value is null.

@@ -1,37 +1,18 @@
-//! Reference cases from tests/data: request, expected values addressed by JSON pointer, tolerance
-//! and source. A case from a text whose printed value is a misprint uses the spec's corrected
-//! value and says so in its `source`.
+//! Reference cases from tests/data over HTTP: request, expected values addressed by JSON
+//! pointer, tolerance and source (the format of `stribeck::validation`, which also renders them
+//! as docs/validation.md). A case from a text whose printed value is a misprint uses the spec's
+//! corrected value and says so in its `source`.
 
-use serde::Deserialize;
 use serde_json::Value;
+use stribeck::validation::{case_files, Case};
 
-use crate::helpers::{assert_all_finite, case_files, spawn_app};
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Case {
-    source: String,
-    path: String,
-    request: Value,
-    expected: Vec<Expected>,
-}
-
-#[derive(Deserialize)]
-#[serde(deny_unknown_fields)]
-struct Expected {
-    /// JSON pointer into the response, e.g. `/result/points/0/density_kg_m3`.
-    pointer: String,
-    value: f64,
-    #[serde(default)]
-    rel_tol: Option<f64>,
-    #[serde(default)]
-    abs_tol: Option<f64>,
-}
+use crate::helpers::{assert_all_finite, spawn_app};
 
 #[tokio::test]
 async fn every_reference_case_matches_its_source() {
     let app = spawn_app().await;
-    let files = case_files();
+    let files =
+        case_files(&std::path::Path::new(env!("CARGO_MANIFEST_DIR")).join("tests/data")).unwrap();
     assert!(
         files.len() >= 10,
         "expected the reference cases under tests/data, found {}",
@@ -50,12 +31,7 @@ async fn every_reference_case_matches_its_source() {
                 .pointer(&want.pointer)
                 .and_then(Value::as_f64)
                 .unwrap_or(f64::NAN);
-            let ok = match (want.rel_tol, want.abs_tol) {
-                (Some(rel), _) => ((got - want.value) / want.value).abs() <= rel,
-                (None, Some(abs)) => (got - want.value).abs() <= abs,
-                (None, None) => got == want.value,
-            };
-            if !ok {
+            if !want.holds(got) {
                 failures.push(format!(
                     "{} {}: got {got}, want {} (rel {:?}, abs {:?}) — {}",
                     file.file_name().unwrap().to_string_lossy(),
