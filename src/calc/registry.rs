@@ -27,6 +27,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<contact::ehl_film::EhlFilm>(),
     Entry::of::<rolling::kinematics::Kinematics>(),
     Entry::of::<rolling::life::Life>(),
+    Entry::of::<rolling::load_distribution::LoadDistribution>(),
 ];
 
 /// The calculation registered at `path`.
