@@ -132,6 +132,12 @@ impl Validate for KinematicsInput {
                 ));
             }
         }
+        if d < 1e-3 * dm || dm < 1e-4 {
+            errors.push(FieldError::new(
+                "/ball_diameter_m",
+                format!("D/d_m must be at least 1e-3 and d_m at least 0.1 mm (real bearings: D/d_m ≈ 0.1–0.35), got D = {d} m, d_m = {dm} m"),
+            ));
+        }
         if d >= dm {
             errors.push(FieldError::new(
                 "/ball_diameter_m",
@@ -575,6 +581,13 @@ mod tests {
                 with("inner_ring_sped_rpm", json!(1.0)),
                 "/inner_ring_sped_rpm",
                 "typo",
+            ),
+            (
+                // Regression (schemathesis, CI): a denormal ball diameter gave a non-finite
+                // result and a 500.
+                with("ball_diameter_m", json!(5e-324)),
+                "/ball_diameter_m",
+                "D/d_m vanishing",
             ),
         ];
         for (body, pointer, why) in rows {
