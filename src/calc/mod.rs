@@ -9,6 +9,8 @@ pub mod rolling;
 
 mod context;
 mod registry;
+#[cfg(test)]
+pub(crate) mod testing;
 
 pub use context::{Budget, CalcError, Context, Warning};
 pub use registry::{execute, find, Entry, Envelope, Executed, Failure, FieldError, REGISTRY};

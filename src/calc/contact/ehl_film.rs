@@ -1156,26 +1156,19 @@ fn mixed_lubrication(case: &EhlCase, lambda: Option<f64>, ctx: &mut Context) {
 
 #[cfg(test)]
 mod tests {
-    use std::time::{Duration, Instant};
 
     use proptest::prelude::*;
     use serde_json::{json, Value};
 
     use super::*;
-    use crate::calc::{execute, Failure};
+    use crate::calc::Failure;
 
     fn post(request: &Value) -> Result<Value, Failure> {
-        let body = serde_json::to_vec(request).unwrap();
-        let deadline = Instant::now() + Duration::from_secs(10);
-        execute::<EhlFilm>(&body, deadline, Default::default())
-            .map(|done| serde_json::from_slice(&done.body).unwrap())
+        crate::calc::testing::post::<EhlFilm>(request)
     }
 
     fn ok(request: &Value) -> Value {
-        match post(request) {
-            Ok(v) => v,
-            Err(e) => panic!("{request}: {e:?}"),
-        }
+        crate::calc::testing::ok::<EhlFilm>(request)
     }
 
     fn get(v: &Value, pointer: &str) -> f64 {

@@ -976,24 +976,17 @@ fn maximise_in_depth(f: impl Fn(f64) -> [f64; 2]) -> [(f64, f64); 2] {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::calc::{execute, Failure};
+    use crate::calc::Failure;
     use proptest::prelude::*;
     use serde_json::{json, Value};
-    use std::time::{Duration, Instant};
 
     /// The whole path: parse, validate, run, serialise.
     fn post(request: &Value) -> Result<Value, Failure> {
-        let body = serde_json::to_vec(request).unwrap();
-        let deadline = Instant::now() + Duration::from_secs(10);
-        execute::<Hertz>(&body, deadline, Default::default())
-            .map(|done| serde_json::from_slice(&done.body).unwrap())
+        crate::calc::testing::post::<Hertz>(request)
     }
 
     fn ok(request: &Value) -> Value {
-        match post(request) {
-            Ok(v) => v,
-            Err(e) => panic!("{request}: {e:?}"),
-        }
+        crate::calc::testing::ok::<Hertz>(request)
     }
 
     fn pointers(request: &Value) -> Vec<String> {

@@ -318,20 +318,16 @@ fn kinematics(case: &KinematicsCase) -> KinematicsOutput {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::calc::{execute, Failure};
+    use crate::calc::Failure;
     use proptest::prelude::*;
     use serde_json::{json, Value};
-    use std::time::{Duration, Instant};
 
     fn post(request: &Value) -> Result<Value, Failure> {
-        let body = serde_json::to_vec(request).unwrap();
-        let deadline = Instant::now() + Duration::from_secs(10);
-        execute::<Kinematics>(&body, deadline, Default::default())
-            .map(|out| serde_json::from_slice(&out.body).unwrap())
+        crate::calc::testing::post::<Kinematics>(request)
     }
 
     fn ok(request: &Value) -> Value {
-        post(request).unwrap_or_else(|e| panic!("{request}: {e:?}"))
+        crate::calc::testing::ok::<Kinematics>(request)
     }
 
     fn pointers(request: &Value) -> Vec<String> {

@@ -745,23 +745,16 @@ fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::calc::{execute, Failure};
+    use crate::calc::Failure;
     use proptest::prelude::*;
     use serde_json::{json, Value};
-    use std::time::{Duration, Instant};
 
     fn post(request: &Value) -> Result<Value, Failure> {
-        let body = serde_json::to_vec(request).unwrap();
-        let deadline = Instant::now() + Duration::from_secs(20);
-        execute::<LoadDistribution>(&body, deadline, Default::default())
-            .map(|done| serde_json::from_slice(&done.body).unwrap())
+        crate::calc::testing::post::<LoadDistribution>(request)
     }
 
     fn ok(request: &Value) -> Value {
-        match post(request) {
-            Ok(v) => v,
-            Err(e) => panic!("{request}: {e:?}"),
-        }
+        crate::calc::testing::ok::<LoadDistribution>(request)
     }
 
     fn get(v: &Value, pointer: &str) -> f64 {
