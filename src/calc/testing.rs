@@ -19,3 +19,26 @@ pub fn post<C: Calculation>(request: &Value) -> Result<Value, Failure> {
 pub fn ok<C: Calculation>(request: &Value) -> Value {
     post::<C>(request).unwrap_or_else(|e| panic!("{request}: {e:?}"))
 }
+
+/// The JSON pointers of a request that must be refused as invalid (422).
+pub fn invalid_pointers<C: Calculation>(request: &Value) -> Vec<String> {
+    match post::<C>(request) {
+        Err(Failure::Invalid(errors)) => errors.into_iter().map(|e| e.pointer).collect(),
+        other => panic!("{request}: expected 422, got {other:?}"),
+    }
+}
+
+/// `result.<field>` of an envelope.
+pub fn result_field(v: &Value, field: &str) -> f64 {
+    v["result"][field]
+        .as_f64()
+        .unwrap_or_else(|| panic!("{field} missing in {v}"))
+}
+
+/// |got/want − 1| ≤ rel.
+pub fn assert_rel(got: f64, want: f64, rel: f64, what: &str) {
+    assert!(
+        ((got - want) / want).abs() <= rel,
+        "{what}: got {got}, want {want} ±{rel}"
+    );
+}

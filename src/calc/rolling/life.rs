@@ -922,38 +922,20 @@ fn life(case: &LifeCase, ctx: &mut Context) -> LifeOutput {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::calc::Failure;
+
     use proptest::prelude::*;
     use serde_json::{json, Value};
     use std::time::{Duration, Instant};
-
-    fn post(request: &Value) -> Result<Value, Failure> {
-        crate::calc::testing::post::<Life>(request)
-    }
 
     fn ok(request: &Value) -> Value {
         crate::calc::testing::ok::<Life>(request)
     }
 
     fn pointers(request: &Value) -> Vec<String> {
-        match post(request) {
-            Err(Failure::Invalid(errors)) => errors.into_iter().map(|e| e.pointer).collect(),
-            other => panic!("{request}: expected 422, got {other:?}"),
-        }
+        crate::calc::testing::invalid_pointers::<Life>(request)
     }
 
-    fn get(v: &Value, field: &str) -> f64 {
-        v["result"][field]
-            .as_f64()
-            .unwrap_or_else(|| panic!("{field} missing in {v}"))
-    }
-
-    fn assert_rel(got: f64, want: f64, rel: f64, what: &str) {
-        assert!(
-            ((got - want) / want).abs() <= rel,
-            "{what}: got {got}, want {want} ±{rel}"
-        );
-    }
+    use crate::calc::testing::{assert_rel, result_field as get};
 
     fn codes(v: &Value) -> Vec<String> {
         v["warnings"]
