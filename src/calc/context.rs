@@ -94,6 +94,12 @@ impl Context {
         }
     }
 
+    /// A context for one step of a composed calculation: the same deadline, its own decisions,
+    /// warnings and report.
+    pub fn child(&self) -> Context {
+        Context::new(self.deadline, self.cancelled.clone())
+    }
+
     /// Record the decision on one effect.
     pub fn decide(&mut self, effect: &'static str, decision: Decision) {
         self.effects.insert(effect, decision);

@@ -13,7 +13,9 @@ mod registry;
 pub(crate) mod testing;
 
 pub use context::{Budget, CalcError, Context, Warning};
-pub use registry::{execute, find, Entry, Envelope, Executed, Failure, FieldError, REGISTRY};
+pub use registry::{
+    execute, find, validate_value, Entry, Envelope, Executed, Failure, FieldError, REGISTRY,
+};
 
 use serde::de::DeserializeOwned;
 use serde::Serialize;

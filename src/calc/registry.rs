@@ -28,6 +28,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::kinematics::Kinematics>(),
     Entry::of::<rolling::life::Life>(),
     Entry::of::<rolling::load_distribution::LoadDistribution>(),
+    Entry::of::<rolling::analysis::Analysis>(),
 ];
 
 /// The calculation registered at `path`.
@@ -177,6 +178,21 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
             }
         }
     }
+}
+
+/// Parse and validate a request held as a JSON value: how a room that composes others (the
+/// rolling-bearing analysis) hands each step its own request. Pointers are the sub-request's.
+pub fn validate_value<C: Calculation>(
+    value: serde_json::Value,
+) -> Result<<C::Input as Validate>::Valid, Vec<FieldError>> {
+    let input: C::Input = serde_path_to_error::deserialize(value).map_err(|err| {
+        let message = strip_location(&err.inner().to_string());
+        vec![FieldError {
+            pointer: pointer_of(err.path(), &message),
+            message,
+        }]
+    })?;
+    input.validate()
 }
 
 /// serde_json appends " at line L column C"; the pointer says where, so drop it.

@@ -8,6 +8,7 @@
 //! the 6210 defect frequencies), and ISO 281:2007 for a_ISO and the rated viscosity ν1 (outside
 //! the texts; each constant cites where it was checked).
 
+pub mod analysis;
 pub mod geometry;
 pub mod kinematics;
 pub mod life;

@@ -1,0 +1,487 @@
+//! `POST /v1/rolling-bearings/analysis`: the whole chain for one operating point of a ball
+//! bearing — internal load distribution → Hertz at both raceways of the most loaded ball →
+//! kinematics and entrainment speeds → EHL film and Λ at both raceways → κ and the modified
+//! life — each step by the room that also answers it alone, so the numbers are theirs.
+
+use serde::{Deserialize, Serialize};
+use serde_json::{json, Value};
+use utoipa::ToSchema;
+
+use super::geometry::BallBearingSpec;
+use super::kinematics::{Kinematics, KinematicsOutput};
+use super::life::{Life, LifeOutput};
+use super::load_distribution::{LoadDistribution, LoadDistributionOutput};
+use crate::calc::contact::ehl_film::{EhlFilm, EhlFilmOutput};
+use crate::calc::lubricant::LubricantSpec;
+use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::{validate_value, CalcError, Calculation, Context, FieldError, Validate};
+use crate::effects::Decision;
+use crate::fidelity::Level;
+
+pub struct Analysis;
+
+/// RMS roughness of the ball and the two raceways.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RaceRoughness {
+    /// Ball R_q, m (0 … 1e-5).
+    #[schema(value_type = f64, minimum = 0.0, maximum = 1e-5, example = 6.25e-8)]
+    pub ball_rms_m: NonNegative,
+    /// Inner raceway R_q, m (0 … 1e-5).
+    #[schema(value_type = f64, minimum = 0.0, maximum = 1e-5, example = 1.75e-7)]
+    pub inner_race_rms_m: NonNegative,
+    /// Outer raceway R_q, m (0 … 1e-5).
+    #[schema(value_type = f64, minimum = 0.0, maximum = 1e-5, example = 1.75e-7)]
+    pub outer_race_rms_m: NonNegative,
+}
+
+/// Request: a ball bearing at one operating point.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct AnalysisInput {
+    /// The bearing (as for `/v1/rolling-bearings/load-distribution`).
+    #[schema(value_type = BallBearingSpec)]
+    pub bearing: Value,
+    /// Radial load F_r, N (≥ 0).
+    #[schema(value_type = f64, minimum = 0.0, example = 8900.0)]
+    pub radial_load_n: NonNegative,
+    /// Axial load F_a, N (≥ 0; default 0).
+    #[schema(value_type = Option<f64>, minimum = 0.0, example = 0.0)]
+    pub axial_load_n: Option<NonNegative>,
+    /// Inner-ring speed, rev/min (signed, |n| ≤ 1e6).
+    #[schema(minimum = -1e6, maximum = 1e6, example = 2000.0)]
+    pub inner_ring_speed_rpm: f64,
+    /// Outer-ring speed, rev/min (signed, |n| ≤ 1e6; default 0).
+    #[schema(minimum = -1e6, maximum = 1e6, example = 0.0)]
+    pub outer_ring_speed_rpm: Option<f64>,
+    /// The lubricant, with a pressure–viscosity law (for the EHL films).
+    #[schema(value_type = LubricantSpec)]
+    pub lubricant: Value,
+    /// Operating temperature of the oil in the contacts, °C.
+    #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 70.0)]
+    pub temperature_c: Celsius,
+    /// Basic dynamic load rating C, N (catalogue).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 35700.0)]
+    pub dynamic_load_rating_n: Positive,
+    /// Equivalent dynamic load P, N; default F_r when F_a = 0, else give it (or X and Y).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 8900.0)]
+    pub equivalent_load_n: Option<Positive>,
+    /// Radial factor X for P = X F_r + Y F_a (with `y_factor`).
+    #[schema(value_type = Option<f64>, minimum = 0.0, example = 0.56)]
+    pub x_factor: Option<NonNegative>,
+    /// Axial factor Y for P = X F_r + Y F_a (with `x_factor`).
+    #[schema(value_type = Option<f64>, minimum = 0.0, example = 1.5)]
+    pub y_factor: Option<NonNegative>,
+    /// Reliability, % (default 90).
+    #[schema(minimum = 0.0, maximum = 100.0, example = 90.0)]
+    pub reliability_percent: Option<f64>,
+    /// Contamination factor e_C (0 … 1), with `fatigue_load_limit_n`, for ISO 281's a_ISO.
+    #[schema(minimum = 0.0, maximum = 1.0, example = 0.5)]
+    pub contamination_factor: Option<f64>,
+    /// Fatigue load limit C_u, N, with `contamination_factor`.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
+    pub fatigue_load_limit_n: Option<Positive>,
+    pub roughness: Option<RaceRoughness>,
+}
+
+/// The validated chain: the requests of the steps that need no earlier result, and what the
+/// later steps are built from.
+#[derive(Debug, Clone)]
+pub struct AnalysisCase {
+    load_distribution: <<LoadDistribution as Calculation>::Input as Validate>::Valid,
+    life_request: Value,
+    bearing: Value,
+    lubricant: Value,
+    temperature_c: f64,
+    inner_rpm: f64,
+    outer_rpm: f64,
+    roughness: Option<RaceRoughness>,
+    kinematic_viscosity_mm2_s: f64,
+}
+
+impl Validate for AnalysisInput {
+    type Valid = AnalysisCase;
+    fn validate(self) -> Result<AnalysisCase, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let (f_r, f_a) = (
+            self.radial_load_n.get(),
+            self.axial_load_n.map_or(0.0, NonNegative::get),
+        );
+        let outer_rpm = self.outer_ring_speed_rpm.unwrap_or(0.0);
+        for (v, p) in [
+            (self.inner_ring_speed_rpm, "/inner_ring_speed_rpm"),
+            (outer_rpm, "/outer_ring_speed_rpm"),
+        ] {
+            if !(v.is_finite() && v.abs() <= 1e6) {
+                errors.push(FieldError::new(
+                    p,
+                    "must be a finite speed within ±1e6 rev/min",
+                ));
+            }
+        }
+        if self.inner_ring_speed_rpm == outer_rpm {
+            errors.push(FieldError::new(
+                "/inner_ring_speed_rpm",
+                "the rings must turn relative to each other",
+            ));
+        }
+        let load_distribution = validate_value::<LoadDistribution>(
+            json!({"bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a}),
+        );
+        let lubricant =
+            serde_path_to_error::deserialize::<_, LubricantSpec>(self.lubricant.clone())
+                .map_err(|e| {
+                    vec![FieldError::new(
+                        format!("/lubricant{}", json_pointer(e.path())),
+                        e.inner().to_string(),
+                    )]
+                })
+                .and_then(|spec| spec.parse("/lubricant"));
+        let t = self.temperature_c.get();
+        let nu = lubricant
+            .as_ref()
+            .map(|l| l.kinematic_mm2_s(t))
+            .unwrap_or(f64::NAN);
+        if let Ok(l) = &lubricant {
+            if l.pressure_law.is_none() {
+                errors.push(FieldError::new(
+                    "/lubricant",
+                    "the EHL films need a pressure–viscosity law: give pressure_viscosity_coefficient_1_pa or roelands_pressure_viscosity_index",
+                ));
+            }
+        }
+        let bearing_pitch = self
+            .bearing
+            .get("pitch_diameter_m")
+            .cloned()
+            .unwrap_or(Value::Null);
+        let mut life = json!({
+            "bearing_kind": "ball",
+            "dynamic_load_rating_n": self.dynamic_load_rating_n.get(),
+            "speed_rpm": (self.inner_ring_speed_rpm - outer_rpm).abs().max(f64::MIN_POSITIVE),
+            "pitch_diameter_m": bearing_pitch,
+        });
+        match (self.equivalent_load_n, self.x_factor, self.y_factor) {
+            (Some(p), None, None) => life["equivalent_load_n"] = json!(p.get()),
+            (None, Some(x), Some(y)) => {
+                life["radial_load_n"] = json!(f_r);
+                life["axial_load_n"] = json!(f_a);
+                life["x_factor"] = json!(x.get());
+                life["y_factor"] = json!(y.get());
+            }
+            (None, None, None) if f_a == 0.0 => life["equivalent_load_n"] = json!(f_r.max(f64::MIN_POSITIVE)),
+            _ => errors.push(FieldError::new(
+                "/equivalent_load_n",
+                "give equivalent_load_n, or x_factor with y_factor; P defaults to F_r only without axial load",
+            )),
+        }
+        if let Some(r) = self.reliability_percent {
+            life["reliability_percent"] = json!(r);
+        }
+        match (self.contamination_factor, self.fatigue_load_limit_n) {
+            (Some(e), Some(cu)) => {
+                life["contamination_factor"] = json!(e);
+                life["fatigue_load_limit_n"] = json!(cu.get());
+                life["operating_viscosity_mm2_s"] = json!(nu);
+            }
+            (None, None) => {}
+            _ => errors.push(FieldError::new(
+                "/contamination_factor",
+                "give contamination_factor with fatigue_load_limit_n",
+            )),
+        }
+        let life_check = if errors.is_empty() && nu.is_finite() {
+            validate_value::<Life>(life.clone()).map(|_| ())
+        } else {
+            Ok(())
+        };
+        for r in [
+            load_distribution.as_ref().err(),
+            lubricant.as_ref().err(),
+            life_check.as_ref().err(),
+        ]
+        .into_iter()
+        .flatten()
+        {
+            errors.extend(r.iter().cloned());
+        }
+        match (errors.is_empty(), load_distribution) {
+            (true, Ok(load_distribution)) => Ok(AnalysisCase {
+                load_distribution,
+                life_request: life,
+                bearing: self.bearing,
+                lubricant: self.lubricant,
+                temperature_c: t,
+                inner_rpm: self.inner_ring_speed_rpm,
+                outer_rpm,
+                roughness: self.roughness,
+                kinematic_viscosity_mm2_s: nu,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+fn json_pointer(path: &serde_path_to_error::Path) -> String {
+    path.iter().map(|s| format!("/{s}")).collect()
+}
+
+/// Result: each step's own result.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct AnalysisOutput {
+    /// Ball loads, load zone and raceway contacts of the most loaded ball.
+    pub load_distribution: LoadDistributionOutput,
+    /// Speeds at the most loaded ball's contact angle.
+    pub kinematics: KinematicsOutput,
+    /// EHL film at the inner raceway of the most loaded ball.
+    pub inner_film: EhlFilmOutput,
+    /// EHL film at the outer raceway of the most loaded ball.
+    pub outer_film: EhlFilmOutput,
+    /// L10, a1, a_ISO and the modified life.
+    pub life: LifeOutput,
+    /// Operating kinematic viscosity ν at `temperature_c`, mm²/s.
+    pub operating_viscosity_mm2_s: f64,
+    /// Viscosity ratio κ = ν/ν1 (ν1 the rated viscosity, ISO 281), dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub kappa: Option<f64>,
+    /// The smaller film parameter of the two raceways, Λ = h_min/σ, dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_film_parameter_lambda: Option<f64>,
+}
+
+impl Calculation for Analysis {
+    const PATH: &'static str = "/v1/rolling-bearings/analysis";
+    const SUMMARY: &'static str = "Ball bearing at one operating point: load distribution, contact stresses, films, κ and life";
+    const DESCRIPTION: &'static str = "The whole chain, each step by its own room: quasi-static load distribution \
+(`/v1/rolling-bearings/load-distribution`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
+Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball (`/v1/contacts/ehl-film`: ball radius D/2; inner race \
+R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
+a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own, the films' merged over both raceways.";
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm];
+    const EFFECTS: &'static [&'static str] = &[
+        "thermal",
+        "starvation",
+        "mixed_lubrication",
+        "centrifugal",
+        "gyroscopic",
+    ];
+    const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.065, "ball_count": 9, "inner_groove_radius_m": 0.006604, "outer_groove_radius_m": 0.006604, "diametral_clearance_m": 1.5e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 8900, "inner_ring_speed_rpm": 2000, "lubricant": {"kinematic_viscosity_40c_mm2_s": 68, "kinematic_viscosity_100c_mm2_s": 8.6, "density_15c_kg_m3": 880, "pressure_viscosity_coefficient_1_pa": 2.0e-8}, "temperature_c": 70, "dynamic_load_rating_n": 35700, "contamination_factor": 0.5, "fatigue_load_limit_n": 1000, "roughness": {"ball_rms_m": 6.25e-8, "inner_race_rms_m": 1.75e-7, "outer_race_rms_m": 1.75e-7}}"#;
+
+    type Input = AnalysisInput;
+    type Output = AnalysisOutput;
+
+    fn run(case: AnalysisCase, ctx: &mut Context) -> Result<AnalysisOutput, CalcError> {
+        let mut step = ctx.child();
+        let load_distribution = LoadDistribution::run(case.load_distribution, &mut step)?;
+        absorb(ctx, &mut step, "load distribution");
+        if let Some(report) = step.report.take() {
+            ctx.report(report);
+        }
+
+        let ball = case.bearing["ball_diameter_m"].as_f64().unwrap_or(f64::NAN);
+        let pitch = case.bearing["pitch_diameter_m"]
+            .as_f64()
+            .unwrap_or(f64::NAN);
+        let most_loaded = load_distribution
+            .ball_loads
+            .iter()
+            .max_by(|a, b| a.load_n.total_cmp(&b.load_n))
+            .ok_or_else(|| CalcError::Internal("no balls".into()))?;
+        let alpha = most_loaded.contact_angle_deg.to_radians();
+        let q_max = load_distribution.max_ball_load_n;
+
+        let kinematics_request = json!({
+            "ball_diameter_m": ball, "pitch_diameter_m": pitch,
+            "ball_count": case.bearing["ball_count"], "contact_angle_deg": most_loaded.contact_angle_deg,
+            "inner_ring_speed_rpm": case.inner_rpm, "outer_ring_speed_rpm": case.outer_rpm,
+        });
+        let kinematics = sub::<Kinematics>(kinematics_request, ctx, "kinematics")?;
+
+        let material = |key: &str| case.bearing[key].clone();
+        let ball_body = json!({"radius_x_m": ball / 2.0, "radius_y_m": ball / 2.0,
+            "elastic_modulus_pa": material("ball")["elastic_modulus_pa"], "poisson_ratio": material("ball")["poisson_ratio"]});
+        let race = |radius_x: f64, groove: &str| {
+            json!({"radius_x_m": radius_x, "radius_y_m": -case.bearing[groove].as_f64().unwrap_or(f64::NAN),
+                "elastic_modulus_pa": material("rings")["elastic_modulus_pa"], "poisson_ratio": material("rings")["poisson_ratio"]})
+        };
+        let film = |race_body: Value, speed: f64, race_rms: Option<f64>| {
+            let mut request = json!({
+                "body1": ball_body, "body2": race_body, "load_n": q_max.max(f64::MIN_POSITIVE),
+                "entrainment_speed_m_s": speed.abs().max(1e-9), "lubricant": case.lubricant, "temperature_c": case.temperature_c,
+            });
+            if let (Some(r), Some(race)) = (case.roughness, race_rms) {
+                request["roughness"] =
+                    json!({"body1_rms_m": r.ball_rms_m.get(), "body2_rms_m": race});
+            }
+            request
+        };
+        let cos = alpha.cos();
+        let inner_race = race((pitch - ball * cos) / (2.0 * cos), "inner_groove_radius_m");
+        let outer_race = race(-(pitch + ball * cos) / (2.0 * cos), "outer_groove_radius_m");
+        let mut inner_ctx = ctx.child();
+        let inner_film = sub_in::<EhlFilm>(
+            film(
+                inner_race,
+                kinematics.inner_contact_entrainment_speed_m_s,
+                case.roughness.map(|r| r.inner_race_rms_m.get()),
+            ),
+            &mut inner_ctx,
+        )?;
+        let mut outer_ctx = ctx.child();
+        let outer_film = sub_in::<EhlFilm>(
+            film(
+                outer_race,
+                kinematics.outer_contact_entrainment_speed_m_s,
+                case.roughness.map(|r| r.outer_race_rms_m.get()),
+            ),
+            &mut outer_ctx,
+        )?;
+        merge_films(ctx, &inner_ctx, &outer_ctx);
+        absorb(ctx, &mut inner_ctx, "inner raceway film");
+        absorb(ctx, &mut outer_ctx, "outer raceway film");
+
+        let life = sub::<Life>(case.life_request, ctx, "life")?;
+        let kappa = life
+            .rated_viscosity_mm2_s
+            .map(|nu1| case.kinematic_viscosity_mm2_s / nu1);
+        let lambda = match (
+            inner_film.film_parameter_lambda,
+            outer_film.film_parameter_lambda,
+        ) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, b) => a.or(b),
+        };
+        Ok(AnalysisOutput {
+            load_distribution,
+            kinematics,
+            inner_film,
+            outer_film,
+            life,
+            operating_viscosity_mm2_s: case.kinematic_viscosity_mm2_s,
+            kappa,
+            min_film_parameter_lambda: lambda,
+        })
+    }
+}
+
+/// Run one step in its own context, its warnings folded into ours.
+fn sub<C: Calculation>(
+    request: Value,
+    ctx: &mut Context,
+    step_name: &str,
+) -> Result<C::Output, CalcError> {
+    let mut step = ctx.child();
+    let out = sub_in::<C>(request, &mut step)?;
+    absorb(ctx, &mut step, step_name);
+    Ok(out)
+}
+
+fn sub_in<C: Calculation>(request: Value, step: &mut Context) -> Result<C::Output, CalcError> {
+    let case = validate_value::<C>(request).map_err(|errors| {
+        let e = errors.into_iter().next().map_or_else(
+            || ("".to_owned(), String::new()),
+            |e| (e.pointer, e.message),
+        );
+        CalcError::impossible(
+            "",
+            format!(
+                "a step of the chain ({}) refused its input at {}: {}",
+                C::PATH,
+                e.0,
+                e.1
+            ),
+        )
+    })?;
+    C::run(case, step)
+}
+
+/// Fold a step's warnings into the chain's (naming the step), and its effect decisions where the
+/// chain has none under that name yet.
+fn absorb(ctx: &mut Context, step: &mut Context, step_name: &str) {
+    for w in step.warnings.drain(..) {
+        ctx.warn(w.code, format!("{step_name}: {}", w.message));
+    }
+    for (name, decision) in std::mem::take(&mut step.effects) {
+        ctx.effects.entry(name).or_insert(decision);
+    }
+}
+
+/// The films' effects over both raceways: applied where either applies, both reasons kept.
+fn merge_films(ctx: &mut Context, inner: &Context, outer: &Context) {
+    for (name, a) in &inner.effects {
+        let merged = match outer.effects.get(name) {
+            Some(b) => Decision {
+                applied: a.applied || b.applied,
+                mode: a.mode,
+                reason: format!("inner raceway: {}; outer raceway: {}", a.reason, b.reason),
+                criterion: a.criterion.clone(),
+            },
+            None => a.clone(),
+        };
+        ctx.decide(name, merged);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::calc::testing::{invalid_pointers, ok};
+
+    fn example() -> Value {
+        serde_json::from_str(Analysis::EXAMPLE).unwrap()
+    }
+
+    /// The chain's numbers are its steps': the same requests to the rooms alone give the same
+    /// results, and the films sit at the most loaded ball with its load and speeds.
+    #[test]
+    fn the_chain_is_its_rooms() {
+        let v = ok::<Analysis>(&example());
+        let r = &v["result"];
+        let alone = ok::<LoadDistribution>(
+            &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
+        );
+        assert_eq!(r["load_distribution"], alone["result"]);
+        let q = r["load_distribution"]["max_ball_load_n"].as_f64().unwrap();
+        // The film's Hertz pressure at Q_max equals the load distribution's inner contact.
+        let p_film = r["inner_film"]["max_hertz_pressure_pa"].as_f64().unwrap();
+        let p_ld = r["load_distribution"]["inner_contact"]["max_pressure_pa"]
+            .as_f64()
+            .unwrap();
+        assert!(
+            (p_film / p_ld - 1.0).abs() < 1e-3,
+            "{p_film} vs {p_ld} at Q = {q}"
+        );
+        let kappa = r["kappa"].as_f64().unwrap();
+        assert!((kappa - r["life"]["kappa"].as_f64().unwrap()).abs() < 1e-9);
+        assert!(r["min_film_parameter_lambda"].as_f64().unwrap() > 0.0);
+        for effect in ["thermal", "starvation", "mixed_lubrication"] {
+            assert!(
+                v["effects"][effect]["reason"]
+                    .as_str()
+                    .unwrap()
+                    .contains("inner raceway"),
+                "{effect}"
+            );
+        }
+    }
+
+    #[test]
+    fn invalid_steps_name_their_fields() {
+        let mut bad = example();
+        bad["bearing"]["ball_count"] = json!(0);
+        assert!(invalid_pointers::<Analysis>(&bad)
+            .iter()
+            .any(|p| p.starts_with("/bearing")));
+        let mut no_law = example();
+        no_law["lubricant"] = json!({"viscosity_pa_s": 0.02});
+        assert_eq!(invalid_pointers::<Analysis>(&no_law), vec!["/lubricant"]);
+        let mut axial = example();
+        axial["axial_load_n"] = json!(2000.0);
+        assert!(invalid_pointers::<Analysis>(&axial).contains(&"/equivalent_load_n".to_owned()));
+        let mut typo = example();
+        typo["lubricant"]["viscosty_pa_s"] = json!(1.0);
+        assert!(invalid_pointers::<Analysis>(&typo)
+            .iter()
+            .any(|p| p == "/lubricant/viscosty_pa_s"));
+    }
+}
