@@ -108,6 +108,12 @@ async fn invalid_input_is_422_with_a_pointer() {
             "negative viscosity",
         ),
         (
+            // Regression (schemathesis): a denormal viscosity made μ/ρ underflow to 0 and a 500.
+            json!({"lubricant": {"viscosity_pa_s": 5e-324}, "temperatures_c": [0.0]}),
+            "/lubricant/viscosity_pa_s",
+            "denormal viscosity",
+        ),
+        (
             json!({"lubricant": {"viscosity_pa_s": 0.0}, "temperatures_c": [40.0]}),
             "/lubricant/viscosity_pa_s",
             "zero viscosity",

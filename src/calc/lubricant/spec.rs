@@ -17,8 +17,8 @@ use crate::calc::FieldError;
 #[serde(deny_unknown_fields)]
 #[schema(example = json!({"kinematic_viscosity_40c_mm2_s": 32.0, "kinematic_viscosity_100c_mm2_s": 5.4, "density_15c_kg_m3": 870.0}))]
 pub struct LubricantSpec {
-    /// Constant dynamic viscosity, Pa·s, > 0 (at most 1e4).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e4, example = 0.03)]
+    /// Constant dynamic viscosity, Pa·s (1e-6 … 1e4).
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e4, example = 0.03)]
     pub viscosity_pa_s: Option<Positive>,
     /// ISO 3448 viscosity grade (2 … 3200): ν40 at the grade's mid-point, mm²/s; ν100 from
     /// `viscosity_index` (default 100) through ASTM D2270; density 870 kg/m³ at 15 °C unless given.
@@ -100,6 +100,10 @@ pub const ISO_VG_GRADES: [u32; 20] = [
     2, 3, 5, 7, 10, 15, 22, 32, 46, 68, 100, 150, 220, 320, 460, 680, 1000, 1500, 2200, 3200,
 ];
 
+/// Lowest viscosity accepted, Pa·s: below any liquid or gas (air is 1.8e-5), and far above
+/// where μ/ρ underflows.
+pub const MIN_VISCOSITY_PA_S: f64 = 1e-6;
+
 /// Default density of a mineral oil at 15 °C, kg/m³.
 pub const DEFAULT_DENSITY_KG_M3: f64 = 870.0;
 
@@ -131,9 +135,29 @@ impl LubricantSpec {
             &mut errors,
             p("viscosity_pa_s"),
             get(self.viscosity_pa_s),
-            0.0,
+            MIN_VISCOSITY_PA_S,
             1e4,
         );
+        if let Some(e) = self.exponential {
+            range_check(
+                &mut errors,
+                p("exponential/reference_viscosity_pa_s"),
+                Some(e.reference_viscosity_pa_s.get()),
+                MIN_VISCOSITY_PA_S,
+                1e4,
+            );
+        }
+        if let Some(v) = &self.vogel {
+            for (i, q) in v.points.iter().enumerate() {
+                range_check(
+                    &mut errors,
+                    p(&format!("vogel/points/{i}/viscosity_pa_s")),
+                    Some(q.viscosity_pa_s.get()),
+                    MIN_VISCOSITY_PA_S,
+                    1e4,
+                );
+            }
+        }
         range_check(
             &mut errors,
             p("density_15c_kg_m3"),
