@@ -410,3 +410,29 @@ fn misalignment_is_solved_on_the_whole_length() {
         other => panic!("a touching journal must be refused, got {other:?}"),
     }
 }
+
+/// Partial arcs from 120° to 330° find their equilibrium from a load (review finding: near-full
+/// arcs put the attitude near 90° at light load), and a wider arc never needs a larger ε (beyond
+/// about 270° the extra arc lies in the cavitated film and changes little).
+#[test]
+fn partial_arcs_find_their_equilibrium() {
+    let mut last_eps = 1.0;
+    for arc in [120.0, 180.0, 270.0, 330.0] {
+        let body = json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000.0,
+            "lubricant": {"viscosity_pa_s": 0.02, "density_15c_kg_m3": 870.0},
+            "load_n": 5000.0,
+            "arc_deg": arc,
+            "fidelity": "fast",
+            "dynamics": false
+        });
+        let r = run(&body).unwrap_or_else(|e| panic!("arc {arc}: {e:?}"));
+        let eps = num(&r["result"], "eccentricity_ratio");
+        assert!(
+            eps <= last_eps * 1.01,
+            "arc {arc}: ε {eps} above {last_eps}"
+        );
+        last_eps = eps;
+    }
+}

@@ -48,6 +48,11 @@ pub fn perturbation(
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
     let delta = 1e-3 * (1.0 - eps).max(1e-3);
     let rate = 2.0 * PI * delta;
+    // The perturbed forces differ from the base by O(δ): solve them well below that.
+    let stop = Stopping {
+        tolerance: stop.tolerance.min(1e-11),
+        max_sweeps: stop.max_sweeps.max(200_000),
+    };
     let mut solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
         let (f, _) =
             film::solve(film, mesh, stop, Some(field.clone()), keep_going).map_err(solve_error)?;
@@ -117,7 +122,8 @@ pub struct Whirl {
     pub equivalent_stiffness: f64,
     /// Whirl frequency ratio γ = ω_whirl/ω at the threshold; None when the film cannot whirl.
     pub whirl_frequency_ratio: Option<f64>,
-    /// Critical mass parameter m C ω²/W at the threshold; None: stable for any mass.
+    /// Critical mass parameter m C ω²/W at the threshold; None: stable for any mass; 0 when
+    /// k_eq ≤ 0 (no mass is stable).
     pub critical_mass_parameter: Option<f64>,
 }
 
@@ -132,7 +138,12 @@ pub fn whirl(c: &Coefficients) -> Whirl {
     Whirl {
         equivalent_stiffness: k_eq,
         whirl_frequency_ratio: unstable_possible.then(|| gamma2.sqrt()),
-        critical_mass_parameter: unstable_possible.then(|| k_eq / gamma2),
+        // k_eq ≤ 0: no positive mass is stable (the critical mass is 0).
+        critical_mass_parameter: if k_eq <= 0.0 {
+            Some(0.0)
+        } else {
+            unstable_possible.then(|| k_eq / gamma2)
+        },
     }
 }
 

@@ -320,6 +320,15 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         None => g.x[g.nx()],
     };
 
+    // Pressure-flow conductance h³, scaled by the Ng–Pan factor of its direction when turbulent.
+    let conductance = |theta: f64, y: f64, axis: Axis| {
+        let h = h(theta, y);
+        let (gx, gy) = film
+            .physics
+            .turbulence_reynolds
+            .map_or((1.0, 1.0), |re| turbulent_flow_factors(re * h));
+        h.powi(3) * if axis == Axis::X { gx } else { gy }
+    };
     // Side leakage: h³ |∂P/∂ȳ| at the ends (second-order one-sided), both ends.
     let dy = g.dy();
     let edge_flow = |row1: usize, row2: usize, y_edge: f64| {
@@ -331,7 +340,7 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
             } else {
                 p1 / dy
             };
-            flow += h(g.x[i], y_edge).powi(3) * dpdy * g.cv_x(i);
+            flow += conductance(g.x[i], y_edge, Axis::Y) * dpdy * g.cv_x(i);
         }
         flow
     };
@@ -349,7 +358,8 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         let (p1, p2) = (p[at(g, 1, j)], p[at(g, 2, j)]);
         let dpdt = (d1 + d2) / (d1 * d2) * p1 - d1 / (d2 * (d1 + d2)) * p2;
         let h0 = h(g.x[0], g.y(j));
-        inlet += (h0 - h0.powi(3) * dpdt / (12.0 * PI)) * g.cv_y(j) * halves;
+        inlet +=
+            (h0 - conductance(g.x[0], g.y(j), Axis::X) * dpdt / (12.0 * PI)) * g.cv_y(j) * halves;
     }
 
     FilmSolution {

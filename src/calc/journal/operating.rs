@@ -21,6 +21,9 @@ use crate::numerics::roots::{brent, RootError, Stopping};
 const GRAVITY: f64 = 9.80665;
 /// Film Reynolds number above which the film turns turbulent (Khonsari & Booser §6, 1000–2000).
 const TURBULENT_REYNOLDS: f64 = 1000.0;
+/// Largest oil temperature rise the effective-temperature search considers, K (far beyond
+/// where any oil or bearing metal survives).
+const MAX_TEMPERATURE_RISE_K: f64 = 400.0;
 /// Inlet temperature when none is given, °C.
 const DEFAULT_INLET_C: f64 = 40.0;
 
@@ -115,6 +118,12 @@ impl Case {
 
     fn operate(&self, temperature_c: f64, budget: &Budget) -> Result<Operating, CalcError> {
         let mu = self.lubricant.viscosity_pa_s(temperature_c);
+        if !(mu.is_finite() && mu > 0.0 && self.lubricant.density_kg_m3(temperature_c) > 0.0) {
+            return Err(CalcError::impossible(
+                "/inlet_temperature_c",
+                format!("the lubricant's laws have no value at {temperature_c:.1} °C"),
+            ));
+        }
         let scale = self.load_scale(mu);
         let l_over_d = self.geometry.l_over_d();
         let mut alive = || budget.alive();
@@ -462,6 +471,9 @@ fn effective_temperature(
                 last = Some(op);
                 g
             }
+            // Too hot for the model (the thinned oil cannot carry the load, or the viscosity law
+            // has no value there): the effective temperature lies below.
+            Err(CalcError::Impossible { .. }) if t > t_in => 1e3,
             Err(e) => {
                 failure.get_or_insert(e);
                 f64::NAN
@@ -471,7 +483,7 @@ fn effective_temperature(
     let root = brent(
         f,
         t_in,
-        t_in + rise_iso,
+        t_in + rise_iso.min(MAX_TEMPERATURE_RISE_K),
         Stopping {
             x_tolerance: 1e-3,
             max_iterations: 60,

@@ -151,7 +151,8 @@ pub fn positioned_film(
     };
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
     // equilibrium lies between (an arc wholly in the diverging film carries nothing).
-    let root = brent(&mut mismatch, 0.0, 0.5 * PI - 1e-3, stop_phi);
+    // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°.
+    let root = brent(&mut mismatch, 0.0, 0.75 * PI, stop_phi);
     if let Some(e) = failure {
         return Err(e);
     }
@@ -165,14 +166,11 @@ pub fn positioned_film(
             })
         }
         Err(_) => {
+            // Not "/misalignment": that pointer means the journal touches.
             return Err(CalcError::impossible(
-                if model.arc.is_some() {
-                    "/arc_deg"
-                } else {
-                    "/misalignment"
-                },
+                if model.arc.is_some() { "/arc_deg" } else { "" },
                 "no attitude angle puts the film force on the load line at this eccentricity",
-            ))
+            ));
         }
     };
     let film = place(phi);
@@ -460,7 +458,7 @@ pub fn equilibrium(
     });
     let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, keep_going)?;
     // A root at the edge where a misaligned journal starts to touch carries less than asked.
-    if (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
+    if physics.misalignment.is_some() && (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
         return Err(CalcError::impossible(
             "/load_n",
             "the load exceeds what the bearing carries before the journal touches it",

@@ -77,8 +77,8 @@ pub struct PlainInput {
     #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e6, example = 3000.0)]
     pub speed_rpm: Positive,
     pub lubricant: LubricantSpec,
-    /// Steady radial load W, N (> 0).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 10000.0)]
+    /// Steady radial load W, N (1e-6 … 1e12).
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e12, example = 10000.0)]
     pub load_n: Option<Positive>,
     /// Eccentricity ratio ε = e/C, dimensionless, 0.0001 … 0.999 (instead of `load_n`).
     #[schema(minimum = 0.0001, maximum = 0.999, example = 0.6)]
@@ -159,7 +159,16 @@ impl Validate for PlainInput {
             errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
         }
         let operating = match (self.load_n, self.eccentricity_ratio) {
-            (Some(w), None) => Some(operating::Given::Load(w.get())),
+            (Some(w), None) if (1e-6..=1e12).contains(&w.get()) => {
+                Some(operating::Given::Load(w.get()))
+            }
+            (Some(w), None) => {
+                errors.push(FieldError::new(
+                    "/load_n",
+                    format!("must be within [1e-6, 1e12] N, got {}", w.get()),
+                ));
+                None
+            }
             (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => {
                 Some(operating::Given::Eccentricity(eps))
             }
