@@ -46,6 +46,12 @@ pub struct FilmSolution {
     pub span: (f64, f64),
     /// The smallest film thickness h̄_min = h_min/C.
     pub min_thickness: f64,
+    /// ∫∫ P̄ (−∂h̄/∂θ) dθ dȳ: the pressure-gradient part of the journal's shear, integrated by
+    /// parts (P̄ = 0 on the edges).
+    pub pressure_shear: f64,
+    /// ∫∫ G_f/h̄ dθ dȳ over the film: the Couette part (G_f = 1 laminar), shear over the whole
+    /// span whatever the film does (the Table 8.6 convention).
+    pub couette_shear: f64,
     /// (θ, P̄) at the grid nodes of the mid-plane.
     pub midplane: Vec<(f64, f64)>,
     pub solved: Solved,
@@ -271,13 +277,16 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
     // A symmetric grid holds half the length: its integrals count twice.
     let halves = if g.symmetric { 2.0 } else { 1.0 };
     let mid_row = if g.symmetric { g.ny } else { g.ny / 2 };
-    let (mut radial, mut tangential) = (0.0, 0.0);
+    let (mut radial, mut tangential, mut pressure_shear) = (0.0, 0.0, 0.0);
     for j in 0..=g.ny {
         for i in 0..=g.nx() {
             let w = g.cv_x(i) * g.cv_y(j) * halves;
             let v = p[at(g, i, j)];
             radial -= v * g.x[i].cos() * w;
             tangential += v * g.x[i].sin() * w;
+            // −∂h̄/∂θ for the pressure part of the journal's shear (integrated by parts).
+            let dh = (h(g.x[i] + 1e-6, g.y(j)) - h(g.x[i] - 1e-6, g.y(j))) / 2e-6;
+            pressure_shear -= v * dh * w;
         }
     }
 
@@ -372,9 +381,45 @@ fn integrate(g: &Grid, p: &[f64], film: &Film, solved: Solved) -> FilmSolution {
         inlet_flow_bar: inlet,
         span: (g.x[0], g.x[g.nx()]),
         min_thickness: film.min_thickness(),
+        pressure_shear,
+        couette_shear: couette_shear(film, (g.x[0], g.x[g.nx()])),
         midplane: g.x.iter().cloned().zip(mid.iter().cloned()).collect(),
         solved,
     }
+}
+
+/// ∫∫ G_f/h̄ dθ dȳ over the span and the whole length: the periodic full circle by the
+/// trapezoidal rule (exact to rounding), arcs likewise on 720 intervals; across the length 40
+/// intervals when tilted (h̄ is then linear in ȳ), else one.
+fn couette_shear(film: &Film, span: (f64, f64)) -> f64 {
+    let n = 720;
+    let w = (span.1 - span.0) / n as f64;
+    let re = film.physics.turbulence_reynolds;
+    // (ȳ, weight): the mid-plane stands for the whole length unless the film is tilted.
+    let rows: Vec<(f64, f64)> = match film.tilt {
+        None => vec![(0.5, 1.0)],
+        Some(_) => (0..=40)
+            .map(|j| {
+                (
+                    j as f64 / 40.0,
+                    if j == 0 || j == 40 {
+                        0.5 / 40.0
+                    } else {
+                        1.0 / 40.0
+                    },
+                )
+            })
+            .collect(),
+    };
+    let mut sum = 0.0;
+    for (y, wy) in rows {
+        for i in 0..=n {
+            let h = film.thickness(span.0 + w * i as f64, y);
+            let wx = if i == 0 || i == n { 0.5 * w } else { w };
+            sum += wx * wy * re.map_or(1.0, |re| turbulent_shear_factor(re * h)) / h;
+        }
+    }
+    sum
 }
 
 /// The peak of a sampled curve by a parabola through the largest sample and its neighbours.

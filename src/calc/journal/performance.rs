@@ -212,38 +212,13 @@ pub struct Point {
     pub mesh: Option<Mesh>,
 }
 
-/// (R/C)·f with the journal's shear over the full circumference (Khonsari & Booser G5, the
-/// convention of Table 8.6): (ε/2) sin φ + 2π² S / √(1 − ε²).
-///
-/// With a turbulent film the Couette shear carries the Ng–Pan factor G_f(Re_C h̄) (Eq. 6.30):
-/// the Petroff term becomes π S ∫₀^2π G_f/h̄ dθ (a periodic integrand: the trapezoidal rule on
-/// 720 points is exact to rounding).
-pub fn friction_parameter(
-    eps: f64,
-    attitude: f64,
-    sommerfeld: f64,
-    turbulence_reynolds: Option<f64>,
-    span: (f64, f64),
-) -> f64 {
-    let full = (span.1 - span.0 - 2.0 * PI).abs() < 1e-9;
-    let couette = match (turbulence_reynolds, full) {
-        (None, true) => 2.0 * PI / (1.0 - eps * eps).sqrt(),
-        (re, _) => {
-            // Periodic over the full circle (trapezoid exact to rounding); Simpson-accurate on arcs.
-            let n = 720;
-            let w = (span.1 - span.0) / n as f64;
-            (0..=n)
-                .map(|i| {
-                    let theta = span.0 + w * i as f64;
-                    let h = 1.0 + eps * theta.cos();
-                    let weight = if i == 0 || i == n { 0.5 } else { 1.0 };
-                    weight * re.map_or(1.0, |re| film::turbulent_shear_factor(re * h)) / h
-                })
-                .sum::<f64>()
-                * w
-        }
-    };
-    0.5 * eps * attitude.sin() + PI * sommerfeld * couette
+/// (R/C)·f with the journal's shear integrated over the whole film (Khonsari & Booser G5, the
+/// convention of Table 8.6: the Couette shear over the full circumference, cavitated or not):
+/// (R/C) f = ∫∫ P̄ (−∂h̄/∂θ) / (2 |∫∫ P̄|) + π S ∫∫ G_f/h̄, which for the aligned laminar 360°
+/// bearing is (ε/2) sin φ + 2π² S/√(1 − ε²). Turbulent films carry the Ng–Pan G_f (Eq. 6.30).
+pub fn friction_parameter(f: &FilmSolution) -> f64 {
+    let load = f.load_radial.hypot(f.load_tangential);
+    0.5 * f.pressure_shear / load + PI * f.sommerfeld_number() * f.couette_shear
 }
 
 pub fn solve_error(e: SolveError) -> CalcError {
@@ -269,7 +244,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         eccentricity_ratio: eps,
         sommerfeld_number: s,
         attitude_angle: phi,
-        friction_parameter: friction_parameter(eps, phi, s, physics.turbulence_reynolds, f.span),
+        friction_parameter: friction_parameter(f),
         max_pressure_bar: f.max_pressure_bar,
         max_pressure_angle: f.max_pressure_angle,
         cavitation_angle: physics.cavitation.then_some(f.cavitation_angle),
@@ -347,6 +322,7 @@ fn at_eccentricity_from(
                     max_pressure_bar: extrapolate(fine.max_pressure_bar, coarse.max_pressure_bar),
                     side_leakage_bar: extrapolate(fine.side_leakage_bar, coarse.side_leakage_bar),
                     inlet_flow_bar: extrapolate(fine.inlet_flow_bar, coarse.inlet_flow_bar),
+                    pressure_shear: extrapolate(fine.pressure_shear, coarse.pressure_shear),
                     ..fine.clone()
                 };
                 point = Point {
