@@ -813,7 +813,7 @@ fn dynamic_coefficients(
         whirl_frequency_ratio: whirl.whirl_frequency_ratio,
         critical_mass_parameter: whirl.critical_mass_parameter,
         mass_parameter: mass_parameter(omega),
-        rotor_mass_kg: mass,
+        rotor_mass_kg: mass * case.halves(),
         statement,
     };
     Ok(Some((coefficients, stability)))

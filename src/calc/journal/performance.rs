@@ -175,6 +175,15 @@ pub fn positioned_film(
     };
     let film = place(phi);
     let (f, p) = film::solve(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
+    // Brent can also settle on the ±180° jump of the angle: only a force on the load line counts.
+    let (wa, wb) = (-f.load_radial, f.load_tangential);
+    let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+    if wa * da + wb * db <= 0.0 {
+        return Err(CalcError::impossible(
+            if model.arc.is_some() { "/arc_deg" } else { "" },
+            "no attitude angle puts the film force on the load line at this eccentricity",
+        ));
+    }
     Ok((film, f, p))
 }
 
