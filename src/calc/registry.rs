@@ -29,6 +29,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::life::Life>(),
     Entry::of::<rolling::load_distribution::LoadDistribution>(),
     Entry::of::<rolling::analysis::Analysis>(),
+    Entry::of::<rolling::friction::Friction>(),
+    Entry::of::<rolling::grease_life::GreaseLife>(),
 ];
 
 /// The calculation registered at `path`.

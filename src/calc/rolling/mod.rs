@@ -9,7 +9,9 @@
 //! the texts; each constant cites where it was checked).
 
 pub mod analysis;
+pub mod friction;
 pub mod geometry;
+pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
