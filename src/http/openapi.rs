@@ -95,6 +95,18 @@ fn envelope(output: &str) -> Schema {
         .into()
 }
 
+/// Two different types under one component name would silently overwrite each other in the
+/// document (and break the responses' schema): refuse to build it.
+fn assert_unique_schema_names(schemas: &[(String, RefOr<Schema>)], _rooms_from: usize) {
+    let mut seen: std::collections::BTreeMap<&str, String> = std::collections::BTreeMap::new();
+    for (name, schema) in schemas {
+        let text = serde_json::to_string(schema).unwrap_or_default();
+        if let Some(previous) = seen.insert(name, text.clone()) {
+            assert!(previous == text, "two different schemas are named {name}: rename one (utoipa component names are global)");
+        }
+    }
+}
+
 fn build() -> OpenApi {
     let mut schemas: Vec<(String, RefOr<Schema>)> = Vec::new();
     let mut push = |name: std::borrow::Cow<'static, str>, schema: RefOr<Schema>| {
@@ -112,6 +124,7 @@ fn build() -> OpenApi {
     push(CalculationList::name(), CalculationList::schema());
 
     let mut paths = PathsBuilder::new();
+    let before_rooms = schemas.len();
     for entry in REGISTRY {
         (entry.schemas)(&mut schemas);
         let (input, output) = (entry.schema_names)();
@@ -150,6 +163,7 @@ fn build() -> OpenApi {
             .response("504", problem_response("The calculation passed its deadline and was stopped."));
         paths = paths.path(entry.path, PathItem::new(HttpMethod::Post, op));
     }
+    assert_unique_schema_names(&schemas[..], before_rooms);
     let get = |id: &str, summary: &str, response: utoipa::openapi::Response| {
         PathItem::new(
             HttpMethod::Get,

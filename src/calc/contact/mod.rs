@@ -3,4 +3,5 @@
 //! Booser §14.2–14.3; Johnson, *Contact Mechanics*, ch. 3–4).
 
 pub mod ehl_film;
+pub mod flash_temperature;
 pub mod hertz;

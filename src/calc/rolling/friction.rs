@@ -20,8 +20,8 @@ pub struct Friction;
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct SealFactors {
-    /// f1, dimensionless (e.g. 20 for deep-groove 2RS1).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1000.0, example = 20.0)]
+    /// f1, dimensionless (0.1 … 1000; e.g. 20 for deep-groove 2RS1).
+    #[schema(value_type = f64, minimum = 0.1, maximum = 1000.0, example = 20.0)]
     pub f1: Positive,
     /// f2, N·mm (e.g. 10 for deep-groove 2RS1).
     #[schema(value_type = f64, minimum = 0.0, maximum = 1e6, example = 10.0)]
