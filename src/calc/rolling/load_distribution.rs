@@ -221,6 +221,11 @@ pub struct LoadDistributionOutput {
     /// Load–deflection constant K_n of one ball between both raceways, N/m^1.5 (Q = K_n δ^1.5).
     #[schema(example = 1.1e10)]
     pub contact_stiffness_n_m1_5: f64,
+    /// Static safety factor against the 4200 MPa contact-pressure criterion of the static load
+    /// rating (Khonsari & Booser RB-8: permanent deformation 1e-4 D): the factor by which the load
+    /// could grow before the more loaded raceway reaches it, (4200 MPa/p_max)³ (p ∝ Q^⅓).
+    #[schema(example = 2.5)]
+    pub static_safety_factor: f64,
     /// Inner raceway contact of the most loaded ball (exact Hertz at its load and angle).
     pub inner_contact: RacewayContact,
     /// Outer raceway contact of the most loaded ball.
@@ -313,6 +318,7 @@ gyroscopic ball loads are not modelled (no speed).";
             free_contact_angle_deg: alpha_f.to_degrees(),
             end_play_m: bearing.end_play_m(),
             contact_stiffness_n_m1_5: k_n,
+            static_safety_factor: (STATIC_LIMIT_PA / p_max).powi(3),
             inner_contact: RacewayContact::from_hertz(&inner)?,
             outer_contact: RacewayContact::from_hertz(&outer)?,
         })
@@ -1248,5 +1254,18 @@ mod tests {
             let eps = |f: f64| get(&ok(&request(b.clone(), f_r, f, mode)), "/result/load_zone_factor");
             prop_assert!(eps(1.2 * f_a) > eps(f_a));
         }
+    }
+
+    /// The static safety factor is the cube of the pressure margin: at the load that brings the
+    /// most loaded contact to 4200 MPa it is 1, and it scales as 1/Q_max (p ∝ Q^⅓).
+    #[test]
+    fn static_safety_factor_is_the_cubed_pressure_margin() {
+        let example: Value = serde_json::from_str(LoadDistribution::EXAMPLE).unwrap();
+        let v = ok(&example);
+        let p = get(&v, "/result/inner_contact/max_pressure_pa")
+            .max(get(&v, "/result/outer_contact/max_pressure_pa"));
+        let s0 = get(&v, "/result/static_safety_factor");
+        assert!((s0 - (STATIC_LIMIT_PA / p).powi(3)).abs() < 1e-9 * s0);
+        assert!(s0 > 1.0);
     }
 }
