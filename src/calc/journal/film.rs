@@ -140,7 +140,9 @@ pub struct FilmModel {
     /// A misaligned journal (Khonsari & Booser Eq. 8.70): ε′ = (difference of the journal-centre
     /// displacements at the two ends)/C, and the direction of that tilt from the load line in
     /// the direction of rotation, rad. None: aligned.
-    pub misalignment: Option<(f64, f64)>,
+    /// The third member: the direction is measured from the line of centres instead (as in
+    /// Stachowiak & Batchelor's PARTIAL and STABILITY programs, where the tilt follows the journal).
+    pub misalignment: Option<(f64, f64, bool)>,
 }
 
 impl FilmModel {

@@ -61,7 +61,7 @@ pub struct Case {
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
     /// (ε′, direction of the tilt from the load line, rad); None when aligned.
-    pub misalignment: Option<(f64, f64)>,
+    pub misalignment: Option<(f64, f64, bool)>,
     pub rotor_mass_kg: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
@@ -316,12 +316,13 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         "misalignment",
         match case.misalignment {
             None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
-            Some((e, dir)) => Decision {
+            Some((e, dir, from_centres)) => Decision {
                 applied: true,
                 mode: Mode::On,
                 reason: format!(
-                    "journal tilted {:.1}° from the load line: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
-                    dir.to_degrees()
+                    "journal tilted {:.1}° from the {}: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
+                    dir.to_degrees(),
+                    if from_centres { "line of centres" } else { "load line" }
                 ),
                 criterion: None,
             },

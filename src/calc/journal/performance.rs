@@ -120,7 +120,16 @@ pub fn positioned_film(
         span: model
             .arc
             .map(|arc| (PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
-        tilt: model.misalignment.map(|(e, dir)| (e, PI - phi + dir)),
+        tilt: model.misalignment.map(|(e, dir, from_centres)| {
+            (
+                e,
+                if from_centres {
+                    PI + dir
+                } else {
+                    PI - phi + dir
+                },
+            )
+        }),
         ..base
     };
     let mut warm = warm;

@@ -270,7 +270,11 @@ impl Validate for PlainInput {
                         "the closed forms are for an aligned journal; use a numerical fidelity",
                     ));
                 }
-                (tilt > 0.0).then_some((tilt, m.direction_deg.to_radians()))
+                (tilt > 0.0).then_some((
+                    tilt,
+                    m.direction_deg.to_radians(),
+                    m.measured_from == MisalignmentReference::LineOfCentres,
+                ))
             }
         };
         if misalignment.is_some()
@@ -350,6 +354,15 @@ pub struct ProfilePoint {
     pub pressure_pa: f64,
 }
 
+/// The line a misalignment's direction is measured from.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum MisalignmentReference {
+    #[default]
+    LoadLine,
+    LineOfCentres,
+}
+
 /// A tilted journal (Khonsari & Booser Eq. 8.70).
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -363,6 +376,12 @@ pub struct MisalignmentSpec {
     #[serde(default)]
     #[schema(minimum = -180.0, maximum = 180.0, example = 0.0)]
     pub direction_deg: f64,
+    /// What `direction_deg` is measured from: `load_line` (default; a tilt fixed in space, as a
+    /// shaft bending under its load) or `line_of_centres` (a tilt that follows the journal, the
+    /// convention of Stachowiak & Batchelor's PARTIAL and STABILITY programs, where 0 tilts
+    /// towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
+    #[serde(default)]
+    pub measured_from: MisalignmentReference,
 }
 
 /// Stiffness and damping of the film.
