@@ -726,9 +726,15 @@ fn dynamic_coefficients(
         }
         m => m,
     };
+    // S_op on the search mesh: one film solve, not a set of perturbations.
     let s_op = match search {
-        Method::Numerical { .. } => coefficients_at(case, search, eps, physics, &budget)?
-            .map_or(s_op, |c| c.sommerfeld_number),
+        Method::Numerical { mesh, stop, .. } => {
+            let mut alive = || budget.alive();
+            let ld = case.geometry.l_over_d();
+            let (_, film, _) =
+                performance::positioned_film(eps, ld, physics, mesh, stop, None, &mut alive)?;
+            film.sommerfeld_number()
+        }
         _ => s_op,
     };
     let failure = std::cell::RefCell::new(None);
