@@ -9,7 +9,7 @@ use super::spec::LubricantSpec;
 use super::validity;
 use crate::calc::quantity::Celsius;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 /// Most temperatures one request may ask for.
 pub const MAX_TEMPERATURES: usize = 10_000;
@@ -166,7 +166,6 @@ Fein's Roelands Z (Eq. 2.11) with the EHL α of Eq. 2.13, and Wooster's α (Stac
         for (code, message) in &lub.assumptions {
             ctx.warn(code, message.clone());
         }
-        ctx.report(SolverReport::closed_form("closed_form"));
         let (nu40, nu100) = (lub.kinematic_mm2_s(40.0), lub.kinematic_mm2_s(100.0));
         Ok(PropertiesOutput {
             thermal_model: match lub.thermal {

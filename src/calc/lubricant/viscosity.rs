@@ -10,7 +10,7 @@ use super::validity;
 use crate::calc::quantity::{Celsius, NonNegative};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 /// Most state points one request may ask for (temperatures × pressures).
 pub const MAX_POINTS: usize = 100_000;
@@ -212,7 +212,6 @@ Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density
         for (code, message) in &lub.assumptions {
             ctx.warn(code, message.clone());
         }
-        ctx.report(SolverReport::closed_form("closed_form"));
         Ok(ViscosityOutput {
             temperature_model: lub.temperature_law.name().to_owned(),
             pressure_model: pressure_law.map_or("none", PressureLaw::name).to_owned(),

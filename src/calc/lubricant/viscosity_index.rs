@@ -8,7 +8,7 @@ use super::astm_d2270;
 use super::spec::LubricantSpec;
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 pub struct ViscosityIndex;
 
@@ -119,7 +119,6 @@ with the reference-oil viscosities L and H over the standard's whole ν100 range
                 "the oil thins faster with temperature than the VI = 0 reference oil",
             );
         }
-        ctx.report(SolverReport::closed_form("closed_form"));
         Ok(ViscosityIndexOutput {
             viscosity_index: vi.value,
             viscosity_index_rounded: astm_d2270::rounded(vi.value),

@@ -26,7 +26,7 @@ use utoipa::ToSchema;
 
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 pub struct Kinematics;
 
@@ -262,7 +262,6 @@ no skidding, gyroscopic or centrifugal effects.";
     type Output = KinematicsOutput;
 
     fn run(case: KinematicsCase, ctx: &mut Context) -> Result<KinematicsOutput, CalcError> {
-        ctx.report(SolverReport::closed_form("closed_form"));
         if case.inner_rpm == case.outer_rpm {
             ctx.warn(
                 "no_relative_rotation",

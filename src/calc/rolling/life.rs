@@ -42,7 +42,7 @@ use utoipa::ToSchema;
 
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 pub struct Life;
 
@@ -753,7 +753,6 @@ roller bearings (κ bands 0.1–0.4, 0.4–1, 1–4; κ clipped to [0.1, 4]; a_I
     type Output = LifeOutput;
 
     fn run(case: LifeCase, ctx: &mut Context) -> Result<LifeOutput, CalcError> {
-        ctx.report(SolverReport::closed_form("closed_form"));
         Ok(life(&case, ctx))
     }
 }
