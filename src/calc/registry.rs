@@ -25,6 +25,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<journal::plain::PlainJournal>(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl_film::EhlFilm>(),
+    Entry::of::<contact::ehl::Ehl>(),
     Entry::of::<contact::flash_temperature::FlashTemperature>(),
     Entry::of::<rolling::kinematics::Kinematics>(),
     Entry::of::<rolling::life::Life>(),

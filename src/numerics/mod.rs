@@ -1,5 +1,6 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
 pub mod elliptic;
+pub mod half_space;
 pub mod reynolds;
 pub mod roots;

@@ -2,6 +2,7 @@
 //! subsurface stresses under them (Hamrock ch. 21.3.1; Stachowiak & Batchelor §7.3; Khonsari &
 //! Booser §14.2–14.3; Johnson, *Contact Mechanics*, ch. 3–4).
 
+pub mod ehl;
 pub mod ehl_film;
 pub mod flash_temperature;
 pub mod hertz;

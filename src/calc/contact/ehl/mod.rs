@@ -1,0 +1,732 @@
+//! `POST /v1/contacts/ehl`: numerical elastohydrodynamic lubrication of a line contact —
+//! Reynolds with Barus or Roelands viscosity and Dowson–Higginson density, half-space elastic
+//! deformation, load balance and cavitation by complementarity, solved by a fully coupled
+//! Newton method on nested grids with Richardson extrapolation ([`line`]); traction from the
+//! converged field on request.
+//!
+//! Conventions are the film-formula room's (`/v1/contacts/ehl-film`): E′ = 2/Σ(1 − ν²)/E,
+//! R_x the reduced radius along the entrainment direction x, ū the mean surface speed. Moes'
+//! groups M = W′(2U)^(−1/2), L = G(2U)^(1/4) with U = η₀ū/(E′R_x), W′ = w/(E′R_x), G = αE′.
+
+pub mod fluid;
+pub mod line;
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use self::fluid::Fluid;
+use self::line::{interpolate, LineFailure, LineProblem, LineSolution};
+use super::ehl_film::{dowson_higginson, pan_hamrock, Groups, MoesAsymptotes};
+use super::hertz::{BodySpec, Hertz, HertzCase, HertzInput, LineSpec};
+use crate::calc::lubricant::model::PressureLaw;
+use crate::calc::lubricant::{Lubricant, LubricantSpec};
+use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::effects::{Criterion, Decision, Mode};
+use crate::fidelity::{FidelityRequest, Level, SolverReport};
+
+pub struct Ehl;
+
+/// Highest entrainment speed accepted, m/s.
+const MAX_SPEED_M_S: f64 = 1e3;
+/// Largest slide-to-roll ratio |u₁ − u₂|/ū: 2 is pure sliding.
+const MAX_SLIDE_ROLL: f64 = 2.0;
+/// Moes' load parameter range the solver accepts: below 0.1 the contact is a rigid
+/// hydrodynamic one (no EHL), above 10⁴ the Hertz zone is beyond any affordable grid.
+const MOES_M_RANGE: (f64, f64) = (0.1, 1e4);
+/// Moes' material parameter range (L = 0 is isoviscous; the Moes map ends at about 25).
+const MOES_L_MAX: f64 = 50.0;
+/// Cells (coarse, fine) of the nested grids per fidelity level.
+const FAST_CELLS: usize = 64;
+const STANDARD_CELLS: usize = 128;
+const HIGH_CELLS: usize = 256;
+/// Explicit grids: the fine cell count.
+const CUSTOM_CELLS: (u32, u32) = (32, 2048);
+/// Relative central-film error estimate above which the solve goes on to finer grids.
+const REFINE_ABOVE: f64 = 0.01;
+/// Density rise ρ(p_h)/ρ₀ − 1 above which `auto` applies compressibility.
+const COMPRESSIBILITY_THRESHOLD: f64 = 0.01;
+/// αp_h above which `auto` applies piezoviscosity (below it η changes by < 10 % over the
+/// contact: the isoviscous regimes).
+const PIEZOVISCOSITY_THRESHOLD: f64 = 0.1;
+
+/// Effects this calculation understands.
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EhlEffects {
+    /// Dowson–Higginson density ρ/ρ₀ = 1 + 0.6p/(1 + 1.7p), p in GPa (Khonsari eq. 2.20).
+    /// `auto` applies it when the density rises by more than 1 % at the Hertz pressure.
+    #[serde(default)]
+    pub compressibility: Mode,
+    /// The lubricant's pressure–viscosity law (Barus or Roelands). `auto` applies it when
+    /// αp_h > 0.1; `off` solves the isoviscous problem.
+    #[serde(default)]
+    pub piezoviscosity: Mode,
+}
+
+/// Shear law for traction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum TractionModel {
+    /// τ = ηγ̇ (overflows for realistic αp_h: Stachowiak §7.7; bounded here only by the
+    /// limiting shear stress if given).
+    Newtonian,
+    /// Eyring: τ = τ₀ asinh(ηγ̇/τ₀) (Stachowiak eq. 7.52).
+    Eyring,
+}
+
+/// Traction request: the sliding shear integrated over the converged film.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct TractionSpec {
+    pub model: TractionModel,
+    /// Eyring stress τ₀, Pa (> 0, at most 1e9; typically 2–20 MPa for mineral oils), required
+    /// by `eyring`.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 5e6)]
+    pub eyring_stress_pa: Option<Positive>,
+    /// Limiting shear stress as a fraction of the local pressure, τ_L = γp (0 < γ ≤ 1;
+    /// typically 0.05–0.1): the shear stress is capped at it (Stachowiak §7.7 describes the
+    /// limit without a formula; the proportional form is the common one).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.0, example = 0.08)]
+    pub limiting_shear_coefficient: Option<Positive>,
+}
+
+/// Request: a lubricated line contact of two cylinders (axes along y), rolling along x.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct EhlInput {
+    /// The first body, as in `/v1/contacts/hertz` (a cylinder: `radius_y_m` absent).
+    pub body1: BodySpec,
+    /// The second body.
+    pub body2: BodySpec,
+    /// Normal load on the contact length, N (> 0, at most 1e12).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 5000.0)]
+    pub load_n: Positive,
+    /// The contact length (the numerical solver is for line contacts).
+    pub line: LineSpec,
+    /// Mean entrainment speed ū = (u₁ + u₂)/2 along x, m/s (> 0, at most 1000): the mean, not
+    /// the sum.
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1000.0, example = 2.0)]
+    pub entrainment_speed_m_s: Positive,
+    /// The lubricant; it needs a pressure–viscosity law (Barus α or Roelands Z) unless
+    /// `effects.piezoviscosity` is `off`.
+    pub lubricant: LubricantSpec,
+    /// Temperature of the oil entering the contact, °C (isothermal solution: η₀ is taken here).
+    #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
+    pub temperature_c: Celsius,
+    /// Slide-to-roll ratio s = |u₁ − u₂|/ū, 0 … 2 (default 0); the sliding speed is sū.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 2.0, example = 0.05)]
+    pub slide_roll_ratio: Option<NonNegative>,
+    /// Traction from the converged film, on request (needs a slide-to-roll ratio > 0).
+    pub traction: Option<TractionSpec>,
+    /// `fast`, `standard` (default) or `high`: nested grids of 64/128, 128/256 or 256/512
+    /// cells with Richardson extrapolation, refined further while the estimated error of the
+    /// central film exceeds 1 %; or `{"grid": [cells, 1]}` for an explicit fine grid
+    /// (32 … 2048 cells, the coarse grid half of it).
+    #[serde(default)]
+    pub fidelity: FidelityRequest,
+    /// Return the pressure and film profiles along x.
+    #[serde(default)]
+    pub include_profiles: bool,
+    #[serde(default)]
+    pub effects: EhlEffects,
+}
+
+/// The validated case.
+#[derive(Debug, Clone)]
+pub struct EhlCase {
+    hertz: HertzCase,
+    load_n: f64,
+    length_m: f64,
+    speed_m_s: f64,
+    lubricant: Lubricant,
+    temperature_c: f64,
+    slide_roll_ratio: f64,
+    traction: Option<TractionSpec>,
+    cells: Cells,
+    include_profiles: bool,
+    effects: EhlEffects,
+}
+
+/// The grids a request asks for.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Cells {
+    level: Level,
+    /// The fine grid of the first pair.
+    fine: usize,
+    /// Refinement stops after this fine grid.
+    finest: usize,
+}
+
+impl Validate for EhlInput {
+    type Valid = EhlCase;
+    fn validate(self) -> Result<EhlCase, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let hertz = HertzInput {
+            body1: self.body1,
+            body2: self.body2,
+            load_n: self.load_n,
+            line: Some(self.line),
+            fidelity: FidelityRequest::Level(Level::Standard),
+            closed_form: None,
+        }
+        .validate()
+        .map_err(|mut e| errors.append(&mut e))
+        .ok();
+        let speed = self.entrainment_speed_m_s.get();
+        if speed > MAX_SPEED_M_S {
+            errors.push(FieldError::new(
+                "/entrainment_speed_m_s",
+                format!("must be at most {MAX_SPEED_M_S} m/s, got {speed}"),
+            ));
+        }
+        let lubricant = self
+            .lubricant
+            .parse("/lubricant")
+            .map_err(|mut e| errors.append(&mut e))
+            .ok();
+        if let Some(l) = &lubricant {
+            if l.pressure_law.is_none() && self.effects.piezoviscosity != Mode::Off {
+                errors.push(FieldError::new(
+                    "/lubricant",
+                    "an EHL solution needs a pressure–viscosity law: give pressure_viscosity_coefficient_1_pa (Barus α) or roelands_pressure_viscosity_index (Z), or set effects.piezoviscosity to off",
+                ));
+            }
+        }
+        let slide_roll_ratio = self.slide_roll_ratio.map_or(0.0, NonNegative::get);
+        if slide_roll_ratio > MAX_SLIDE_ROLL {
+            errors.push(FieldError::new(
+                "/slide_roll_ratio",
+                format!("must be within [0, {MAX_SLIDE_ROLL}] (2 is pure sliding), got {slide_roll_ratio}"),
+            ));
+        }
+        if let Some(t) = self.traction {
+            if slide_roll_ratio == 0.0 {
+                errors.push(FieldError::new(
+                    "/traction",
+                    "traction needs sliding: give slide_roll_ratio > 0",
+                ));
+            }
+            if t.model == TractionModel::Eyring && t.eyring_stress_pa.is_none() {
+                errors.push(FieldError::new(
+                    "/traction/eyring_stress_pa",
+                    "the Eyring model needs the Eyring stress τ₀ (typically 2–20 MPa)",
+                ));
+            }
+            if t.eyring_stress_pa.is_some_and(|s| s.get() > 1e9) {
+                errors.push(FieldError::new(
+                    "/traction/eyring_stress_pa",
+                    "must be at most 1e9 Pa",
+                ));
+            }
+            if t.limiting_shear_coefficient.is_some_and(|s| s.get() > 1.0) {
+                errors.push(FieldError::new(
+                    "/traction/limiting_shear_coefficient",
+                    "must be within (0, 1]",
+                ));
+            }
+        }
+        let cells = match self.fidelity {
+            FidelityRequest::Level(Level::ClosedForm) => {
+                errors.push(FieldError::new(
+                    "/fidelity",
+                    "the numerical EHL solver has fast, standard and high levels; the closed-form films are at /v1/contacts/ehl-film",
+                ));
+                None
+            }
+            FidelityRequest::Level(level) => {
+                let fine = match level {
+                    Level::Fast => 2 * FAST_CELLS,
+                    Level::High => 2 * HIGH_CELLS,
+                    _ => 2 * STANDARD_CELLS,
+                };
+                Some(Cells {
+                    level,
+                    fine,
+                    finest: (fine * 4).max(1024),
+                })
+            }
+            FidelityRequest::Custom(custom) => match custom.grid {
+                Some([n, 1]) if (CUSTOM_CELLS.0..=CUSTOM_CELLS.1).contains(&n) && n % 2 == 0 => {
+                    Some(Cells {
+                        level: Level::Standard,
+                        fine: n as usize,
+                        finest: n as usize,
+                    })
+                }
+                _ => {
+                    errors.push(FieldError::new(
+                        "/fidelity/grid",
+                        format!(
+                            "must be [cells, 1] with an even cell count in {}…{}",
+                            CUSTOM_CELLS.0, CUSTOM_CELLS.1
+                        ),
+                    ));
+                    None
+                }
+            },
+        };
+        match (errors.is_empty(), hertz, lubricant, cells) {
+            (true, Some(hertz), Some(lubricant), Some(cells)) => Ok(EhlCase {
+                hertz,
+                load_n: self.load_n.get(),
+                length_m: self.line.length_m.get(),
+                speed_m_s: speed,
+                lubricant,
+                temperature_c: self.temperature_c.get(),
+                slide_roll_ratio,
+                traction: self.traction,
+                cells,
+                include_profiles: self.include_profiles,
+                effects: self.effects,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// Profiles along x.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct EhlProfiles {
+    /// Positions along x from the contact centre, m (the entrainment is towards +x).
+    pub x_m: Vec<f64>,
+    pub pressure_pa: Vec<f64>,
+    pub film_m: Vec<f64>,
+}
+
+/// Traction from the converged film.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct EhlTraction {
+    pub model: TractionModel,
+    /// Sliding (shear) traction force over the contact length, N.
+    pub traction_force_n: f64,
+    /// Traction coefficient F_t/F.
+    pub traction_coefficient: f64,
+    /// Fraction of the pressurised contact where the limiting shear stress caps τ (0 without it).
+    pub limited_fraction: f64,
+}
+
+/// A closed-form film to compare with.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct EhlFormulaComparison {
+    /// `pan_hamrock_central`, `pan_hamrock_min`, `dowson_higginson_min` or `moes_central`.
+    pub formula: String,
+    pub film_m: f64,
+    /// (numerical − formula)/formula.
+    pub deviation: f64,
+}
+
+/// Result.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct EhlOutput {
+    /// Film at the contact centre x = 0, m.
+    pub central_film_thickness_m: f64,
+    /// Smallest film, m (in the outlet constriction under heavy load).
+    pub min_film_thickness_m: f64,
+    /// Highest pressure, Pa (the outlet spike when there is one).
+    pub max_pressure_pa: f64,
+    /// Where the highest pressure is, m from the centre.
+    pub max_pressure_position_m: f64,
+    /// Where the film cavitates (the outlet meniscus), m from the centre.
+    pub cavitation_position_m: f64,
+    /// Hertz half-width b, m, and pressure p_h, Pa (the dry contact under the same load).
+    pub hertz_half_width_m: f64,
+    pub hertz_pressure_pa: f64,
+    /// Moes' M = W′(2U)^(−1/2) and L = G(2U)^(1/4).
+    pub moes_load_parameter: f64,
+    pub moes_material_parameter: f64,
+    /// U = η₀ū/(E′R_x), G = αE′ (0 for an isoviscous solve), W′ = w/(E′R_x).
+    pub speed_parameter: f64,
+    pub materials_parameter: f64,
+    pub load_parameter: f64,
+    pub effective_modulus_pa: f64,
+    pub reduced_radius_x_m: f64,
+    pub viscosity_pa_s: f64,
+    /// The closed-form films of `/v1/contacts/ehl-film` beside the numerical ones (the
+    /// published band: the fits scatter by about ±10 % among themselves).
+    pub formulas: Vec<EhlFormulaComparison>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub traction: Option<EhlTraction>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub profiles: Option<EhlProfiles>,
+}
+
+impl Calculation for Ehl {
+    const PATH: &'static str = "/v1/contacts/ehl";
+    const SUMMARY: &'static str = "Numerical EHL of a line contact: film, pressure spike, traction";
+    const DESCRIPTION: &'static str = "Isothermal elastohydrodynamic line contact solved numerically: Reynolds (finite volumes, second-order upwind Couette flux) with the lubricant's Barus or Roelands viscosity and Dowson–Higginson density, half-space elastic deformation (exact cell integrals, the Hertz part analytic), load balance ∫p dx = w, and cavitation by complementarity (p ≥ 0, primal–dual active set) — all coupled in one Newton solve with an exact dense Jacobian (Venner & Lubrecht 2000 ch. 8 scaling; Stachowiak §7.4; Khonsari §15.5). Grids cluster at the inlet edge and the outlet spike; each level solves two nested grids and Richardson-extrapolates the films, reporting the difference as the error estimate, and refines on its own while that exceeds 1 %. Converges across the Moes map up to M = 1000 at L = 10; a Newton solve that stalls answers 422 with its residual. Traction (Newtonian or Eyring, optionally capped by a limiting shear stress γp) from the converged field. Conventions: E′ = 2/Σ(1 − ν²)/E, ū the mean speed, x the entrainment direction, M = W′(2U)^−½, L = G(2U)^¼.";
+    const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &["compressibility", "piezoviscosity"];
+    const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "pressure_viscosity_coefficient_1_pa": 2e-8}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
+
+    type Input = EhlInput;
+    type Output = EhlOutput;
+
+    fn run(case: EhlCase, ctx: &mut Context) -> Result<EhlOutput, CalcError> {
+        let hertz = Hertz::run(case.hertz.clone(), ctx)?;
+        ctx.warnings
+            .retain(|w| w.code != "approach_undefined_for_flat");
+        let t = case.temperature_c;
+        let eta0 = case.lubricant.viscosity_pa_s(t);
+        if !(eta0.is_finite() && eta0 > 0.0) {
+            return Err(CalcError::impossible(
+                "/temperature_c",
+                format!("the lubricant's viscosity law has no finite positive value at {t} °C"),
+            ));
+        }
+        let e = hertz.effective_modulus_pa;
+        let rx = hertz.reduced_radius_x_m;
+        let b = hertz.half_width_m.unwrap_or(f64::NAN);
+        let ph = hertz.max_pressure_pa;
+        let law = pressure_law(&case, eta0, ph, ctx)?;
+        let alpha = law.map_or(0.0, |l| l.alpha_1_pa(eta0));
+        let line_load = case.load_n / case.length_m;
+        let groups = Groups {
+            u: eta0 * case.speed_m_s / (e * rx),
+            g: alpha * e,
+            w: line_load / (e * rx),
+        };
+        let two_u = 2.0 * groups.u;
+        let (m, l) = (groups.w / two_u.sqrt(), groups.g * two_u.powf(0.25));
+        if !(MOES_M_RANGE.0..=MOES_M_RANGE.1).contains(&m) || l > MOES_L_MAX {
+            return Err(CalcError::impossible(
+                "/load_n",
+                format!("Moes' M = {m:.4e} and L = {l:.4e} are outside the solver's map (M {}…{}, L ≤ {MOES_L_MAX}): below M = 0.1 the contact is rigid–hydrodynamic, above 10⁴ the Hertz zone cannot be resolved", MOES_M_RANGE.0, MOES_M_RANGE.1),
+            ));
+        }
+        let rise = fluid::Fluid {
+            law: PressureLaw::Barus { alpha_1_pa: 0.0 },
+            eta0_pa_s: eta0,
+            hertz_pressure_pa: ph,
+            compressible: true,
+        }
+        .density(1.0)
+        .0 - 1.0;
+        let compressible = decide(
+            ctx,
+            "compressibility",
+            case.effects.compressibility,
+            Criterion {
+                name: "density_rise_at_hertz_pressure",
+                value: rise,
+                threshold: COMPRESSIBILITY_THRESHOLD,
+            },
+            "Dowson–Higginson density",
+        );
+        let moes_h = MoesAsymptotes::new(m, l).central();
+        let film_guess = std::f64::consts::PI * moes_h / (8.0 * m);
+        let problem = LineProblem {
+            fluid: Fluid {
+                law: law.unwrap_or(PressureLaw::Barus { alpha_1_pa: 0.0 }),
+                eta0_pa_s: eta0,
+                hertz_pressure_pa: ph,
+                compressible,
+            },
+            lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
+            inlet: -(60.0 * film_guess).sqrt().max(4.5),
+            outlet: (3.0 * film_guess).sqrt().max(1.5),
+            film_guess,
+        };
+        let solved = solve_nested(&problem, case.cells, ctx)?;
+        let scale = b * b / rx;
+        let fine = &solved.fine;
+        let (p_index, &p_max) = fine
+            .pressure
+            .iter()
+            .enumerate()
+            .max_by(|a, b| a.1.total_cmp(b.1))
+            .expect("non-empty grid");
+        let cavitation = fine
+            .pressure
+            .iter()
+            .rposition(|&p| p > 0.0)
+            .map_or(fine.x[fine.x.len() - 1], |i| {
+                fine.x[(i + 1).min(fine.x.len() - 1)]
+            });
+        let central = solved.central * scale;
+        let min = solved.min * scale;
+        let (ph_central, ph_min) = pan_hamrock(&groups, groups.w);
+        let compare = |formula: &str, h: f64, numerical: f64| EhlFormulaComparison {
+            formula: formula.to_owned(),
+            film_m: h * rx,
+            deviation: numerical / (h * rx) - 1.0,
+        };
+        let mut formulas = vec![compare("moes_central", moes_h * two_u.sqrt(), central)];
+        if alpha > 0.0 {
+            formulas.push(compare("pan_hamrock_central", ph_central, central));
+            formulas.push(compare("pan_hamrock_min", ph_min, min));
+            formulas.push(compare(
+                "dowson_higginson_min",
+                dowson_higginson(&groups, groups.w),
+                min,
+            ));
+        }
+        let traction = case
+            .traction
+            .map(|spec| traction(&spec, &problem.fluid, fine, &case, b, scale));
+        let profiles = case.include_profiles.then(|| EhlProfiles {
+            x_m: fine.x.iter().map(|x| x * b).collect(),
+            pressure_pa: fine.pressure.iter().map(|p| p * ph).collect(),
+            film_m: fine.film.iter().map(|h| h * scale).collect(),
+        });
+        Ok(EhlOutput {
+            central_film_thickness_m: central,
+            min_film_thickness_m: min,
+            max_pressure_pa: p_max * ph,
+            max_pressure_position_m: fine.x[p_index] * b,
+            cavitation_position_m: cavitation * b,
+            hertz_half_width_m: b,
+            hertz_pressure_pa: ph,
+            moes_load_parameter: m,
+            moes_material_parameter: l,
+            speed_parameter: groups.u,
+            materials_parameter: groups.g,
+            load_parameter: groups.w,
+            effective_modulus_pa: e,
+            reduced_radius_x_m: rx,
+            viscosity_pa_s: eta0,
+            formulas,
+            traction,
+            profiles,
+        })
+    }
+}
+
+fn decide(ctx: &mut Context, effect: &'static str, mode: Mode, c: Criterion, what: &str) -> bool {
+    let decision = Decision::decide(mode, c, what);
+    let applied = decision.applied;
+    ctx.decide(effect, decision);
+    applied
+}
+
+/// The pressure–viscosity law to solve with (None: isoviscous), after the piezoviscosity
+/// decision.
+fn pressure_law(
+    case: &EhlCase,
+    eta0: f64,
+    ph: f64,
+    ctx: &mut Context,
+) -> Result<Option<PressureLaw>, CalcError> {
+    let Some(law) = case.lubricant.pressure_law else {
+        ctx.decide(
+            "piezoviscosity",
+            Decision::not_applicable(
+                Mode::Off,
+                "piezoviscosity: requested off and the lubricant has no pressure–viscosity law",
+            ),
+        );
+        return Ok(None);
+    };
+    let alpha = law.alpha_1_pa(eta0);
+    if let PressureLaw::Roelands { .. } = law {
+        if !(alpha.is_finite() && alpha > 0.0) {
+            return Err(CalcError::impossible(
+                "/lubricant",
+                format!("Roelands' law needs η₀ > 6.3e-5 Pa·s (log₁₀η₀[mPa·s] + 1.2 > 0); η₀ = {eta0:.4e} Pa·s: give the Barus coefficient for so thin a fluid"),
+            ));
+        }
+    }
+    let applied = decide(
+        ctx,
+        "piezoviscosity",
+        case.effects.piezoviscosity,
+        Criterion {
+            name: "alpha_times_hertz_pressure",
+            value: alpha * ph,
+            threshold: PIEZOVISCOSITY_THRESHOLD,
+        },
+        law.name(),
+    );
+    Ok(applied.then_some(law))
+}
+
+/// The fine-grid field and the Richardson-extrapolated films.
+struct Nested {
+    fine: LineSolution,
+    central: f64,
+    min: f64,
+}
+
+/// Solve on a coarse and a fine grid (the coarse solution starts the fine one), extrapolate the
+/// films (second order: the observed ratio of successive differences is about 4), and refine
+/// while the estimated error exceeds [`REFINE_ABOVE`].
+fn solve_nested(
+    problem: &LineProblem,
+    cells: Cells,
+    ctx: &mut Context,
+) -> Result<Nested, CalcError> {
+    let budget = ctx.budget();
+    let failure = |f: LineFailure, cells: usize| {
+        match f {
+        LineFailure::DeadlineExceeded => CalcError::DeadlineExceeded,
+        LineFailure::NotConverged { residual, iterations } => CalcError::impossible(
+            "/load_n",
+            format!("the Newton solve on {cells} cells stalled after {iterations} iterations with scaled residual {residual:.3e}: this load and speed are beyond the solver (try another fidelity)"),
+        ),
+    }
+    };
+    let films = |s: &LineSolution| {
+        let central = interpolate(&s.x, &s.film, 0.0);
+        let min = s.film.iter().copied().fold(f64::INFINITY, f64::min);
+        (central, min)
+    };
+    let mut fine_cells = cells.fine;
+    let mut coarse = problem
+        .solve(fine_cells / 2, None, &budget)
+        .map_err(|f| failure(f, fine_cells / 2))?;
+    let mut iterations = coarse.iterations;
+    loop {
+        let fine = problem
+            .solve(fine_cells, Some(&coarse), &budget)
+            .map_err(|f| failure(f, fine_cells))?;
+        iterations += fine.iterations;
+        let (c0, m0) = films(&coarse);
+        let (c1, m1) = films(&fine);
+        let central = c1 + (c1 - c0) / 3.0;
+        let min = m1 + (m1 - m0) / 3.0;
+        let error = ((c1 - c0) / 3.0 / central).abs();
+        let resolved = central > 0.0 && min > 0.0 && m1 > 0.0;
+        if (resolved && error <= REFINE_ABOVE) || fine_cells * 2 > cells.finest {
+            if !resolved {
+                return Err(CalcError::impossible(
+                    "/load_n",
+                    format!("the film is not resolved on {fine_cells} cells (central {c1:.3e}, minimum {m1:.3e} in units of b²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+                ));
+            }
+            if error > REFINE_ABOVE {
+                ctx.warn(
+                    "grid_limited",
+                    format!("the central film's estimated error {:.2} % exceeds 1 % on the finest grid tried ({fine_cells} cells)", error * 100.0),
+                );
+            }
+            ctx.report(SolverReport {
+                method: "newton_finite_volume_richardson".to_owned(),
+                fidelity: cells.level,
+                grid: Some(vec![fine_cells as u32, 1]),
+                iterations,
+                residual: Some(fine.residual),
+                error_estimate: Some(error),
+                elapsed_ms: 0.0,
+            });
+            return Ok(Nested { fine, central, min });
+        }
+        coarse = fine;
+        fine_cells *= 2;
+    }
+}
+
+/// Sliding traction ∫τ dx · length over the pressurised film, with the shear rate γ̇ = sū/h
+/// and the local viscosity η(p).
+fn traction(
+    spec: &TractionSpec,
+    fluid: &Fluid,
+    s: &LineSolution,
+    case: &EhlCase,
+    b: f64,
+    scale: f64,
+) -> EhlTraction {
+    let sliding = case.slide_roll_ratio * case.speed_m_s;
+    let ph = fluid.hertz_pressure_pa;
+    let n = s.x.len();
+    let mut force_per_length = 0.0;
+    let (mut limited, mut pressurised) = (0.0, 0.0);
+    for i in 0..n {
+        if s.pressure[i] <= 0.0 {
+            continue;
+        }
+        let width = 0.5 * (s.x[(i + 1).min(n - 1)] - s.x[i.saturating_sub(1)]) * b;
+        let h = s.film[i].max(1e-12) * scale;
+        let eta = fluid.eta0_pa_s * fluid.ln_viscosity(s.pressure[i]).0.exp();
+        let newtonian = eta * sliding / h;
+        let mut tau = match (spec.model, spec.eyring_stress_pa) {
+            (TractionModel::Eyring, Some(t0)) => t0.get() * (newtonian / t0.get()).asinh(),
+            _ => newtonian,
+        };
+        pressurised += width;
+        if let Some(gamma) = spec.limiting_shear_coefficient {
+            let cap = gamma.get() * s.pressure[i] * ph;
+            if tau > cap {
+                tau = cap;
+                limited += width;
+            }
+        }
+        force_per_length += tau * width;
+    }
+    let force = force_per_length * case.length_m;
+    EhlTraction {
+        model: spec.model,
+        traction_force_n: force,
+        traction_coefficient: force / case.load_n,
+        limited_fraction: if pressurised > 0.0 {
+            limited / pressurised
+        } else {
+            0.0
+        },
+    }
+}
+
+#[cfg(test)]
+mod experiments {
+    use super::fluid::Fluid;
+    use super::line::LineProblem;
+    use crate::calc::contact::ehl_film::MoesAsymptotes;
+    use crate::calc::lubricant::model::PressureLaw;
+    use crate::calc::Context;
+    use std::time::Instant;
+
+    pub fn problem(m: f64, l: f64, law: Option<PressureLaw>) -> LineProblem {
+        let e = 2.26e11;
+        let alpha = 2e-8;
+        let g = alpha * e;
+        let two_u = (l / g).powi(4);
+        let w = m * two_u.sqrt();
+        let ph = e * (w / (2.0 * std::f64::consts::PI)).sqrt();
+        let hm = MoesAsymptotes::new(m, l).central();
+        LineProblem {
+            fluid: Fluid {
+                law: law.unwrap_or(PressureLaw::Barus { alpha_1_pa: alpha }),
+                eta0_pa_s: 0.04,
+                hertz_pressure_pa: ph,
+                compressible: true,
+            },
+            lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
+            inlet: -4.5,
+            outlet: 1.5,
+            film_guess: std::f64::consts::PI * hm / (8.0 * m),
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn explore() {
+        let ctx = Context::new(
+            Instant::now() + std::time::Duration::from_secs(60),
+            Default::default(),
+        );
+        for (m, l) in [(20.0, 10.0), (50.0, 10.0), (200.0, 10.0), (1000.0, 10.0)] {
+            let p = problem(m, l, Some(PressureLaw::Roelands { z: 0.6 }));
+            let moes = std::f64::consts::PI * MoesAsymptotes::new(m, l).central() / (8.0 * m);
+            let mut prev: Option<super::line::LineSolution> = None;
+            for cells in [64usize, 128, 256, 512, 1024] {
+                let t = Instant::now();
+                let r = p.solve(cells, prev.as_ref(), &ctx.budget());
+                match r {
+                    Ok(s) => {
+                        let hc = super::line::interpolate(&s.x, &s.film, 0.0);
+                        let hmin = s.film.iter().cloned().fold(f64::INFINITY, f64::min);
+                        let pmax = s.pressure.iter().cloned().fold(0.0, f64::max);
+                        println!("M={m} L={l} N={cells}: it={} res={:.1e} Hc={hc:.6e} Hmin={hmin:.6e} Pmax={pmax:.4} moes={moes:.4e} ratio={:.4} {:.1} ms", s.iterations, s.residual, hc/moes, t.elapsed().as_secs_f64()*1e3);
+                        prev = Some(s);
+                    }
+                    Err(e) => {
+                        println!(
+                            "M={m} L={l} N={cells}: {e:?} {:.1} ms",
+                            t.elapsed().as_secs_f64() * 1e3
+                        );
+                        prev = None;
+                    }
+                }
+            }
+        }
+    }
+}
