@@ -282,13 +282,14 @@ impl LineProblem {
     /// complementarity violation at cavitated ones, and the relative load error.
     fn merit(state: &State, pressure: &[f64]) -> f64 {
         let n = pressure.len();
-        let mut worst = (state.load_error / FRAC_PI_2).abs();
-        for i in 1..n - 1 {
-            // min(P, −s) = 0 with s the Gauss–Seidel increment: P ≥ 0, s ≤ 0, P·s = 0.
-            let step = state.residual[i] / state.diagonal[i];
-            worst = worst.max(pressure[i].min(-step).abs());
-        }
-        worst
+        // min(P, −s) = 0 with s the Gauss–Seidel increment: P ≥ 0, s ≤ 0, P·s = 0.
+        (1..n - 1)
+            .map(|i| {
+                pressure[i]
+                    .min(-state.residual[i] / state.diagonal[i])
+                    .abs()
+            })
+            .fold((state.load_error / FRAC_PI_2).abs(), f64::max)
     }
 
     /// The Newton matrix and right-hand side over the unknowns [P₁ … P_{n−2}, H₀].

@@ -53,7 +53,7 @@ const PIEZOVISCOSITY_THRESHOLD: f64 = 0.1;
 /// Effects this calculation understands.
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct EhlEffects {
+pub struct NumericalEhlEffects {
     /// Dowson–Higginson density ρ/ρ₀ = 1 + 0.6p/(1 + 1.7p), p in GPa (Khonsari eq. 2.20).
     /// `auto` applies it when the density rises by more than 1 % at the Hertz pressure.
     #[serde(default)]
@@ -78,7 +78,7 @@ pub enum TractionModel {
 /// Traction request: the sliding shear integrated over the converged film.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct TractionSpec {
+pub struct NumericalEhlTractionSpec {
     pub model: TractionModel,
     /// Eyring stress τ₀, Pa (> 0, at most 1e9; typically 2–20 MPa for mineral oils), required
     /// by `eyring`.
@@ -94,7 +94,7 @@ pub struct TractionSpec {
 /// Request: a lubricated line contact of two cylinders (axes along y), rolling along x.
 #[derive(Debug, Clone, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct EhlInput {
+pub struct NumericalEhlInput {
     /// The first body, as in `/v1/contacts/hertz` (a cylinder: `radius_y_m` absent).
     pub body1: BodySpec,
     /// The second body.
@@ -118,7 +118,7 @@ pub struct EhlInput {
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 2.0, example = 0.05)]
     pub slide_roll_ratio: Option<NonNegative>,
     /// Traction from the converged film, on request (needs a slide-to-roll ratio > 0).
-    pub traction: Option<TractionSpec>,
+    pub traction: Option<NumericalEhlTractionSpec>,
     /// `fast`, `standard` (default) or `high`: nested grids of 64/128, 128/256 or 256/512
     /// cells with Richardson extrapolation, refined further while the estimated error of the
     /// central film exceeds 1 %; or `{"grid": [cells, 1]}` for an explicit fine grid
@@ -129,12 +129,12 @@ pub struct EhlInput {
     #[serde(default)]
     pub include_profiles: bool,
     #[serde(default)]
-    pub effects: EhlEffects,
+    pub effects: NumericalEhlEffects,
 }
 
 /// The validated case.
 #[derive(Debug, Clone)]
-pub struct EhlCase {
+pub struct NumericalEhlCase {
     hertz: HertzCase,
     load_n: f64,
     length_m: f64,
@@ -142,10 +142,10 @@ pub struct EhlCase {
     lubricant: Lubricant,
     temperature_c: f64,
     slide_roll_ratio: f64,
-    traction: Option<TractionSpec>,
+    traction: Option<NumericalEhlTractionSpec>,
     cells: Cells,
     include_profiles: bool,
-    effects: EhlEffects,
+    effects: NumericalEhlEffects,
 }
 
 /// The grids a request asks for.
@@ -158,9 +158,9 @@ struct Cells {
     finest: usize,
 }
 
-impl Validate for EhlInput {
-    type Valid = EhlCase;
-    fn validate(self) -> Result<EhlCase, Vec<FieldError>> {
+impl Validate for NumericalEhlInput {
+    type Valid = NumericalEhlCase;
+    fn validate(self) -> Result<NumericalEhlCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let hertz = HertzInput {
             body1: self.body1,
@@ -267,7 +267,7 @@ impl Validate for EhlInput {
             },
         };
         match (errors.is_empty(), hertz, lubricant, cells) {
-            (true, Some(hertz), Some(lubricant), Some(cells)) => Ok(EhlCase {
+            (true, Some(hertz), Some(lubricant), Some(cells)) => Ok(NumericalEhlCase {
                 hertz,
                 load_n: self.load_n.get(),
                 length_m: self.line.length_m.get(),
@@ -287,7 +287,7 @@ impl Validate for EhlInput {
 
 /// Profiles along x.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct EhlProfiles {
+pub struct NumericalEhlProfiles {
     /// Positions along x from the contact centre, m (the entrainment is towards +x).
     pub x_m: Vec<f64>,
     pub pressure_pa: Vec<f64>,
@@ -296,19 +296,19 @@ pub struct EhlProfiles {
 
 /// Traction from the converged film.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct EhlTraction {
+pub struct NumericalEhlTraction {
     pub model: TractionModel,
     /// Sliding (shear) traction force over the contact length, N.
     pub traction_force_n: f64,
     /// Traction coefficient F_t/F.
     pub traction_coefficient: f64,
-    /// Fraction of the pressurised contact where the limiting shear stress caps τ (0 without it).
-    pub limited_fraction: f64,
+    /// Share of the load carried where the limiting shear stress caps τ (0 without it).
+    pub limited_load_fraction: f64,
 }
 
 /// A closed-form film to compare with.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct EhlFormulaComparison {
+pub struct NumericalEhlFormula {
     /// `pan_hamrock_central`, `pan_hamrock_min`, `dowson_higginson_min` or `moes_central`.
     pub formula: String,
     pub film_m: f64,
@@ -318,7 +318,7 @@ pub struct EhlFormulaComparison {
 
 /// Result.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct EhlOutput {
+pub struct NumericalEhlOutput {
     /// Film at the contact centre x = 0, m.
     pub central_film_thickness_m: f64,
     /// Smallest film, m (in the outlet constriction under heavy load).
@@ -344,11 +344,11 @@ pub struct EhlOutput {
     pub viscosity_pa_s: f64,
     /// The closed-form films of `/v1/contacts/ehl-film` beside the numerical ones (the
     /// published band: the fits scatter by about ±10 % among themselves).
-    pub formulas: Vec<EhlFormulaComparison>,
+    pub formulas: Vec<NumericalEhlFormula>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub traction: Option<EhlTraction>,
+    pub traction: Option<NumericalEhlTraction>,
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub profiles: Option<EhlProfiles>,
+    pub profiles: Option<NumericalEhlProfiles>,
 }
 
 impl Calculation for Ehl {
@@ -359,11 +359,11 @@ impl Calculation for Ehl {
     const EFFECTS: &'static [&'static str] = &["compressibility", "piezoviscosity"];
     const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "pressure_viscosity_coefficient_1_pa": 2e-8}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
 
-    type Input = EhlInput;
-    type Output = EhlOutput;
+    type Input = NumericalEhlInput;
+    type Output = NumericalEhlOutput;
 
-    fn run(case: EhlCase, ctx: &mut Context) -> Result<EhlOutput, CalcError> {
-        let hertz = Hertz::run(case.hertz.clone(), ctx)?;
+    fn run(case: NumericalEhlCase, ctx: &mut Context) -> Result<NumericalEhlOutput, CalcError> {
+        let hertz = Hertz::run(case.hertz, ctx)?;
         ctx.warnings
             .retain(|w| w.code != "approach_undefined_for_flat");
         let t = case.temperature_c;
@@ -446,7 +446,7 @@ impl Calculation for Ehl {
         let central = solved.central * scale;
         let min = solved.min * scale;
         let (ph_central, ph_min) = pan_hamrock(&groups, groups.w);
-        let compare = |formula: &str, h: f64, numerical: f64| EhlFormulaComparison {
+        let compare = |formula: &str, h: f64, numerical: f64| NumericalEhlFormula {
             formula: formula.to_owned(),
             film_m: h * rx,
             deviation: numerical / (h * rx) - 1.0,
@@ -464,12 +464,18 @@ impl Calculation for Ehl {
         let traction = case
             .traction
             .map(|spec| traction(&spec, &problem.fluid, fine, &case, b, scale));
-        let profiles = case.include_profiles.then(|| EhlProfiles {
+        if let Some(t) = traction.as_ref().filter(|t| t.traction_coefficient > 1.0) {
+            ctx.warn(
+                "traction_exceeds_load",
+                format!("the traction coefficient {:.3e} exceeds 1: the {:?} shear law with the pressure–viscosity law overflows in the Hertz zone (Stachowiak §7.7); use the Eyring model and/or a limiting shear stress", t.traction_coefficient, t.model),
+            );
+        }
+        let profiles = case.include_profiles.then(|| NumericalEhlProfiles {
             x_m: fine.x.iter().map(|x| x * b).collect(),
             pressure_pa: fine.pressure.iter().map(|p| p * ph).collect(),
             film_m: fine.film.iter().map(|h| h * scale).collect(),
         });
-        Ok(EhlOutput {
+        Ok(NumericalEhlOutput {
             central_film_thickness_m: central,
             min_film_thickness_m: min,
             max_pressure_pa: p_max * ph,
@@ -502,7 +508,7 @@ fn decide(ctx: &mut Context, effect: &'static str, mode: Mode, c: Criterion, wha
 /// The pressure–viscosity law to solve with (None: isoviscous), after the piezoviscosity
 /// decision.
 fn pressure_law(
-    case: &EhlCase,
+    case: &NumericalEhlCase,
     eta0: f64,
     ph: f64,
     ctx: &mut Context,
@@ -618,13 +624,13 @@ fn solve_nested(
 /// Sliding traction ∫τ dx · length over the pressurised film, with the shear rate γ̇ = sū/h
 /// and the local viscosity η(p).
 fn traction(
-    spec: &TractionSpec,
+    spec: &NumericalEhlTractionSpec,
     fluid: &Fluid,
     s: &LineSolution,
-    case: &EhlCase,
+    case: &NumericalEhlCase,
     b: f64,
     scale: f64,
-) -> EhlTraction {
+) -> NumericalEhlTraction {
     let sliding = case.slide_roll_ratio * case.speed_m_s;
     let ph = fluid.hertz_pressure_pa;
     let n = s.x.len();
@@ -642,22 +648,22 @@ fn traction(
             (TractionModel::Eyring, Some(t0)) => t0.get() * (newtonian / t0.get()).asinh(),
             _ => newtonian,
         };
-        pressurised += width;
+        pressurised += s.pressure[i] * width;
         if let Some(gamma) = spec.limiting_shear_coefficient {
             let cap = gamma.get() * s.pressure[i] * ph;
             if tau > cap {
                 tau = cap;
-                limited += width;
+                limited += s.pressure[i] * width;
             }
         }
         force_per_length += tau * width;
     }
     let force = force_per_length * case.length_m;
-    EhlTraction {
+    NumericalEhlTraction {
         model: spec.model,
         traction_force_n: force,
         traction_coefficient: force / case.load_n,
-        limited_fraction: if pressurised > 0.0 {
+        limited_load_fraction: if pressurised > 0.0 {
             limited / pressurised
         } else {
             0.0
@@ -666,67 +672,257 @@ fn traction(
 }
 
 #[cfg(test)]
-mod experiments {
-    use super::fluid::Fluid;
-    use super::line::LineProblem;
-    use crate::calc::contact::ehl_film::MoesAsymptotes;
-    use crate::calc::lubricant::model::PressureLaw;
-    use crate::calc::Context;
-    use std::time::Instant;
+mod tests {
+    use serde_json::{json, Value};
 
-    pub fn problem(m: f64, l: f64, law: Option<PressureLaw>) -> LineProblem {
-        let e = 2.26e11;
-        let alpha = 2e-8;
-        let g = alpha * e;
-        let two_u = (l / g).powi(4);
-        let w = m * two_u.sqrt();
-        let ph = e * (w / (2.0 * std::f64::consts::PI)).sqrt();
-        let hm = MoesAsymptotes::new(m, l).central();
-        LineProblem {
-            fluid: Fluid {
-                law: law.unwrap_or(PressureLaw::Barus { alpha_1_pa: alpha }),
-                eta0_pa_s: 0.04,
-                hertz_pressure_pa: ph,
-                compressible: true,
-            },
-            lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
-            inlet: -4.5,
-            outlet: 1.5,
-            film_guess: std::f64::consts::PI * hm / (8.0 * m),
+    use super::*;
+    use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field};
+
+    const E_PRIME: f64 = 2.1e11 / (1.0 - 0.09);
+    const RX: f64 = 0.01;
+    const ETA0: f64 = 0.05;
+    const SPEED: f64 = 2.0;
+    const LENGTH: f64 = 0.01;
+
+    /// A steel roller pair (R_x = 10 mm, 10 mm long, ū = 2 m/s, η₀ = 0.05 Pa·s) loaded and
+    /// with α chosen to sit at Moes' (M, L); L = 0 is isoviscous.
+    fn at(m: f64, l: f64) -> Value {
+        let two_u = 2.0 * ETA0 * SPEED / (E_PRIME * RX);
+        let load = m * two_u.sqrt() * E_PRIME * RX * LENGTH;
+        let cylinder =
+            json!({"radius_x_m": 2.0 * RX, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3});
+        let mut lubricant = json!({"viscosity_pa_s": ETA0});
+        let mut effects = json!({});
+        if l > 0.0 {
+            lubricant["pressure_viscosity_coefficient_1_pa"] =
+                json!(l / (two_u.powf(0.25) * E_PRIME));
+        } else {
+            effects["piezoviscosity"] = json!("off");
+        }
+        json!({"body1": cylinder, "body2": cylinder, "load_n": load, "line": {"length_m": LENGTH},
+               "entrainment_speed_m_s": SPEED, "lubricant": lubricant, "temperature_c": 40,
+               "effects": effects})
+    }
+
+    /// Martin's rigid, isoviscous cylinder with the Reynolds exit condition, by quadrature of
+    /// dp/dx̂ ∝ (x̂² − γ²)/(1 + x̂²)³ from the inlet x̂_a (x̂ = x/√(2R h₀)): γ from p(γ) = 0, then
+    /// w = 24 η ū R/h₀ · I with I = −∫ x̂(x̂² − γ²)/(1 + x̂²)³ dx̂. Returns w h₀/(η ū R).
+    fn martin_coefficient(inlet: f64) -> f64 {
+        let integral = |f: &dyn Fn(f64) -> f64, a: f64, b: f64| {
+            let n = 200_000;
+            let d = (b - a) / n as f64;
+            (0..n).map(|k| f(a + (k as f64 + 0.5) * d) * d).sum::<f64>()
+        };
+        let pressure_at_exit =
+            |g: f64| integral(&|x| (x * x - g * g) / (1.0 + x * x).powi(3), inlet, g);
+        let (mut lo, mut hi) = (0.1, 1.0);
+        for _ in 0..60 {
+            let mid = 0.5 * (lo + hi);
+            // p(γ) falls as γ grows: positive below the root.
+            if pressure_at_exit(mid) > 0.0 {
+                lo = mid
+            } else {
+                hi = mid
+            }
+        }
+        let g = 0.5 * (lo + hi);
+        24.0 * -integral(&|x| x * (x * x - g * g) / (1.0 + x * x).powi(3), inlet, g)
+    }
+
+    #[test]
+    fn light_isoviscous_load_recovers_martins_rigid_cylinder() {
+        // M = 0.1, L = 0: elastic deformation is < 1 % of the film (Moes' H_EI/H_RI = 0.14).
+        let v = ok::<Ehl>(&at(0.1, 0.0));
+        let h0 = result_field(&v, "min_film_thickness_m");
+        let b = result_field(&v, "hertz_half_width_m");
+        let w = result_field(&v, "load_parameter") * E_PRIME * RX;
+        // The solver's inlet in x̂ units, from its domain rule X_a = −√(60 H_guess).
+        let film_guess = std::f64::consts::PI * MoesAsymptotes::new(0.1, 0.0).central() / 0.8;
+        let inlet = -(60.0 * film_guess).sqrt() * b / (2.0 * RX * h0).sqrt();
+        let c = martin_coefficient(inlet);
+        assert!(
+            (4.5..5.0).contains(&c),
+            "Martin coefficient {c} (4.90 from −∞)"
+        );
+        assert_rel(h0, c * ETA0 * SPEED * RX / w, 0.02, "rigid-isoviscous film");
+        assert_rel(
+            result_field(&v, "central_film_thickness_m"),
+            h0,
+            0.01,
+            "flat minimum at x = 0",
+        );
+    }
+
+    #[test]
+    fn films_sit_in_the_published_band_and_thin_with_load() {
+        // Piezoviscous–elastic contacts: Dowson–Higginson's h_min (Khonsari eq. 15.10) within
+        // ±15 % (the fits scatter that much among themselves), and h_c ≥ h_min.
+        let mut last = f64::INFINITY;
+        for m in [20.0, 50.0, 200.0] {
+            let v = ok::<Ehl>(&at(m, 10.0));
+            let formulas = v["result"]["formulas"].as_array().unwrap();
+            let dh = formulas
+                .iter()
+                .find(|f| f["formula"] == "dowson_higginson_min")
+                .unwrap();
+            let deviation = dh["deviation"].as_f64().unwrap();
+            assert!(
+                deviation.abs() < 0.15,
+                "M = {m}: h_min deviates {deviation} from Dowson–Higginson"
+            );
+            let central = result_field(&v, "central_film_thickness_m");
+            let min = result_field(&v, "min_film_thickness_m");
+            assert!(central > min && min > 0.0);
+            assert!(central < last, "h_c must fall with load");
+            last = central;
+            assert!(v["solver"]["error_estimate"].as_f64().unwrap() <= REFINE_ABOVE);
         }
     }
 
     #[test]
-    #[ignore]
-    fn explore() {
-        let ctx = Context::new(
-            Instant::now() + std::time::Duration::from_secs(60),
-            Default::default(),
+    fn heavy_load_converges_with_a_spike_and_a_flat_hertz_zone() {
+        // M = 1000, L = 10: αp_h ≈ 126, the edge of the Moes map the issue names.
+        let mut request = at(1000.0, 10.0);
+        request["include_profiles"] = json!(true);
+        let v = ok::<Ehl>(&request);
+        let r = &v["result"];
+        assert!(v["solver"]["error_estimate"].as_f64().unwrap() <= REFINE_ABOVE);
+        let b = r["hertz_half_width_m"].as_f64().unwrap();
+        // The pressure follows Hertz inside the contact: p(0) within 1 % of p_h.
+        let x: Vec<f64> = serde_json::from_value(r["profiles"]["x_m"].clone()).unwrap();
+        let p: Vec<f64> = serde_json::from_value(r["profiles"]["pressure_pa"].clone()).unwrap();
+        let ph = r["hertz_pressure_pa"].as_f64().unwrap();
+        assert_rel(interpolate(&x, &p, 0.0), ph, 0.01, "p(0) → p_h");
+        // The outlet spike: a local rise above the Hertz pressure just inside X = 1.
+        let spike = x.iter().zip(&p).any(|(&x, &p)| {
+            let x = x / b;
+            (0.95..1.0).contains(&x) && p / ph > (1.0 - x * x).sqrt() + 0.02
+        });
+        assert!(spike, "no outlet spike");
+        let (c, m) = (
+            r["central_film_thickness_m"].as_f64().unwrap(),
+            r["min_film_thickness_m"].as_f64().unwrap(),
         );
-        for (m, l) in [(20.0, 10.0), (50.0, 10.0), (200.0, 10.0), (1000.0, 10.0)] {
-            let p = problem(m, l, Some(PressureLaw::Roelands { z: 0.6 }));
-            let moes = std::f64::consts::PI * MoesAsymptotes::new(m, l).central() / (8.0 * m);
-            let mut prev: Option<super::line::LineSolution> = None;
-            for cells in [64usize, 128, 256, 512, 1024] {
-                let t = Instant::now();
-                let r = p.solve(cells, prev.as_ref(), &ctx.budget());
-                match r {
-                    Ok(s) => {
-                        let hc = super::line::interpolate(&s.x, &s.film, 0.0);
-                        let hmin = s.film.iter().cloned().fold(f64::INFINITY, f64::min);
-                        let pmax = s.pressure.iter().cloned().fold(0.0, f64::max);
-                        println!("M={m} L={l} N={cells}: it={} res={:.1e} Hc={hc:.6e} Hmin={hmin:.6e} Pmax={pmax:.4} moes={moes:.4e} ratio={:.4} {:.1} ms", s.iterations, s.residual, hc/moes, t.elapsed().as_secs_f64()*1e3);
-                        prev = Some(s);
-                    }
-                    Err(e) => {
-                        println!(
-                            "M={m} L={l} N={cells}: {e:?} {:.1} ms",
-                            t.elapsed().as_secs_f64() * 1e3
+        assert!(m > 0.0 && m < c && m > 0.7 * c, "h_min {m}, h_c {c}");
+    }
+
+    #[test]
+    fn refinement_agrees_within_the_error_estimate() {
+        // Source: a convergence study — standard's extrapolated film against the high level's.
+        let request = at(50.0, 10.0);
+        let standard = ok::<Ehl>(&request);
+        let mut high = request.clone();
+        high["fidelity"] = json!("high");
+        let high = ok::<Ehl>(&high);
+        let estimate = standard["solver"]["error_estimate"].as_f64().unwrap();
+        let (s, h) = (
+            result_field(&standard, "central_film_thickness_m"),
+            result_field(&high, "central_film_thickness_m"),
+        );
+        assert!(
+            ((s - h) / h).abs() <= estimate.max(2e-3),
+            "standard {s}, high {h}, estimate {estimate}"
+        );
+        assert_eq!(high["solver"]["grid"][0], 512);
+    }
+
+    #[test]
+    fn traction_meets_its_limits() {
+        let mut request = at(50.0, 10.0);
+        request["slide_roll_ratio"] = json!(0.02);
+        // Every point limited: the coefficient is the limiting-shear coefficient itself.
+        request["traction"] = json!({"model": "newtonian", "limiting_shear_coefficient": 0.01});
+        let v = ok::<Ehl>(&request);
+        let t = &v["result"]["traction"];
+        assert!(t["limited_load_fraction"].as_f64().unwrap() > 0.9);
+        assert_rel(
+            t["traction_coefficient"].as_f64().unwrap(),
+            0.01,
+            0.05,
+            "μ → γ",
+        );
+        // Eyring with a huge τ₀ is Newtonian (an isoviscous film, where ηγ̇ stays small); with a
+        // small one the traction is far lower.
+        let mut request = at(1.0, 0.0);
+        request["slide_roll_ratio"] = json!(0.5);
+        let run = |model: &str, tau0: f64| {
+            let mut r = request.clone();
+            r["traction"] = json!({"model": model, "eyring_stress_pa": tau0});
+            ok::<Ehl>(&r)["result"]["traction"]["traction_coefficient"]
+                .as_f64()
+                .unwrap()
+        };
+        let newtonian = run("newtonian", 1e6);
+        assert_rel(
+            run("eyring", 1e9),
+            newtonian,
+            1e-3,
+            "Eyring → Newtonian for τ₀ ≫ ηγ̇",
+        );
+        let eyring = run("eyring", 1e3);
+        assert!(eyring < 0.5 * newtonian && eyring > 0.0);
+        // A piezoviscous film without a cap: the Newtonian traction is unphysical and says so.
+        let mut request = at(50.0, 10.0);
+        request["slide_roll_ratio"] = json!(0.02);
+        request["traction"] = json!({"model": "newtonian"});
+        let v = ok::<Ehl>(&request);
+        assert!(v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w["code"] == "traction_exceeds_load"));
+    }
+
+    #[test]
+    fn the_moes_map_converges_or_is_refused_with_a_reason() {
+        // Hard cases stay stable: over M 0.1 … 10⁴ and L 0 … 20 every answer is finite films
+        // with h_min ≤ h_c, or a 422 that names the load.
+        for m in [0.1, 1.0, 10.0, 100.0, 1000.0, 1e4] {
+            for l in [0.0, 1.0, 5.0, 10.0, 20.0] {
+                match crate::calc::testing::post::<Ehl>(&at(m, l)) {
+                    Ok(v) => {
+                        let c = result_field(&v, "central_film_thickness_m");
+                        let h = result_field(&v, "min_film_thickness_m");
+                        let p = result_field(&v, "max_pressure_pa");
+                        assert!(
+                            c.is_finite() && h > 0.0 && h <= c * 1.0001 && p > 0.0,
+                            "M {m} L {l}"
                         );
-                        prev = None;
                     }
+                    Err(crate::calc::Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+                        assert_eq!(pointer, "/load_n", "M {m} L {l}");
+                    }
+                    Err(e) => panic!("M {m} L {l}: {e:?}"),
                 }
             }
         }
+    }
+
+    #[test]
+    fn bad_requests_name_their_fields() {
+        let mut r = at(50.0, 10.0);
+        r["traction"] = json!({"model": "eyring"});
+        assert_eq!(
+            invalid_pointers::<Ehl>(&r),
+            ["/traction", "/traction/eyring_stress_pa"]
+        );
+        let mut r = at(50.0, 10.0);
+        r["fidelity"] = json!("closed_form");
+        assert_eq!(invalid_pointers::<Ehl>(&r), ["/fidelity"]);
+        r["fidelity"] = json!({"grid": [33, 1]});
+        assert_eq!(invalid_pointers::<Ehl>(&r), ["/fidelity/grid"]);
+        let mut r = at(50.0, 10.0);
+        r["body1"]["radius_y_m"] = json!(0.01);
+        assert_eq!(invalid_pointers::<Ehl>(&r), ["/body1/radius_y_m"]);
+    }
+
+    #[test]
+    fn outside_the_map_is_refused_with_the_reason() {
+        let v = crate::calc::testing::post::<Ehl>(&at(0.01, 0.0));
+        let Err(crate::calc::Failure::Calc(CalcError::Impossible { pointer, message })) = v else {
+            panic!("expected an impossible case, got {v:?}");
+        };
+        assert_eq!(pointer, "/load_n");
+        assert!(message.contains("M = 1.0000e-2"), "{message}");
     }
 }
