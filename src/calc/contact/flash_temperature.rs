@@ -22,9 +22,14 @@
 //!   steady-conduction C = 4aK of eq. 3.49, as Example 3.2 uses it. The fit at Pe → 0 gives
 //!   3.705 aK, 7 % below 4aK (the uniform-flux disc against the isothermal one).
 //! - `jaeger` (Blok–Jaeger–Archard; Stachowiak & Batchelor Tables 7.5–7.7): the slow form for
-//!   L ≤ 0.1 and the fast form for L ≥ 5, per body. The intermediate range 0.1 < L < 5 needs
-//!   α (circular, given only at the two ends of the range) or C₁–C₄ (square and line, from
-//!   Fig. 7.30, which the text lacks): no formula, so such a body is refused (422).
+//!   L ≤ 0.1 and the fast form for L ≥ 5, per body. In the intermediate range 0.1 < L < 5 the
+//!   texts give only charts (α for circles, C₁–C₄ of Fig. 7.30, which the text lacks); there the
+//!   service integrates Jaeger's moving-source solution itself for a uniform flux
+//!   ([`super::moving_heat_source`]: the circle and the square as 3D sources, the line as the
+//!   infinitely long band the table's forms describe), which reproduces the square's and the
+//!   band's slow and fast forms at the range ends. For a circle the slow form is the isothermal
+//!   disc's 0.25 Q/(Ka) while the uniform flux gives 8/(3π²)·Q/(Ka) = 0.27 Q/(Ka): the mean
+//!   steps up 8 % as L crosses 0.1.
 //!   - Circular: slow T̄ = 0.25 Q/(Ka); fast T̄ = 0.308 (Q/(Ka))(χ/(Ua))^½, T_max = 1.64 T̄.
 //!     (The slow T_max of Table 7.5 is written for a plastic junction through the flow pressure
 //!     p_y, not for a given radius, so no slow maximum is reported.)
@@ -41,6 +46,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::moving_heat_source::{self, Shape};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{Level, SolverReport};
@@ -255,8 +261,7 @@ pub struct Conductance {
 }
 
 /// The conductances of `body` under `source` by `model` (see the module doc for the forms).
-/// `None` where the model has no formula (Jaeger's intermediate range; Tian–Kennedy for a
-/// non-circular source).
+/// `None` where the model has no formula (Tian–Kennedy for a non-circular source).
 pub fn conductance(model: FlashModel, source: Source, body: &Body) -> Option<Conductance> {
     let k = body.conductivity;
     let l = body.peclet(source);
@@ -271,9 +276,25 @@ pub fn conductance(model: FlashModel, source: Source, body: &Body) -> Option<Con
         }
         (FlashModel::TianKennedy, _) => None,
         (FlashModel::Jaeger, _) => match PecletRegime::of(l) {
-            PecletRegime::Intermediate => None,
+            PecletRegime::Intermediate => Some(moving_source(source, k, l)),
             regime => Some(jaeger(source, k, l, regime == PecletRegime::Fast)),
         },
+    }
+}
+
+/// Conductances from the integrated moving-source solution (T in units of qℓ/K, so
+/// C = Q/T = A K/(ℓ T)).
+fn moving_source(source: Source, k: f64, l: f64) -> Conductance {
+    let shape = match source {
+        Source::Circular { .. } => Shape::Circle,
+        Source::Square { .. } => Shape::Rectangle { half_length: 1.0 },
+        Source::Line { .. } => Shape::Band,
+    };
+    let t = moving_heat_source::temperatures(shape, l);
+    let per_coefficient = source.area() * k / source.peclet_length();
+    Conductance {
+        mean: per_coefficient / t.mean,
+        max: Some(per_coefficient / t.max),
     }
 }
 
@@ -492,20 +513,6 @@ impl Validate for FlashTemperatureInput {
                 "both bodies are stationary: nothing slides, no heat source moves",
             ));
         }
-        if model == FlashModel::Jaeger && errors.is_empty() {
-            for (body, name) in [(&a, "body_a"), (&b, "body_b")] {
-                let l = body.peclet(source);
-                if PecletRegime::of(l) == PecletRegime::Intermediate {
-                    errors.push(body_error(
-                        name,
-                        "speed_m_s",
-                        format!(
-                            "Peclet number {l:.4} lies in 0.1 < L < 5, where the Jaeger/Archard coefficients (α for circles, C₁–C₄ for squares and bands) are read from charts the texts do not give numerically; use model tian_kennedy for a circular contact, or a speed outside that range"
-                        ),
-                    ));
-                }
-            }
-        }
         if !errors.is_empty() {
             return Err(errors);
         }
@@ -596,8 +603,9 @@ impl Calculation for FlashTemperature {
 on a circular, square or band contact, each body with its own Peclet number L = Ua/(2χ), the heat shared so both surfaces reach \
 the same temperature (1/T_f = 1/T_fA + 1/T_fB). Models: Tian–Kennedy for circular contacts over all Peclet numbers \
 (Khonsari & Booser eq. 3.49–3.51, 4aK for a stationary body) and the Blok–Jaeger–Archard slow (L ≤ 0.1) and fast (L ≥ 5) forms \
-(Stachowiak & Batchelor Tables 7.5–7.7); their intermediate-range coefficients exist only in charts, so that range is refused.";
-    const FIDELITY: &'static [Level] = &[Level::ClosedForm];
+(Stachowiak & Batchelor Tables 7.5–7.7); in between (0.1 < L < 5), where the texts have only charts, Jaeger's moving-source \
+solution for a uniform flux integrated numerically (3D for circles and squares, the 2D band for lines).";
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm, Level::Standard];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"geometry": {"shape": "circular", "radius_m": 0.01}, "load_n": 3000, "friction_coefficient": 0.1, "body_a": {"speed_m_s": 0.5, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "body_b": {"speed_m_s": 0, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "bulk_temperature_c": 40}"#;
 
@@ -661,10 +669,19 @@ the same temperature (1/T_f = 1/T_fA + 1/T_fB). Models: Tian–Kennedy for circu
             flash_temperature_rise_alone_k: (c.mean > 0.0).then(|| q / c.mean),
             max_flash_temperature_rise_alone_k: c.max.filter(|m| *m > 0.0).map(|m| q / m),
         };
-        ctx.report(SolverReport::closed_form(match case.model {
-            FlashModel::TianKennedy => "tian_kennedy",
-            FlashModel::Jaeger => "jaeger_archard",
-        }));
+        let integrated = case.model == FlashModel::Jaeger
+            && [a, b].iter().any(|body| {
+                PecletRegime::of(body.peclet(case.source)) == PecletRegime::Intermediate
+            });
+        ctx.report(match case.model {
+            FlashModel::TianKennedy => SolverReport::closed_form("tian_kennedy"),
+            FlashModel::Jaeger if integrated => SolverReport {
+                method: "jaeger_archard_with_moving_source_quadrature".to_owned(),
+                fidelity: Level::Standard,
+                ..SolverReport::closed_form("")
+            },
+            FlashModel::Jaeger => SolverReport::closed_form("jaeger_archard"),
+        });
         Ok(FlashTemperatureOutput {
             model: case.model,
             shape: case.source.name().to_owned(),
@@ -875,10 +892,39 @@ mod tests {
     }
 
     #[test]
+    fn the_intermediate_peclet_range_is_integrated_between_the_slow_and_fast_forms() {
+        // A square on a moving body through L = 0.1 … 5: the integrated mean lies below the slow
+        // form and above the fast one, and falls with speed (Stachowiak Table 7.6, Fig. 7.30).
+        let mut last = f64::INFINITY;
+        for speed in [0.004, 0.01, 0.03, 0.1] {
+            let mut r = two_rollers();
+            r["geometry"] = json!({"shape": "square", "half_width_m": 1e-3});
+            r["body_b"]["speed_m_s"] = json!(0.0);
+            r["body_a"]["speed_m_s"] = json!(speed);
+            let v = ok::<FlashTemperature>(&r);
+            let l = body(&v, "body_a", "peclet_number");
+            assert!(0.1 < l && l < 5.0, "L = {l}");
+            assert_eq!(
+                v["solver"]["method"],
+                "jaeger_archard_with_moving_source_quadrature"
+            );
+            let alone = body(&v, "body_a", "flash_temperature_rise_alone_k");
+            let q = v["result"]["heat_flux_w"].as_f64().unwrap();
+            let qb_k = q / 4e-6 * 1e-3 / 46.7;
+            // Each limiting form overestimates outside its own range: the exact lies below both.
+            let (slow, fast) = (0.946 * qb_k, 1.064 / (2.0 * l).sqrt() * qb_k);
+            assert!(alone < slow.min(fast), "L = {l}");
+            // … and approaches each near its range: within 15 % at L = 0.15 and L = 3.8.
+            assert!(l > 0.2 || alone > 0.85 * slow, "L = {l}");
+            assert!(l < 3.0 || alone > 0.85 * fast, "L = {l}");
+            let per_heat = alone / q;
+            assert!(per_heat < last);
+            last = per_heat;
+        }
+    }
+
+    #[test]
     fn refusals_name_the_field() {
-        let mut intermediate = example_3_2();
-        intermediate["model"] = json!("jaeger");
-        intermediate["body_a"]["speed_m_s"] = json!(0.005);
         let mut tk_square = two_rollers();
         tk_square["model"] = json!("tian_kennedy");
         let mut missing = example_3_2();
@@ -891,8 +937,7 @@ mod tests {
         typo["lod_n"] = json!(1.0);
         let mut stray = example_3_2();
         stray["geometry"]["length_m"] = json!(0.01);
-        let rows: [(&Value, &str, &str); 6] = [
-            (&intermediate, "/body_a/speed_m_s", "L = 1.7 needs a chart"),
+        let rows: [(&Value, &str, &str); 5] = [
             (&tk_square, "/model", "Tian–Kennedy is circular"),
             (&missing, "/geometry/length_m", "a band needs its length"),
             (

@@ -6,3 +6,4 @@ pub mod ehl;
 pub mod ehl_film;
 pub mod flash_temperature;
 pub mod hertz;
+pub mod moving_heat_source;
