@@ -40,6 +40,8 @@ const MOES_L_MAX: f64 = 50.0;
 const FAST_CELLS: usize = 64;
 const STANDARD_CELLS: usize = 128;
 const HIGH_CELLS: usize = 256;
+/// The grid every solve starts on (from the Hertz pressure).
+const FIRST_CELLS: usize = 32;
 /// Explicit grids: the fine cell count.
 const CUSTOM_CELLS: (u32, u32) = (32, 2048);
 /// Relative central-film error estimate above which the solve goes on to finer grids.
@@ -125,8 +127,9 @@ pub struct NumericalEhlInput {
     /// (32 … 2048 cells, the coarse grid half of it).
     #[serde(default)]
     pub fidelity: FidelityRequest,
-    /// Return the pressure and film profiles along x.
+    /// Return the pressure and film profiles along x (default false).
     #[serde(default)]
+    #[schema(example = false)]
     pub include_profiles: bool,
     #[serde(default)]
     pub effects: NumericalEhlEffects,
@@ -290,7 +293,9 @@ impl Validate for NumericalEhlInput {
 pub struct NumericalEhlProfiles {
     /// Positions along x from the contact centre, m (the entrainment is towards +x).
     pub x_m: Vec<f64>,
+    /// Pressure at each position, Pa.
     pub pressure_pa: Vec<f64>,
+    /// Film thickness at each position, m.
     pub film_m: Vec<f64>,
 }
 
@@ -311,6 +316,7 @@ pub struct NumericalEhlTraction {
 pub struct NumericalEhlFormula {
     /// `pan_hamrock_central`, `pan_hamrock_min`, `dowson_higginson_min` or `moes_central`.
     pub formula: String,
+    /// The formula's film, m.
     pub film_m: f64,
     /// (numerical − formula)/formula.
     pub deviation: f64,
@@ -329,18 +335,25 @@ pub struct NumericalEhlOutput {
     pub max_pressure_position_m: f64,
     /// Where the film cavitates (the outlet meniscus), m from the centre.
     pub cavitation_position_m: f64,
-    /// Hertz half-width b, m, and pressure p_h, Pa (the dry contact under the same load).
+    /// Hertz half-width b of the dry contact under the same load, m.
     pub hertz_half_width_m: f64,
+    /// Hertz maximum pressure p_h of the dry contact, Pa.
     pub hertz_pressure_pa: f64,
-    /// Moes' M = W′(2U)^(−1/2) and L = G(2U)^(1/4).
+    /// Moes' load parameter M = W′(2U)^(−1/2).
     pub moes_load_parameter: f64,
+    /// Moes' material parameter L = G(2U)^(1/4) (0 for an isoviscous solve).
     pub moes_material_parameter: f64,
-    /// U = η₀ū/(E′R_x), G = αE′ (0 for an isoviscous solve), W′ = w/(E′R_x).
+    /// Speed parameter U = η₀ū/(E′R_x).
     pub speed_parameter: f64,
+    /// Materials parameter G = αE′ (0 for an isoviscous solve).
     pub materials_parameter: f64,
+    /// Load parameter per unit length W′ = w/(E′R_x), w = F/length.
     pub load_parameter: f64,
+    /// E′ = 2/Σ(1 − ν²)/E, Pa.
     pub effective_modulus_pa: f64,
+    /// R_x, the reduced radius along the entrainment direction, m.
     pub reduced_radius_x_m: f64,
+    /// η₀ at the inlet temperature and ambient pressure, Pa·s.
     pub viscosity_pa_s: f64,
     /// The closed-form films of `/v1/contacts/ehl-film` beside the numerical ones (the
     /// published band: the fits scatter by about ±10 % among themselves).
@@ -577,10 +590,21 @@ fn solve_nested(
         (central, min)
     };
     let mut fine_cells = cells.fine;
+    // Nested iteration from a coarse grid up to the first pair's coarse grid: Newton started
+    // from the Hertz pressure on a fine grid can stall where the same start converges on 32
+    // cells and each finer grid then starts within its basin.
+    let mut start_cells = (fine_cells / 2).min(FIRST_CELLS);
     let mut coarse = problem
-        .solve(fine_cells / 2, None, &budget)
-        .map_err(|f| failure(f, fine_cells / 2))?;
+        .solve(start_cells, None, &budget)
+        .map_err(|f| failure(f, start_cells))?;
     let mut iterations = coarse.iterations;
+    while start_cells < fine_cells / 2 {
+        start_cells *= 2;
+        coarse = problem
+            .solve(start_cells, Some(&coarse), &budget)
+            .map_err(|f| failure(f, start_cells))?;
+        iterations += coarse.iterations;
+    }
     loop {
         let fine = problem
             .solve(fine_cells, Some(&coarse), &budget)
