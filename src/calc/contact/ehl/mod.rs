@@ -852,7 +852,8 @@ mod tests {
             ((s - h) / h).abs() <= estimate.max(2e-3),
             "standard {s}, high {h}, estimate {estimate}"
         );
-        assert_eq!(high["solver"]["grid"][0], 512);
+        assert!(high["solver"]["grid"][0].as_u64().unwrap() >= 512);
+        assert!(high["solver"]["error_estimate"].as_f64().unwrap() <= REFINE_ABOVE[2]);
     }
 
     #[test]
