@@ -7,7 +7,8 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use stribeck::calc::find;
+use stribeck::calc::contact::{ehl_film::EhlFilm, hertz::Hertz};
+use stribeck::calc::{find, Calculation, Context, Validate};
 
 fn request(c: &mut Criterion, name: &str, path: &str, body: String) {
     let entry = find(path).expect("registered");
@@ -19,7 +20,25 @@ fn request(c: &mut Criterion, name: &str, path: &str, body: String) {
     });
 }
 
+/// The calculation alone, from a validated case (no JSON in or out): the formulas' own cost.
+fn compute<C: Calculation>(c: &mut Criterion, name: &str)
+where
+    <C::Input as Validate>::Valid: Clone,
+{
+    let input: C::Input = serde_json::from_str(C::EXAMPLE).expect("the example parses");
+    let case = input.validate().expect("the example is valid");
+    c.bench_function(name, |b| {
+        b.iter(|| {
+            let mut ctx =
+                Context::new(Instant::now() + Duration::from_secs(10), Default::default());
+            C::run(black_box(case.clone()), &mut ctx).expect("computes")
+        })
+    });
+}
+
 fn contact(c: &mut Criterion) {
+    compute::<Hertz>(c, "hertz, exact ellipticity, calculation only");
+    compute::<EhlFilm>(c, "EHL film formulas, calculation only");
     let hertz = find("/v1/contacts/hertz").unwrap().example;
     request(
         c,

@@ -2,5 +2,6 @@
 
 pub mod elliptic;
 pub mod half_space;
+pub mod optimise;
 pub mod reynolds;
 pub mod roots;

@@ -28,6 +28,7 @@ use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
 use crate::numerics::elliptic::{carlson_rd, complete_from_complement};
+use crate::numerics::optimise::brent_minimise;
 use crate::numerics::roots::{brent, RootError, Stopping};
 
 pub struct Hertz;
@@ -921,8 +922,8 @@ fn subsurface(
 
 /// The maxima of the two components of f over ζ ∈ [0, 4] (depths in units of b; every Hertz
 /// maximum lies within 0.8b for −1 < ν ≤ 0.5, or at the surface): one scan on 16 intervals
-/// shared by both, then golden-section refinement of each on the two intervals around its best
-/// node to 10⁻⁶ in ζ. Returns (maximum, depth) per component.
+/// shared by both, then Brent's minimiser on −f over the two intervals around each best node to
+/// 10⁻⁷ in ζ. Returns (maximum, depth) per component.
 fn maximise_in_depth(f: impl Fn(f64) -> [f64; 2]) -> [(f64, f64); 2] {
     const DEPTH: f64 = 4.0;
     const SCAN: usize = 16;
@@ -938,34 +939,12 @@ fn maximise_in_depth(f: impl Fn(f64) -> [f64; 2]) -> [(f64, f64); 2] {
         }
     }
     let refine = |k: usize| -> (f64, f64) {
-        let g = |z: f64| f(z)[k];
         let (best_i, best_v) = best[k];
-        let mut lo = best_i.saturating_sub(1) as f64 * h;
-        let mut hi = (best_i + 1).min(SCAN) as f64 * h;
-        let inv_phi = 0.5 * (5f64.sqrt() - 1.0);
-        let mut x1 = hi - inv_phi * (hi - lo);
-        let mut x2 = lo + inv_phi * (hi - lo);
-        let (mut f1, mut f2) = (g(x1), g(x2));
-        // (√5 − 1)/2 shrinks the bracket 0.618-fold per step: 2h = 0.5 → 1e-6 in 28 steps.
-        for _ in 0..40 {
-            if hi - lo < 1e-6 {
-                break;
-            }
-            if f1 < f2 {
-                lo = x1;
-                (x1, f1) = (x2, f2);
-                x2 = lo + inv_phi * (hi - lo);
-                f2 = g(x2);
-            } else {
-                hi = x2;
-                (x2, f2) = (x1, f1);
-                x1 = hi - inv_phi * (hi - lo);
-                f1 = g(x1);
-            }
-        }
-        let (x, v) = if f1 > f2 { (x1, f1) } else { (x2, f2) };
-        if v >= best_v {
-            (v, x)
+        let lo = best_i.saturating_sub(1) as f64 * h;
+        let hi = (best_i + 1).min(SCAN) as f64 * h;
+        let (x, minus) = brent_minimise(|z| -f(z)[k], lo, hi, 1e-7);
+        if -minus >= best_v {
+            (-minus, x)
         } else {
             (best_v, best_i as f64 * h)
         }
