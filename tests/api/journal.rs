@@ -274,6 +274,10 @@ fn invalid_requests_name_their_field() {
         (json!({"fidelity": {"grid": [7, 3]}}), "/fidelity/grid"),
         (json!({"effects": {"inertia": "on"}}), "/effects/inertia"),
         (
+            json!({"fidelity": "closed_form", "effects": {"cavitation": "jfo"}}),
+            "/effects/cavitation",
+        ),
+        (
             json!({"geometry": {"diameter_m": 0.1, "lenght_m": 0.1, "radial_clearance_m": 1e-4}}),
             "/geometry/lenght_m",
         ),
@@ -435,4 +439,58 @@ fn partial_arcs_find_their_equilibrium() {
         );
         last_eps = eps;
     }
+}
+
+/// `effects.cavitation: jfo` through the whole room: equilibrium from the load (reproduced to
+/// 1e-6), the effect reported, the cavitated share and the film content given, stiffness,
+/// damping and the whirl threshold from the mass-conserving film. Fed at h_max it carries the
+/// Reynolds film's load; fed by a hole opposite the load (inside the Reynolds model's
+/// cavitated zone) it must reform past h_max and runs at a higher eccentricity.
+#[test]
+fn jfo_cavitation_through_the_room() {
+    let mut body = at_eccentricity(1.0, 0.5, json!({"dynamics": true, "include_field": true}));
+    body.as_object_mut().unwrap().remove("eccentricity_ratio");
+    body["load_n"] = json!(2000.0);
+    let reynolds = run(&body).unwrap();
+    body["effects"] = json!({"cavitation": "jfo"});
+    let flooded = run(&body).unwrap();
+    body["feed"] = json!({"kind": "hole", "supply_pressure_pa": 1e5, "hole_diameter_m": 0.01});
+    let fed_on_top = run(&body).unwrap();
+    let scale = 0.03 * 50.0 * 0.1 * 0.1 * 500.0f64.powi(2);
+    let eps = |r: &Value| num(&r["result"], "eccentricity_ratio");
+    for r in [&flooded, &fed_on_top] {
+        let res = &r["result"];
+        assert!((scale / num(res, "sommerfeld_number") / 2000.0 - 1.0).abs() < 1e-6);
+        assert_eq!(r["effects"]["cavitation"]["applied"], true);
+        assert!(r["effects"]["cavitation"]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("JFO"));
+        assert_eq!(r["solver"]["method"], "finite_volume_jfo_gauss_seidel");
+        let cav = num(res, "cavitated_area_fraction");
+        assert!(cav > 0.2 && cav < 0.8, "{cav}");
+        let profile = res["pressure_profile"].as_array().unwrap();
+        assert!(profile.iter().all(|p| {
+            let c = num(p, "film_content");
+            (0.0..=1.0).contains(&c) && (c == 1.0 || num(p, "pressure_pa") == 0.0)
+        }));
+        let k = &res["dynamic_coefficients"];
+        for key in ["kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy"] {
+            assert!(num(k, key).is_finite(), "{key}");
+        }
+        assert!(num(k, "kxx") > 0.0 && num(k, "cxx") > 0.0);
+        assert!(res["stability"]["statement"].is_string());
+    }
+    assert!(reynolds["result"].get("cavitated_area_fraction").is_none());
+    assert!((eps(&flooded) - eps(&reynolds)).abs() < 1e-3);
+    assert!(
+        eps(&fed_on_top) > 1.05 * eps(&reynolds),
+        "{} vs {}",
+        eps(&fed_on_top),
+        eps(&reynolds)
+    );
+    assert!(fed_on_top["effects"]["cavitation"]["reason"]
+        .as_str()
+        .unwrap()
+        .contains("opposite the load"));
 }

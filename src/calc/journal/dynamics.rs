@@ -218,4 +218,61 @@ mod tests {
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");
     }
+
+    /// With mass-conserving cavitation the perturbed films re-solve pressure and content: fed at
+    /// h_max they give the Reynolds film's coefficients (rupture obeys the same condition, and
+    /// the squeeze acts only where the film is full), fed opposite the load they stay finite
+    /// with positive direct terms, and the equilibrium they were taken about is the JFO one.
+    #[test]
+    fn mass_conserving_films_have_consistent_coefficients() {
+        use crate::calc::journal::film::FeedLine;
+        let mesh = Mesh {
+            circumferential: 96,
+            axial_half: 12,
+        };
+        for eps in [0.3, 0.7] {
+            let reynolds =
+                perturbation(eps, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+            let jfo = |feed| FilmModel {
+                mass_conserving: Some(feed),
+                ..FilmModel::REYNOLDS
+            };
+            let flooded =
+                perturbation(eps, 1.0, jfo(FeedLine::MaxFilm), mesh, STOP, &mut || true).unwrap();
+            let scale = |m: &[f64; 4]| m.iter().map(|v| v.abs()).fold(0.0, f64::max);
+            for i in 0..4 {
+                let (k, c) = (reynolds.stiffness, reynolds.damping);
+                assert!(
+                    (flooded.stiffness[i] - k[i]).abs() < 0.01 * scale(&k),
+                    "ε {eps} k[{i}]: {} vs {}",
+                    flooded.stiffness[i],
+                    k[i]
+                );
+                assert!(
+                    (flooded.damping[i] - c[i]).abs() < 0.01 * scale(&c),
+                    "ε {eps} c[{i}]: {} vs {}",
+                    flooded.damping[i],
+                    c[i]
+                );
+            }
+            let top = perturbation(
+                eps,
+                1.0,
+                jfo(FeedLine::OppositeLoad),
+                mesh,
+                STOP,
+                &mut || true,
+            )
+            .unwrap();
+            assert!(top
+                .stiffness
+                .iter()
+                .chain(&top.damping)
+                .all(|v| v.is_finite()));
+            assert!(top.stiffness[0] > 0.0 && top.damping[0] > 0.0 && top.damping[3] > 0.0);
+            assert!(top.sommerfeld_number > reynolds.sommerfeld_number);
+            let w = whirl(&top);
+            assert!(w.equivalent_stiffness.is_finite());
+        }
+    }
 }

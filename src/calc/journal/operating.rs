@@ -7,9 +7,11 @@ use std::f64::consts::PI;
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
 use super::feed::{self, Feed, Flows};
-use super::film::FilmModel;
+use super::film::{FeedLine, FilmModel};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
-use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
+use super::plain::{
+    CavitationMode, DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability,
+};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{Budget, CalcError, Context};
@@ -92,7 +94,23 @@ impl Case {
         mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
     }
     fn cavitation(&self) -> bool {
-        self.effects.cavitation != Mode::Off
+        self.effects.cavitation != CavitationMode::Off
+    }
+
+    /// Mass-conserving cavitation, and where its film is fed: opposite the load for a single
+    /// hole or axial groove there, else at h_max.
+    fn mass_conserving(&self) -> Option<FeedLine> {
+        (self.effects.cavitation == CavitationMode::Jfo).then(|| match self.feed {
+            Some(Feed::Hole {
+                position: feed::FeedPosition::OppositeLoad,
+                ..
+            })
+            | Some(Feed::AxialGroove {
+                position: feed::FeedPosition::OppositeLoad,
+                ..
+            }) if self.arc.is_none() => FeedLine::OppositeLoad,
+            _ => FeedLine::MaxFilm,
+        })
     }
 
     /// Film Reynolds number ρ U C/μ at temperature t.
@@ -113,6 +131,7 @@ impl Case {
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
             misalignment: self.misalignment,
+            mass_conserving: self.mass_conserving(),
         }
     }
 
@@ -303,14 +322,23 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     decide_inertia(ctx, case.effects, reynolds, g);
     let cavitation = Decision {
         applied: case.cavitation(),
-        mode: case.effects.cavitation,
-        reason: if case.cavitation() {
-            "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into()
-        } else {
-            "requested off: full Sommerfeld film, negative pressures kept".into()
+        mode: case.effects.cavitation.mode(),
+        reason: match (case.cavitation(), case.mass_conserving()) {
+            (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
+            (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into(),
+            (true, Some(feed)) => format!(
+                "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed flooded {}",
+                match feed {
+                    FeedLine::MaxFilm => "at h_max",
+                    FeedLine::OppositeLoad => "opposite the load",
+                }
+            ),
         },
         criterion: None,
     };
+    if case.mass_conserving().is_some() && matches!(case.feed, Some(Feed::TwoAxialGrooves { .. })) {
+        ctx.warn("jfo_feed_at_max_film", "two axial grooves: the mass-conserving film is fed along one line at h_max; the grooves' own positions are not modelled in the film (their flows are Martin's)");
+    }
     ctx.decide("cavitation", cavitation);
     ctx.decide(
         "misalignment",
@@ -359,6 +387,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         max_pressure_dimensionless: point.max_pressure_bar,
         max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
         cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
+        cavitated_area_fraction: point.cavitated_fraction,
         friction_coefficient: friction,
         friction_parameter: point.friction_parameter,
         friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
@@ -383,9 +412,14 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         pressure_profile: if case.include_field {
             point.midplane.as_ref().map(|m| {
                 m.iter()
-                    .map(|&(theta, p)| ProfilePoint {
+                    .enumerate()
+                    .map(|(i, &(theta, p))| ProfilePoint {
                         angle_deg: theta.to_degrees(),
                         pressure_pa: p * pressure_scale,
+                        film_content: point
+                            .midplane_content
+                            .as_ref()
+                            .and_then(|c| c.get(i).copied()),
                     })
                     .collect()
             })
@@ -406,6 +440,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             damping_dimensionless: coefficients.damping,
             method: match case.method {
                 Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
+                Method::Numerical { .. } if case.mass_conserving().is_some() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
                 Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
             },
         });
@@ -644,7 +679,12 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
             ..SolverReport::closed_form("closed_form")
         },
         Method::Numerical { level, mesh, .. } => SolverReport {
-            method: "finite_volume_psor".into(),
+            method: if case.mass_conserving().is_some() {
+                "finite_volume_jfo_gauss_seidel"
+            } else {
+                "finite_volume_psor"
+            }
+            .into(),
             fidelity: level,
             grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
             iterations: point.sweeps,

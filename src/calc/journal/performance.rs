@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
-use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
+use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::CalcError;
 use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
@@ -110,16 +110,20 @@ pub fn positioned_film(
         physics: model,
         ..Film::steady(eps, l_over_d)
     };
-    if model.arc.is_none() && model.misalignment.is_none() {
+    if !placed(&model) {
         let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
         return Ok((base, f, p));
     }
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
-    // misalignment's direction is measured from it.
+    // misalignment's direction is measured from it. A full film fed opposite the load starts
+    // at θ = −φ.
+    let feed_opposite = model.arc.is_none() && opposite_feed(&model);
     let place = |phi: f64| Film {
-        span: model
-            .arc
-            .map(|arc| (PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+        span: match model.arc {
+            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+            None if feed_opposite => Some((-phi, 2.0 * PI - phi)),
+            None => None,
+        },
         tilt: model.misalignment.map(|(e, dir, from_centres)| {
             (
                 e,
@@ -196,6 +200,17 @@ pub fn positioned_film(
     Ok((film, f, p))
 }
 
+/// A mass-conserving film fed opposite the load.
+fn opposite_feed(model: &FilmModel) -> bool {
+    model.has_content() && model.mass_conserving == Some(FeedLine::OppositeLoad)
+}
+
+/// Whether the film must be placed against the load line (an attitude search): a partial arc,
+/// a misaligned journal, or a feed fixed in the bearing away from h_max.
+pub fn placed(model: &FilmModel) -> bool {
+    model.arc.is_some() || model.misalignment.is_some() || opposite_feed(model)
+}
+
 /// Smallest film (h_min/C) a misaligned journal may reach before it counts as touching.
 const TOUCHING: f64 = 1e-3;
 
@@ -222,6 +237,9 @@ pub struct Point {
     pub min_film_bar: f64,
     /// (θ, P̄) along the mid-plane, numerical solutions only.
     pub midplane: Option<Vec<(f64, f64)>>,
+    /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
+    pub midplane_content: Option<Vec<f64>>,
+    pub cavitated_fraction: Option<f64>,
     /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
     /// estimate of S, the mesh.
     pub sweeps: u32,
@@ -270,6 +288,8 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         inlet_flow_bar: Some(f.inlet_flow_bar),
         min_film_bar: f.min_thickness,
         midplane: Some(f.midplane.clone()),
+        midplane_content: f.midplane_content.clone(),
+        cavitated_fraction: f.cavitated_fraction,
         sweeps: f.solved.sweeps,
         residual: Some(f.solved.residual),
         error_estimate: None,
@@ -305,7 +325,7 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
-            let load_fixed = physics.arc.is_some() || physics.misalignment.is_some();
+            let load_fixed = placed(&physics);
             let (fine, coarse) = match load_fixed {
                 false => {
                     let film = Film {
@@ -387,6 +407,8 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         inlet_flow_bar: None,
         min_film_bar: 1.0 - eps,
         midplane: None,
+        midplane_content: None,
+        cavitated_fraction: None,
         sweeps: 0,
         residual: None,
         error_estimate: None,

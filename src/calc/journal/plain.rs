@@ -45,6 +45,34 @@ pub enum ClosedFormChoice {
     Long,
 }
 
+/// How the film cavitates (see `JournalEffects::cavitation`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CavitationMode {
+    /// The Reynolds condition.
+    #[default]
+    Auto,
+    /// The Reynolds condition.
+    On,
+    /// No cavitation: the full Sommerfeld film.
+    Off,
+    /// The Reynolds (Swift–Stieber) condition, p ≥ 0, by projected SOR.
+    Reynolds,
+    /// Mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod–Adams film content).
+    Jfo,
+}
+
+impl CavitationMode {
+    /// The auto/on/off mode an effect report carries.
+    pub fn mode(self) -> Mode {
+        match self {
+            CavitationMode::Auto => Mode::Auto,
+            CavitationMode::Off => Mode::Off,
+            _ => Mode::On,
+        }
+    }
+}
+
 /// Effects this calculation understands.
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -54,10 +82,22 @@ pub struct JournalEffects {
     /// isothermal rise lowers the viscosity by more than 5 %.
     #[serde(default)]
     pub thermal: Mode,
-    /// Reynolds cavitation (p ≥ 0, Swift–Stieber). `off` keeps the full Sommerfeld film with its
-    /// negative pressures (a film that cannot rupture: submerged at high ambient pressure).
+    /// The cavitation model: `auto`, `on` and `reynolds` apply the Reynolds (Swift–Stieber)
+    /// condition p ≥ 0 (the film ruptures where the pressure and its gradient vanish and refills
+    /// wherever the pressure would rise: mass is not conserved across the cavitated zone; the
+    /// Table 8.6 model). `jfo` applies mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod
+    /// and Adams' film content θ_f ∈ [0, 1], complementarity p (1 − θ_f) = 0, upwind Couette
+    /// fluxes): the film ruptures as with the Reynolds condition and reforms only where the
+    /// streamers fill the gap again; it is fed flooded (θ_f = 1, at the edges' pressure) along a
+    /// line across the whole length — at h_max, or, with a single `hole` or `axial_groove` feed
+    /// `opposite_load` (the default position), opposite the load, which lies inside the Reynolds
+    /// model's cavitated zone. The friction then counts the Couette shear of the liquid only
+    /// (θ_f/h in the cavitated zone). Costs about the same as the Reynolds condition per film;
+    /// a feed opposite the load adds an attitude search. `off` keeps the full Sommerfeld film
+    /// with its negative pressures (a film that cannot rupture: submerged at high ambient
+    /// pressure).
     #[serde(default)]
-    pub cavitation: Mode,
+    pub cavitation: CavitationMode,
     /// Turbulent film (Ng–Pan linearised coefficients for the pressure flows and the Couette
     /// shear, Khonsari & Booser Eq. 6.26–6.31, local Re = ρ U h/μ). `auto` applies it when the
     /// film Reynolds number ρ U C/μ at the inlet temperature exceeds 1000.
@@ -221,6 +261,11 @@ impl Validate for PlainInput {
                 Some(Method::numerical(Level::Standard, mesh, custom.tolerance))
             }
         };
+        if self.effects.cavitation == CavitationMode::Jfo
+            && matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
+        {
+            errors.push(FieldError::new("/effects/cavitation", "the closed forms use the half-Sommerfeld or Reynolds condition; mass-conserving (jfo) cavitation needs a numerical fidelity"));
+        }
         if self.effects.inertia == Mode::On {
             errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
         }
@@ -352,6 +397,10 @@ pub struct ProfilePoint {
     pub angle_deg: f64,
     /// Film pressure above the feed pressure, Pa.
     pub pressure_pa: f64,
+    /// Film content θ_f: the liquid fraction of the gap (1 in the full film, below 1 in the
+    /// cavitated zone), dimensionless; with `effects.cavitation: jfo` only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film_content: Option<f64>,
 }
 
 /// The line a misalignment's direction is measured from.
@@ -465,6 +514,10 @@ pub struct PlainOutput {
     /// Film rupture angle from h_max (mid-plane), degrees; absent for a full film.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cavitation_start_angle_deg: Option<f64>,
+    /// Share of the film's area that is cavitated (film content θ_f < 1), dimensionless 0 … 1;
+    /// with `effects.cavitation: jfo` only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cavitated_area_fraction: Option<f64>,
     /// Petroff's friction coefficient 2π² S (C/R), the concentric-journal estimate, dimensionless.
     pub petroff_friction_coefficient: f64,
     /// f = F/W, dimensionless; F is the journal-surface shear integrated over the full
@@ -481,7 +534,8 @@ pub struct PlainOutput {
     pub side_leakage_m3_s: f64,
     /// Q_L/((π/2) N_s D L C), dimensionless.
     pub side_leakage_dimensionless: f64,
-    /// Flow entering at the feed line (θ = 0, h_max), m³/s; absent for closed forms.
+    /// Flow entering at the feed line (θ = 0, h_max; with `jfo` and a feed opposite the load,
+    /// there), m³/s; absent for closed forms.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inlet_flow_m3_s: Option<f64>,
     /// Adiabatic oil temperature rise ΔT = E_p/(ρ c_p Q_L) (Khonsari & Booser Eq. 8.44), K;
