@@ -173,8 +173,9 @@ pub struct FilmModel {
     /// A misaligned journal (Khonsari & Booser Eq. 8.70): ε′ = (difference of the journal-centre
     /// displacements at the two ends)/C, and the direction of that tilt from the load line in
     /// the direction of rotation, rad. None: aligned.
-    /// The third member: the direction is measured from the line of centres instead (as in
-    /// Stachowiak & Batchelor's PARTIAL and STABILITY programs, where the tilt follows the journal).
+    /// The third member: the direction is measured from the line of centres instead (a tilt
+    /// that follows the journal). Stachowiak & Batchelor's PARTIAL and STABILITY programs tilt
+    /// in the load plane: load line, direction 0.
     pub misalignment: Option<(f64, f64, bool)>,
     /// Mass-conserving (JFO) cavitation in place of the Reynolds condition, with the feed line
     /// where the flooded supply enters (requires `cavitation`).

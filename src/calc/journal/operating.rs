@@ -65,6 +65,8 @@ pub struct Case {
     /// (ε′, direction of the tilt from the load line, rad); None when aligned.
     pub misalignment: Option<(f64, f64, bool)>,
     pub rotor_mass_kg: Option<f64>,
+    /// Shaft stiffness in series with the film, N/m (None: rigid).
+    pub shaft_stiffness_n_m: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
     pub dynamics: bool,
@@ -751,7 +753,12 @@ fn dynamic_coefficients(
     let omega = 2.0 * PI * case.speed_rps();
     let s_op = coefficients.sommerfeld_number;
     let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
-    let whirl = dynamics::whirl(&coefficients);
+    // γ = W/(k_s C) with the whole bearing's load and shaft (per half-bearing with a
+    // circumferential groove both halve: the same γ).
+    let flexibility = case
+        .shaft_stiffness_n_m
+        .map_or(0.0, |k| case.halves() * w / (k * g.radial_clearance_m));
+    let whirl = dynamics::whirl_on_shaft(&coefficients, flexibility);
     let stable_now = whirl
         .critical_mass_parameter
         .is_none_or(|mc| mass_parameter(omega) < mc);
@@ -782,7 +789,7 @@ fn dynamic_coefficients(
         match coefficients_at(case, search, e, physics, &budget) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
-                match dynamics::whirl(&c).critical_mass_parameter {
+                match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
                     Some(mc) => (mc / mass_parameter(speed)).ln(),
                     None => 50.0,
                 }
@@ -859,6 +866,12 @@ fn dynamic_coefficients(
         threshold_speed_rpm: threshold_rpm,
         whirl_frequency_ratio: whirl.whirl_frequency_ratio,
         critical_mass_parameter: whirl.critical_mass_parameter,
+        critical_speed_rad_s: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * g.radial_clearance_m)).sqrt()),
+        critical_speed_dimensionless: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * GRAVITY)).sqrt()),
         mass_parameter: mass_parameter(omega),
         rotor_mass_kg: mass * case.halves(),
         statement,

@@ -141,6 +141,12 @@ pub struct PlainInput {
     /// Rotor mass carried by this bearing, kg, for the stability threshold (default W/g).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
     pub rotor_mass_kg: Option<Positive>,
+    /// Stiffness of the shaft between the rotor mass and this bearing, N/m (a Jeffcott rotor:
+    /// the shaft in series with the film; default rigid). Its flexibility γ = W/(k_s C) lowers
+    /// the critical mass by 1 + γ k_eq (Hori's Routh–Hurwitz threshold as Stachowiak &
+    /// Batchelor §5.6.4 give it; γ is their "dimensionless exciter mass").
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1e8)]
+    pub shaft_stiffness_n_m: Option<Positive>,
     /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
     /// half-length axial 2…256], "tolerance": 1e-14…1e-3}`.
     #[serde(default)]
@@ -379,6 +385,7 @@ impl Validate for PlainInput {
                 arc,
                 misalignment,
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
+                shaft_stiffness_n_m: self.shaft_stiffness_n_m.map(Positive::get),
                 method,
                 effects: self.effects,
                 dynamics: self.dynamics,
@@ -425,10 +432,11 @@ pub struct MisalignmentSpec {
     #[serde(default)]
     #[schema(minimum = -180.0, maximum = 180.0, example = 0.0)]
     pub direction_deg: f64,
-    /// What `direction_deg` is measured from: `load_line` (default; a tilt fixed in space, as a
-    /// shaft bending under its load) or `line_of_centres` (a tilt that follows the journal, the
-    /// convention of Stachowiak & Batchelor's PARTIAL and STABILITY programs, where 0 tilts
-    /// towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
+    /// What `direction_deg` is measured from: `load_line` (default; a tilt fixed in the bearing,
+    /// as a shaft bending under its load — the convention of Stachowiak & Batchelor's PARTIAL
+    /// and STABILITY programs, whose film h* = 1 + ε cos(x* − β) + y* t cos x* tilts in the load
+    /// plane: `direction_deg` 0, ε′ = t) or `line_of_centres` (a tilt that follows the journal,
+    /// where 0 tilts towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
     #[serde(default)]
     pub measured_from: MisalignmentReference,
 }
@@ -480,9 +488,20 @@ pub struct Stability {
     /// absent when the film cannot whirl.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub whirl_frequency_ratio: Option<f64>,
-    /// Critical mass parameter m C ω²/W at the operating point; absent when stable for any mass.
+    /// Critical mass parameter m C ω²/W at the operating point (with the shaft's flexibility
+    /// when `shaft_stiffness_n_m` is given); absent when stable for any mass.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_mass_parameter: Option<f64>,
+    /// Critical speed at the operating eccentricity, rad/s: ω_c = (m̄_c W/(m C))^½, the speed at
+    /// which a rotor of `rotor_mass_kg` would whirl if the film kept this eccentricity and its
+    /// dimensionless coefficients (Stachowiak & Batchelor's ω_c, §5.6.4); absent when stable
+    /// for any mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_speed_rad_s: Option<f64>,
+    /// ω_c (C/g)^½, dimensionless: Stachowiak & Batchelor's ω*_c (with m = W/g it is
+    /// (m̄_c)^½); absent when stable for any mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_speed_dimensionless: Option<f64>,
     /// The rotor's m C ω²/W at the operating speed.
     pub mass_parameter: f64,
     /// Rotor mass used, kg.
