@@ -49,6 +49,11 @@ pub struct FilmSolution {
     /// ∫∫ P̄ (−∂h̄/∂θ) dθ dȳ: the pressure-gradient part of the journal's shear, integrated by
     /// parts (P̄ = 0 on the edges).
     pub pressure_shear: f64,
+    /// The pressure's moment on the journal about the bearing centre (the axis at mid-length),
+    /// ∫∫ P̄ (ȳ − ½)(sin θ, −cos θ) dθ dȳ in the film frame (towards h_max, 90° ahead), with z
+    /// along the spin and ȳ increasing along z; M = μ N_s (R/C)² R L² times it. Zero for an
+    /// aligned (symmetric) film.
+    pub moment: [f64; 2],
     /// ∫∫ G_f/h̄ dθ dȳ over the film: the Couette part (G_f = 1 laminar), shear over the whole
     /// span whatever the film does (the Table 8.6 convention).
     pub couette_shear: f64,
@@ -379,12 +384,19 @@ fn integrate(
     let halves = if g.symmetric { 2.0 } else { 1.0 };
     let mid_row = if g.symmetric { g.ny } else { g.ny / 2 };
     let (mut radial, mut tangential, mut pressure_shear) = (0.0, 0.0, 0.0);
+    // The moment about the mid-plane centre (zero on a symmetric grid, by symmetry).
+    let mut moment = [0.0; 2];
     for j in 0..=g.ny {
         for i in 0..=g.nx() {
             let w = g.cv_x(i) * g.cv_y(j) * halves;
             let v = p[at(g, i, j)];
             radial -= v * g.x[i].cos() * w;
             tangential += v * g.x[i].sin() * w;
+            if !g.symmetric {
+                let arm = g.y(j) - 0.5;
+                moment[0] += v * arm * g.x[i].sin() * w;
+                moment[1] -= v * arm * g.x[i].cos() * w;
+            }
             // −∂h̄/∂θ for the pressure part of the journal's shear (integrated by parts).
             let dh = (h(g.x[i] + 1e-6, g.y(j)) - h(g.x[i] - 1e-6, g.y(j))) / 2e-6;
             pressure_shear -= v * dh * w;
@@ -483,6 +495,7 @@ fn integrate(
         span: (g.x[0], g.x[g.nx()]),
         min_thickness: film.min_thickness(),
         pressure_shear,
+        moment,
         couette_shear: 0.0,
         midplane: g.x.iter().cloned().zip(mid.iter().cloned()).collect(),
         midplane_content: None,

@@ -10,7 +10,8 @@ use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
 use super::plain::{
-    CavitationMode, DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability,
+    CavitationMode, DynamicCoefficients, FilmMoment, JournalEffects, PlainOutput, ProfilePoint,
+    Stability,
 };
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
@@ -428,6 +429,27 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         } else {
             None
         },
+        misalignment_moment: point.moment_bar.map(|m| {
+            let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
+            let (mx, my) = (m[0] * scale, m[1] * scale);
+            // The tilt direction u in the load frame; the tilt is a rotation about z × u.
+            let (_, dir, from_centres) = case.misalignment.unwrap_or_default();
+            let towards = if from_centres {
+                // From the line of centres (h_min lies φ ahead of the load line).
+                dir + point.attitude_angle
+            } else {
+                dir
+            };
+            let axis = [-towards.sin(), towards.cos()];
+            FilmMoment {
+                frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+                mx_n_m: mx,
+                my_n_m: my,
+                magnitude_n_m: mx.hypot(my),
+                dimensionless: m,
+                restoring_n_m: -(mx * axis[0] + my * axis[1]),
+            }
+        }),
         dynamic_coefficients: None,
         stability: None,
     };

@@ -237,6 +237,9 @@ pub struct Point {
     pub min_film_bar: f64,
     /// (θ, P̄) along the mid-plane, numerical solutions only.
     pub midplane: Option<Vec<(f64, f64)>>,
+    /// The film's moment on a misaligned journal in the load frame (x along the load, y 90°
+    /// ahead in the rotation, z along the spin), per μ N_s (R/C)² R L²; None when aligned.
+    pub moment_bar: Option<[f64; 2]>,
     /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
     pub midplane_content: Option<Vec<f64>>,
     pub cavitated_fraction: Option<f64>,
@@ -273,6 +276,16 @@ pub fn solve_error(e: SolveError) -> CalcError {
     }
 }
 
+/// A vector of the film frame (towards h_max, 90° ahead) in the load frame: x along the load
+/// W = −F, y 90° ahead of it in the direction of rotation.
+pub fn load_frame(f: &FilmSolution, v: [f64; 2]) -> [f64; 2] {
+    let force = [f.load_radial, -f.load_tangential];
+    let norm = force[0].hypot(force[1]);
+    let x = [-force[0] / norm, -force[1] / norm];
+    let y = [-x[1], x[0]];
+    [v[0] * x[0] + v[1] * x[1], v[0] * y[0] + v[1] * y[1]]
+}
+
 fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
@@ -289,6 +302,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         min_film_bar: f.min_thickness,
         midplane: Some(f.midplane.clone()),
         midplane_content: f.midplane_content.clone(),
+        moment_bar: physics.misalignment.map(|_| load_frame(f, f.moment)),
         cavitated_fraction: f.cavitated_fraction,
         sweeps: f.solved.sweeps,
         residual: Some(f.solved.residual),
@@ -361,6 +375,10 @@ fn at_eccentricity_from(
                     side_leakage_bar: extrapolate(fine.side_leakage_bar, coarse.side_leakage_bar),
                     inlet_flow_bar: extrapolate(fine.inlet_flow_bar, coarse.inlet_flow_bar),
                     pressure_shear: extrapolate(fine.pressure_shear, coarse.pressure_shear),
+                    moment: [
+                        extrapolate(fine.moment[0], coarse.moment[0]),
+                        extrapolate(fine.moment[1], coarse.moment[1]),
+                    ],
                     ..fine.clone()
                 };
                 point = Point {
@@ -409,6 +427,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         midplane: None,
         midplane_content: None,
         cavitated_fraction: None,
+        moment_bar: None,
         sweeps: 0,
         residual: None,
         error_estimate: None,

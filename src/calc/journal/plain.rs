@@ -429,6 +429,8 @@ pub struct MisalignmentSpec {
     pub slope_rad: crate::calc::quantity::NonNegative,
     /// Direction of the tilt: the plane it lies in, from the load line in the direction of
     /// rotation, degrees (−180 … 180; default 0, tilt in the load plane as a shaft bends under it).
+    /// The journal's end at +z (z along its spin vector) is the one displaced this way; the
+    /// other end moves the opposite way.
     #[serde(default)]
     #[schema(minimum = -180.0, maximum = 180.0, example = 0.0)]
     pub direction_deg: f64,
@@ -439,6 +441,27 @@ pub struct MisalignmentSpec {
     /// where 0 tilts towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
     #[serde(default)]
     pub measured_from: MisalignmentReference,
+}
+
+/// The film's moment on a misaligned journal.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct FilmMoment {
+    /// The frame: x along the static load, y 90° ahead of it in the direction of rotation, z
+    /// along the journal's spin vector (x, y, z right-handed); the tilted journal's end at +z is
+    /// the one displaced towards `misalignment.direction_deg`. The moment is taken about the
+    /// bearing centre (on the axis at mid-length).
+    pub frame: String,
+    /// Moment about x, N·m.
+    pub mx_n_m: f64,
+    /// Moment about y, N·m.
+    pub my_n_m: f64,
+    /// |M|, N·m.
+    pub magnitude_n_m: f64,
+    /// (M_x, M_y)/(μ N_s (R/C)² R L²), dimensionless (N_s in rev/s).
+    pub dimensionless: [f64; 2],
+    /// The moment's component against the tilt, N·m: −M·(z × u) for the tilt direction u (a
+    /// tilt by the slope about z × u); positive when the film resists the misalignment.
+    pub restoring_n_m: f64,
 }
 
 /// Stiffness and damping of the film.
@@ -592,6 +615,10 @@ pub struct PlainOutput {
     /// Mid-plane pressure profile, with `include_field` and a numerical fidelity.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure_profile: Option<Vec<ProfilePoint>>,
+    /// The film's moment on the journal when `misalignment` is given (absent when aligned: it
+    /// is then zero by symmetry).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub misalignment_moment: Option<FilmMoment>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamic_coefficients: Option<DynamicCoefficients>,
     #[serde(skip_serializing_if = "Option::is_none")]
