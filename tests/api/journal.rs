@@ -547,3 +547,30 @@ fn misalignment_moment_restores_and_grows_with_the_tilt() {
     let dim = double["dimensionless"].as_array().unwrap();
     assert!((dim[1].as_f64().unwrap() * scale / m(&double, "my_n_m") - 1.0).abs() < 1e-9);
 }
+
+/// The whirl threshold of a turbulent film is consistent with the film at that speed: along the
+/// locus the film Reynolds number follows the speed, so a request at the reported threshold
+/// speed (same load, viscosity, rotor; the same `fast` mesh the search walks) sits on the
+/// stability boundary, m̄ = m̄_c.
+#[test]
+fn turbulent_whirl_threshold_is_the_film_at_that_speed() {
+    let body = |rpm: f64| {
+        json!({
+            "geometry": {"diameter_m": 0.2, "length_m": 0.1, "radial_clearance_m": 0.0002},
+            "speed_rpm": rpm,
+            "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
+            "load_n": 5000.0,
+            "rotor_mass_kg": 500.0,
+            "effects": {"thermal": "off", "turbulence": "on"},
+            "fidelity": "fast"
+        })
+    };
+    let op = run(&body(6000.0)).unwrap();
+    assert!(num(&op["result"], "reynolds_number") > 1000.0);
+    let threshold = num(&op["result"]["stability"], "threshold_speed_rpm");
+    assert!(threshold < 6000.0, "{}", op["result"]["stability"]);
+    let at = run(&body(threshold)).unwrap();
+    let s = &at["result"]["stability"];
+    let (m, mc) = (num(s, "mass_parameter"), num(s, "critical_mass_parameter"));
+    assert!((m / mc - 1.0).abs() < 2e-3, "m̄ {m} vs m̄_c {mc}");
+}

@@ -806,9 +806,42 @@ fn dynamic_coefficients(
         }
         _ => s_op,
     };
+    // Along the locus the speed changes, and with it a turbulent film's Reynolds number
+    // (Re ∝ speed at fixed viscosity): the film at ε has Re = Re_op S(ε; Re)/S_op, a fixed point
+    // found from single film solves (S changes little with Re, so it settles in a few steps)
+    // before the coefficients are taken there. The turbulence decision itself stays the
+    // operating point's (the Ng–Pan factors tend to laminar as Re falls).
+    let locus_physics = |e: f64| -> Result<FilmModel, CalcError> {
+        let (Some(re_op), Method::Numerical { mesh, stop, .. }) =
+            (physics.turbulence_reynolds, search)
+        else {
+            return Ok(physics);
+        };
+        let ld = case.geometry.l_over_d();
+        let mut re = re_op;
+        for _ in 0..30 {
+            let mut alive = || budget.alive();
+            let with = FilmModel {
+                turbulence_reynolds: Some(re),
+                ..physics
+            };
+            let (_, film, _) =
+                performance::positioned_film(e, ld, with, mesh, stop, None, &mut alive)?;
+            let next = re_op * film.sommerfeld_number() / s_op;
+            let settled = (next / re - 1.0).abs() < 1e-6;
+            re = next;
+            if settled {
+                break;
+            }
+        }
+        Ok(FilmModel {
+            turbulence_reynolds: Some(re),
+            ..physics
+        })
+    };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match coefficients_at(case, search, e, physics, &budget) {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, &budget)) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
@@ -867,7 +900,7 @@ fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, physics, &budget)?
+            coefficients_at(case, search, e, locus_physics(e)?, &budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),

@@ -503,8 +503,9 @@ pub struct Stability {
     /// Whether a rigid rotor of `rotor_mass_kg` runs stably at the operating speed.
     pub stable_at_operating_speed: bool,
     /// Speed at which oil whirl sets in, rev/min, holding load and viscosity (searched along the
-    /// equilibrium locus on the `fast` mesh: a few per cent); absent when none
-    /// exists in the solved range (see `statement`).
+    /// equilibrium locus on the `fast` mesh: a few per cent; a turbulent film's Reynolds number
+    /// follows the speed along it); absent when none exists in the solved range (see
+    /// `statement`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub threshold_speed_rpm: Option<f64>,
     /// Whirl frequency ratio at the operating point, dimensionless (about 0.5 for plain bearings);
