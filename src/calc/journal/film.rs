@@ -26,6 +26,39 @@ pub struct Mesh {
     pub axial_half: usize,
 }
 
+impl Mesh {
+    /// The mesh a nested solve starts from and the error estimate compares with: half the cells
+    /// each way (circumferential counts are even, by validation), at least 2 across the
+    /// half-length.
+    pub fn coarse(self) -> Mesh {
+        Mesh {
+            circumferential: self.circumferential / 2,
+            axial_half: (self.axial_half / 2).max(2),
+        }
+    }
+
+    /// Whether [`Mesh::coarse`] halves the spacing exactly in both directions — the ratio 2 that
+    /// Richardson's f + (f − c)/3 assumes for a second-order scheme.
+    pub fn halves_exactly(self) -> bool {
+        self.circumferential % 2 == 0 && self.axial_half % 2 == 0 && self.axial_half >= 4
+    }
+
+    /// The refinement ratio r from [`Mesh::coarse`] to this mesh for the error estimate
+    /// |f − c|/(r² − 1): exactly 2 when halving; otherwise the smaller of the two directions'
+    /// ratios (the larger, conservative estimate), or the circumferential ratio alone when the
+    /// axial count cannot be reduced (2 cells: the estimate then lacks the axial part).
+    pub fn refinement_ratio(self) -> f64 {
+        let c = self.coarse();
+        let rx = self.circumferential as f64 / c.circumferential as f64;
+        let ry = self.axial_half as f64 / c.axial_half as f64;
+        if ry > 1.0 {
+            rx.min(ry)
+        } else {
+            rx
+        }
+    }
+}
+
 /// Everything the numbers of Table 8.6 are made from, for one solve.
 #[derive(Debug, Clone, PartialEq)]
 pub struct FilmSolution {
@@ -355,10 +388,7 @@ pub fn solve_nested(
     warm: Option<Vec<f64>>,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
-    let coarse_mesh = Mesh {
-        circumferential: mesh.circumferential / 2,
-        axial_half: (mesh.axial_half / 2).max(2),
-    };
+    let coarse_mesh = mesh.coarse();
     let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
     // (A mass-conserving field carries its content after the pressure: only the pressure is
     // carried over; the content starts flooded and settles in the first sweeps.)
@@ -749,5 +779,21 @@ mod tests {
                 }
             }
         }
+    }
+
+    #[test]
+    fn coarse_meshes_and_their_ratios() {
+        let m = |n, k| Mesh {
+            circumferential: n,
+            axial_half: k,
+        };
+        assert_eq!(m(192, 24).coarse(), m(96, 12));
+        assert!(m(192, 24).halves_exactly() && m(96, 12).halves_exactly());
+        assert_eq!(m(192, 24).refinement_ratio(), 2.0);
+        // Odd or tiny axial counts do not halve: the estimate takes the smaller ratio.
+        assert!(!m(96, 5).halves_exactly() && !m(96, 2).halves_exactly());
+        assert_eq!(m(96, 5).refinement_ratio(), 2.0); // 5 → 2 is 2.5, the circle's 2 is smaller
+        assert_eq!(m(96, 3).refinement_ratio(), 1.5);
+        assert_eq!(m(96, 2).refinement_ratio(), 2.0);
     }
 }

@@ -351,10 +351,7 @@ fn at_eccentricity_from(
                     (fine, coarse)
                 }
                 true => {
-                    let half = Mesh {
-                        circumferential: mesh.circumferential / 2,
-                        axial_half: (mesh.axial_half / 2).max(2),
-                    };
+                    let half = mesh.coarse();
                     let (_, coarse, _) =
                         positioned_film(eps, l_over_d, physics, half, stop, None, keep_going)?;
                     let (_, fine, _) =
@@ -364,9 +361,14 @@ fn at_eccentricity_from(
             };
             let mut point = from_film(eps, &fine, physics);
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
-            // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
-            point.error_estimate = Some(((sf - sc) / 3.0 / sf).abs());
-            if richardson {
+            // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
+            // when the coarse mesh halves both spacings.
+            let r = mesh.refinement_ratio();
+            point.error_estimate = Some(((sf - sc) / (r * r - 1.0) / sf).abs());
+            // Richardson's extrapolation needs the same ratio both ways: only exact halvings
+            // (the `high` mesh is one) are extrapolated.
+            debug_assert!(!richardson || mesh.halves_exactly(), "{mesh:?}");
+            if richardson && mesh.halves_exactly() {
                 let extrapolate = |f: f64, c: f64| f + (f - c) / 3.0;
                 let film = FilmSolution {
                     load_radial: extrapolate(fine.load_radial, coarse.load_radial),
@@ -459,10 +461,7 @@ pub fn equilibrium(
             richardson: false,
         } if mesh.circumferential >= 32 => Some(Method::Numerical {
             level,
-            mesh: Mesh {
-                circumferential: mesh.circumferential / 2,
-                axial_half: (mesh.axial_half / 2).max(2),
-            },
+            mesh: mesh.coarse(),
             stop,
             richardson: false,
         }),
