@@ -25,6 +25,9 @@ pub struct Grid {
     pub width: f64,
     /// p = 0 at y = 0 and ∂p/∂y = 0 at y = `width` (the mid-plane of a symmetric film).
     pub symmetric: bool,
+    /// x[0] and x[nx] are the same line (x[nx] = x[0] + period): column 0 holds unknowns unless
+    /// held, and column nx mirrors it. Mass-conserving solves only.
+    pub periodic: bool,
 }
 
 impl Grid {
@@ -75,6 +78,11 @@ pub struct Stencil {
     cw: Vec<f64>,
     /// The source integrated over the control volume (squeeze: 12 ∂h/∂τ).
     src: Vec<f64>,
+    /// Nodes held at their given value (feed ports), not solved.
+    held: Vec<bool>,
+    periodic: bool,
+    /// The far y edge (row ny) is an ambient p = 0 edge (not a symmetry plane).
+    far_edge: bool,
 }
 
 /// A direction of flow.
@@ -94,6 +102,8 @@ pub struct Problem<'a> {
     pub anisotropy: f64,
     pub wedge: f64,
     pub source: Option<&'a dyn Fn(f64, f64) -> f64>,
+    /// Nodes held at the value the field gives them (a feed port at supply pressure), if any.
+    pub held: Option<&'a dyn Fn(f64, f64) -> bool>,
 }
 
 /// Index of node (i, j) in a full-grid field of (nx+1) × (ny+1) values, x fastest.
@@ -119,7 +129,12 @@ impl Stencil {
             ce: vec![0.0; n],
             cw: vec![0.0; n],
             src: vec![0.0; n],
+            held: vec![false; n],
+            periodic: grid.periodic,
+            far_edge: !grid.symmetric,
         };
+        let period = grid.x[nx] - grid.x[0];
+        let first = if grid.periodic { 0 } else { 1 };
         let h = problem.film;
         let cond = |x: f64, y: f64, axis: Axis| match problem.conductance {
             Some(c) => c(x, y, axis),
@@ -133,9 +148,20 @@ impl Stencil {
             let hy = grid.cv_y(j);
             let (y_s, y_n) = (y - 0.5 * dy, (y + 0.5 * dy).min(grid.width));
             let at_mid = grid.symmetric && j == grid.ny;
-            for i in 1..nx {
+            for i in first..nx {
                 let k = j * (nx + 1) + i;
-                let (xw, xp, xe) = (grid.x[i - 1], grid.x[i], grid.x[i + 1]);
+                if problem.held.is_some_and(|held| held(grid.x[i], y)) {
+                    s.held[k] = true;
+                    if i == 0 {
+                        s.held[k + nx] = true;
+                    }
+                    continue;
+                }
+                let (xw, xp, xe) = if i == 0 {
+                    (grid.x[nx - 1] - period, grid.x[0], grid.x[1])
+                } else {
+                    (grid.x[i - 1], grid.x[i], grid.x[i + 1])
+                };
                 let (fw, fe) = (0.5 * (xw + xp), 0.5 * (xp + xe));
                 let wx = fe - fw;
                 let (hw, he) = (h(fw, y), h(fe, y));
@@ -248,6 +274,10 @@ pub fn solve(
     stop: Stopping,
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Solved, SolveError> {
+    debug_assert!(
+        !stencil.periodic,
+        "periodic films are mass-conserving solves"
+    );
     let w = stencil.nx + 1;
     let mut sweeps = 0;
     loop {
@@ -334,28 +364,32 @@ pub fn solve_mass_conserving(
     keep_going: &mut dyn FnMut() -> bool,
 ) -> Result<Solved, SolveError> {
     let w = stencil.nx + 1;
+    let nx = stencil.nx;
+    let first = if stencil.periodic { 0 } else { 1 };
     let mut sweeps = 0;
     loop {
         sweeps += 1;
         let (mut change, mut size, mut content_change) = (0.0f64, 0.0f64, 0.0f64);
         for j in 1..stencil.rows {
             let has_north = j + 1 < stencil.rows;
-            for i in 1..stencil.nx {
+            for i in first..nx {
                 let k = j * w + i;
                 let ap = stencil.ap[k];
                 if ap <= 0.0 {
                     continue;
                 }
+                // Across the seam of a periodic film the west neighbour is column nx − 1.
+                let kw = if i == 0 { k + nx - 1 } else { k - 1 };
                 let north = if has_north {
                     stencil.an[k] * p[k + w]
                 } else {
                     0.0
                 };
                 let nb = stencil.ae[k] * p[k + 1]
-                    + stencil.aw[k] * p[k - 1]
+                    + stencil.aw[k] * p[kw]
                     + north
                     + stencil.a_s[k] * p[k - w];
-                let inflow = stencil.cw[k] * content[k - 1];
+                let inflow = stencil.cw[k] * content[kw];
                 let out = stencil.ce[k] + stencil.src[k];
                 let balanced = if out > 0.0 {
                     (nb + inflow) / out
@@ -373,6 +407,10 @@ pub fn solve_mass_conserving(
                 content_change = content_change.max((next_theta - content[k]).abs());
                 p[k] = next_p;
                 content[k] = next_theta;
+                if i == 0 {
+                    p[k + nx] = next_p;
+                    content[k + nx] = next_theta;
+                }
             }
         }
         if !change.is_finite() || !size.is_finite() || !content_change.is_finite() {
@@ -427,30 +465,65 @@ impl Stencil {
     /// mass-conserving field they close to the solver's tolerance.
     pub fn fluxes(&self, p: &[f64], content: &[f64]) -> Fluxes {
         let w = self.nx + 1;
+        let nx = self.nx;
         let mut f = Fluxes {
             inflow: 0.0,
             outflow: 0.0,
             side: 0.0,
             squeeze: 0.0,
         };
+        let first = if self.periodic { 0 } else { 1 };
+        // Where a face's flux goes when its far node is not solved: an ambient y edge, the
+        // outlet column, or a supply (the x0 column, a held port).
+        enum Sink {
+            Free,
+            Side,
+            Out,
+            Supply,
+        }
+        let sink = |k: usize| {
+            let (j, i) = (k / w, k % w);
+            let edge_row = j == 0 || (self.far_edge && j + 1 == self.rows);
+            if self.held[k] {
+                Sink::Supply
+            } else if edge_row {
+                Sink::Side
+            } else if self.periodic {
+                Sink::Free
+            } else if i == nx {
+                Sink::Out
+            } else if i == 0 {
+                Sink::Supply
+            } else {
+                Sink::Free
+            }
+        };
+        let add = |to: usize, out: f64, f: &mut Fluxes| match sink(to) {
+            Sink::Free => {}
+            Sink::Side => f.side += out,
+            Sink::Out => f.outflow += out,
+            Sink::Supply => f.inflow -= out,
+        };
         for j in 1..self.rows {
-            for i in 1..self.nx {
+            for i in first..nx {
                 let k = j * w + i;
                 if self.ap[k] <= 0.0 {
                     continue;
                 }
-                if i == 1 {
-                    f.inflow += self.cw[k] * content[k - 1] - self.aw[k] * (p[k] - p[k - 1]);
-                }
-                if i + 1 == self.nx {
-                    f.outflow += self.ce[k] * content[k] - self.ae[k] * (p[k + 1] - p[k]);
-                }
-                if j == 1 {
-                    f.side += self.a_s[k] * (p[k] - p[k - w]);
-                }
-                if j + 1 < self.rows && self.ap[k + w] <= 0.0 {
-                    // the next row is the far p = 0 edge
-                    f.side += self.an[k] * (p[k] - p[k + w]);
+                let kw = if i == 0 { k + nx - 1 } else { k - 1 };
+                add(
+                    k + 1,
+                    self.ce[k] * content[k] - self.ae[k] * (p[k + 1] - p[k]),
+                    &mut f,
+                );
+                add(
+                    kw,
+                    self.aw[k] * (p[k] - p[kw]) - self.cw[k] * content[kw],
+                    &mut f,
+                );
+                add(k - w, self.a_s[k] * (p[k] - p[k - w]), &mut f);
+                if j + 1 < self.rows {
+                    add(k + w, self.an[k] * (p[k] - p[k + w]), &mut f);
                 }
                 f.squeeze += self.src[k] * content[k];
             }
@@ -463,18 +536,20 @@ impl Stencil {
     pub fn mass_residual(&self, p: &[f64], content: &[f64]) -> f64 {
         let w = self.nx + 1;
         let (mut worst, mut scale) = (0.0f64, 0.0f64);
+        let first = if self.periodic { 0 } else { 1 };
         for j in 1..self.rows {
-            for i in 1..self.nx {
+            for i in first..self.nx {
                 let k = j * w + i;
                 if self.ap[k] <= 0.0 {
                     continue;
                 }
+                let kw = if i == 0 { k + self.nx - 1 } else { k - 1 };
                 let north = if j + 1 < self.rows { p[k + w] } else { 0.0 };
                 let diffusion = self.ae[k] * (p[k + 1] - p[k])
-                    + self.aw[k] * (p[k - 1] - p[k])
+                    + self.aw[k] * (p[kw] - p[k])
                     + self.an[k] * (north - p[k])
                     + self.a_s[k] * (p[k - w] - p[k]);
-                let r = self.ce[k] * content[k] - self.cw[k] * content[k - 1]
+                let r = self.ce[k] * content[k] - self.cw[k] * content[kw]
                     + self.src[k] * content[k]
                     - diffusion;
                 worst = worst.max(r.abs());
@@ -527,6 +602,7 @@ mod tests {
             ny,
             width,
             symmetric,
+            periodic: false,
         }
     }
 
@@ -542,6 +618,7 @@ mod tests {
             anisotropy: 1.0,
             wedge: 0.0,
             source: Some(&src),
+            held: None,
         };
         for (grid, centre) in [
             (uniform(32, 32, 1.0, false), (16, 16)),
@@ -579,6 +656,7 @@ mod tests {
             anisotropy: 1e-6,
             wedge: 6.0,
             source: None,
+            held: None,
         };
         let s = Stencil::assemble(&grid, &problem);
         let omega = s.sor_factor(&grid);
@@ -617,6 +695,7 @@ mod tests {
             anisotropy: 1.0,
             wedge: 6.0,
             source: None,
+            held: None,
         };
         let s = Stencil::assemble(&grid, &problem);
         let mut p = vec![0.0; (grid.nx() + 1) * (grid.ny + 1)];
@@ -662,6 +741,7 @@ mod tests {
             anisotropy: 1e-6,
             wedge: 6.0,
             source: None,
+            held: None,
         };
         let s = Stencil::assemble(&grid, &problem);
         let n = (grid.nx() + 1) * (grid.ny + 1);
@@ -723,5 +803,79 @@ mod tests {
             .iter()
             .fold((f64::MAX, f64::MIN), |(a, b), &v| (a.min(v), b.max(v)));
         assert!(hi - lo < 0.02 * hi, "θh from {lo} to {hi}");
+    }
+
+    /// A periodic film whose seam column is held flooded at p = 0 is the same problem as the
+    /// open film fed at x0 and discharging at x1: the same field, and the supply the held
+    /// column gives is the open film's inflow less its outflow. A port held at a supply
+    /// pressure over part of the width feeds exactly what leaves at the sides.
+    #[test]
+    fn periodic_film_with_held_ports() {
+        let film = |x: f64, _: f64| 1.0 + 0.6 * x.cos();
+        let mut grid = Grid {
+            x: (0..=96)
+                .map(|i| 2.0 * std::f64::consts::PI * i as f64 / 96.0)
+                .collect(),
+            ny: 8,
+            width: 0.5,
+            symmetric: true,
+            periodic: false,
+        };
+        let open_problem = Problem {
+            film: &film,
+            conductance: None,
+            anisotropy: 0.25,
+            wedge: 6.0,
+            source: None,
+            held: None,
+        };
+        let stop = Stopping {
+            tolerance: 1e-12,
+            max_sweeps: 200_000,
+        };
+        let n = (grid.nx() + 1) * (grid.ny + 1);
+        let open = Stencil::assemble(&grid, &open_problem);
+        let omega = open.sor_factor(&grid);
+        let (mut p0, mut t0) = (vec![0.0; n], vec![1.0; n]);
+        solve_mass_conserving(&open, omega, &mut p0, &mut t0, stop, &mut || true).unwrap();
+        let f0 = open.fluxes(&p0, &t0);
+
+        grid.periodic = true;
+        let seam = |x: f64, _: f64| x < 1e-9;
+        let problem = Problem {
+            held: Some(&seam),
+            ..open_problem
+        };
+        let periodic = Stencil::assemble(&grid, &problem);
+        let (mut p1, mut t1) = (vec![0.0; n], vec![1.0; n]);
+        solve_mass_conserving(&periodic, omega, &mut p1, &mut t1, stop, &mut || true).unwrap();
+        let f1 = periodic.fluxes(&p1, &t1);
+        for k in 0..n {
+            assert!((p0[k] - p1[k]).abs() < 1e-9 * (1.0 + p0[k].abs()), "{k}");
+        }
+        assert!((f1.inflow - (f0.inflow - f0.outflow)).abs() < 1e-9 * f0.inflow);
+        assert!(f1.imbalance().abs() < 1e-8 && f0.imbalance().abs() < 1e-8);
+
+        // A port over the middle third of the width at supply pressure, at x = π/2.
+        let port = |x: f64, y: f64| (x - 0.5 * std::f64::consts::PI).abs() < 0.04 && y > 0.33;
+        let fed = Problem {
+            held: Some(&port),
+            ..open_problem
+        };
+        let s = Stencil::assemble(&grid, &fed);
+        let (mut p, mut t) = (vec![0.0; n], vec![1.0; n]);
+        for j in 0..=grid.ny {
+            for i in 0..=grid.nx() {
+                if port(grid.x[i], grid.y(j)) {
+                    p[at(&grid, i, j)] = 0.5;
+                }
+            }
+        }
+        let done = solve_mass_conserving(&s, omega, &mut p, &mut t, stop, &mut || true).unwrap();
+        assert!(done.residual < 1e-8);
+        let f = s.fluxes(&p, &t);
+        assert!(f.inflow > 0.0 && f.outflow == 0.0, "{f:?}");
+        assert!(f.imbalance().abs() < 1e-8, "{f:?}");
+        assert!(t.iter().any(|&c| c < 0.9), "the film cavitates");
     }
 }

@@ -174,6 +174,7 @@ pub fn grid(mesh: Mesh, film: &Film) -> Grid {
         },
         width: if symmetric { 0.5 } else { 1.0 },
         symmetric,
+        periodic: false,
     }
 }
 
@@ -330,6 +331,7 @@ pub fn solve(
         anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
         wedge: 12.0 * PI,
         source: if moving { Some(&squeeze) } else { None },
+        held: None,
     };
     let stencil = Stencil::assemble(&g, &problem);
     let n = (g.nx() + 1) * (g.ny + 1);
