@@ -493,6 +493,27 @@ fn jfo_cavitation_through_the_room() {
         .as_str()
         .unwrap()
         .contains("opposite the load"));
+    // The hole is a port at supply pressure in a periodic film: what it supplies leaks from
+    // the sides, and the film's peak already holds the supply pressure.
+    let top = &fed_on_top["result"];
+    let (q_in, q_side) = (num(top, "inlet_flow_m3_s"), num(top, "side_leakage_m3_s"));
+    assert!((q_in / q_side - 1.0).abs() < 1e-6, "{q_in} vs {q_side}");
+    let scale_p = 0.03 * 50.0 * 500.0f64.powi(2);
+    assert!(
+        (num(top, "max_pressure_pa") / (num(top, "max_pressure_dimensionless") * scale_p) - 1.0)
+            .abs()
+            < 1e-9
+    );
+    // At an eccentricity where the supply's push outweighs the film: a 422 naming it.
+    body.as_object_mut().unwrap().remove("load_n");
+    body["eccentricity_ratio"] = json!(0.01);
+    body["feed"]["supply_pressure_pa"] = json!(1e7);
+    match run(&body) {
+        Err(Failure::Calc(stribeck::calc::CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/feed/supply_pressure_pa")
+        }
+        other => panic!("expected a 422, got {other:?}"),
+    }
 }
 
 /// The misaligned film's moment on the journal: absent when aligned, vanishing with the tilt,

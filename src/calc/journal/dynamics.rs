@@ -234,7 +234,7 @@ mod tests {
     /// with positive direct terms, and the equilibrium they were taken about is the JFO one.
     #[test]
     fn mass_conserving_films_have_consistent_coefficients() {
-        use crate::calc::journal::film::FeedLine;
+        use crate::calc::journal::film::{FeedLine, Supply};
         let mesh = Mesh {
             circumferential: 96,
             axial_half: 12,
@@ -243,7 +243,7 @@ mod tests {
             let reynolds =
                 perturbation(eps, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
             let jfo = |feed| FilmModel {
-                mass_conserving: Some(feed),
+                mass_conserving: Some(Supply::line(feed)),
                 ..FilmModel::REYNOLDS
             };
             let flooded =

@@ -174,7 +174,7 @@ pub fn grid(mesh: Mesh, film: &Film) -> Grid {
         },
         width: if symmetric { 0.5 } else { 1.0 },
         symmetric,
-        periodic: false,
+        periodic: film.physics.port().is_some(),
     }
 }
 
@@ -216,13 +216,12 @@ pub struct FilmModel {
     /// that follows the journal). Stachowiak & Batchelor's PARTIAL and STABILITY programs tilt
     /// in the load plane: load line, direction 0.
     pub misalignment: Option<(f64, f64, bool)>,
-    /// Mass-conserving (JFO) cavitation in place of the Reynolds condition, with the feed line
-    /// where the flooded supply enters (requires `cavitation`).
-    pub mass_conserving: Option<FeedLine>,
+    /// Mass-conserving (JFO) cavitation in place of the Reynolds condition, with the supply
+    /// that feeds it (requires `cavitation`).
+    pub mass_conserving: Option<Supply>,
 }
 
-/// Where a mass-conserving film is fed: a line across the whole length, flooded (θ_f = 1) at
-/// the film's edge pressure.
+/// Where a mass-conserving film is fed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FeedLine {
     /// At h_max (the Reynolds model's feed line, Table 8.6).
@@ -231,6 +230,40 @@ pub enum FeedLine {
     /// h_max against the rotation, inside the Reynolds model's cavitated zone; the film must
     /// reform from what the supply fills.
     OppositeLoad,
+    /// Two axial grooves at ±90° to the load line (at θ = π/2 − φ and 3π/2 − φ).
+    TwoGrooves,
+}
+
+/// The supply of a mass-conserving film: where, and through what.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Supply {
+    pub position: FeedLine,
+    /// None: a line across the whole length, flooded (θ_f = 1) at the edges' pressure, where
+    /// the film starts and ends (the Reynolds model's feed line). Some: a port of finite size
+    /// at supply pressure in a periodic 360° film, which elsewhere carries round whatever
+    /// leaves the cavitated zone.
+    pub port: Option<Port>,
+}
+
+impl Supply {
+    /// A flooded line feed at `position`.
+    pub fn line(position: FeedLine) -> Supply {
+        Supply {
+            position,
+            port: None,
+        }
+    }
+}
+
+/// A feed port (hole or axial groove), centred on the mid-plane.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Port {
+    /// Axial extent over the bearing length (L_g/L, or D_H/L for a hole).
+    pub length_ratio: f64,
+    /// Angular width, rad (w_g/R, or D_H/R for a hole); at least one node column.
+    pub width: f64,
+    /// Supply pressure above ambient, P̄_s = p_s (C/R)²/(μ N_s).
+    pub pressure_bar: f64,
 }
 
 impl FilmModel {
@@ -246,6 +279,17 @@ impl FilmModel {
     /// The film content is a field of its own (mass-conserving cavitation).
     pub fn has_content(&self) -> bool {
         self.cavitation && self.mass_conserving.is_some()
+    }
+
+    /// A mass-conserving 360° film fed through ports: periodic, with held port nodes.
+    pub fn port(&self) -> Option<(FeedLine, Port)> {
+        match self.mass_conserving {
+            Some(Supply {
+                position,
+                port: Some(port),
+            }) if self.cavitation && self.arc.is_none() => Some((position, port)),
+            _ => None,
+        }
     }
 }
 
@@ -321,6 +365,35 @@ pub fn solve(
         let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
         h.powi(3) * if axis == Axis::X { gx } else { gy }
     };
+    // Port nodes (a periodic film fed at supply pressure): the columns within the port's
+    // angular width of each groove centre (the film's start, and π on for two grooves; always
+    // the nearest column), the rows within its axial extent (always the mid-plane).
+    let port = film.physics.port();
+    let centres: Vec<f64> = match port {
+        None => Vec::new(),
+        Some((position, _)) => {
+            let nearest = |c: f64| {
+                g.x.iter()
+                    .copied()
+                    .min_by(|a, b| (a - c).abs().total_cmp(&(b - c).abs()))
+                    .unwrap_or(c)
+            };
+            let start = g.x[0];
+            match position {
+                FeedLine::TwoGrooves => vec![start, nearest(start + PI)],
+                _ => vec![start],
+            }
+        }
+    };
+    let held = |theta: f64, y: f64| -> bool {
+        let Some((_, p)) = port else { return false };
+        let axial = (y - 0.5).abs() <= 0.5 * p.length_ratio + 1e-12;
+        axial
+            && centres.iter().any(|&c| {
+                let d = (theta - c + PI).rem_euclid(2.0 * PI) - PI;
+                d.abs() <= 0.5 * p.width + 1e-12
+            })
+    };
     let problem = Problem {
         film: &thickness,
         conductance: if film.physics.turbulence_reynolds.is_some() {
@@ -331,7 +404,7 @@ pub fn solve(
         anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
         wedge: 12.0 * PI,
         source: if moving { Some(&squeeze) } else { None },
-        held: None,
+        held: if port.is_some() { Some(&held) } else { None },
     };
     let stencil = Stencil::assemble(&g, &problem);
     let n = (g.nx() + 1) * (g.ny + 1);
@@ -349,9 +422,24 @@ pub fn solve(
         } else {
             vec![1.0; n]
         };
-        // The supply: flooded at the feed line.
-        for j in 0..=g.ny {
-            content[at(&g, 0, j)] = 1.0;
+        match port {
+            // The supply: flooded at the feed line.
+            None => {
+                for j in 0..=g.ny {
+                    content[at(&g, 0, j)] = 1.0;
+                }
+            }
+            // The ports: flooded at supply pressure.
+            Some((_, port)) => {
+                for j in 0..=g.ny {
+                    for i in 0..=g.nx() {
+                        if held(g.x[i], g.y(j)) {
+                            p[at(&g, i, j)] = port.pressure_bar;
+                            content[at(&g, i, j)] = 1.0;
+                        }
+                    }
+                }
+            }
         }
         let solved = reynolds::solve_mass_conserving(
             &stencil,
@@ -626,6 +714,7 @@ fn parabolic_peak(x: &[f64], y: &[f64], i: usize) -> (f64, f64) {
 mod tests {
     use super::*;
     use crate::calc::journal::performance::positioned_film;
+    use crate::calc::CalcError;
 
     const STOP: Stopping = Stopping {
         tolerance: 1e-10,
@@ -634,7 +723,7 @@ mod tests {
 
     fn jfo(feed: FeedLine) -> FilmModel {
         FilmModel {
-            mass_conserving: Some(feed),
+            mass_conserving: Some(Supply::line(feed)),
             ..FilmModel::REYNOLDS
         }
     }
@@ -761,10 +850,26 @@ mod tests {
         };
         for ld in [0.25, 2.0] {
             for eps in [0.01, 0.3, 0.7, 0.95, 0.99] {
-                for feed in [FeedLine::MaxFilm, FeedLine::OppositeLoad] {
-                    let (_, j, _) =
-                        positioned_film(eps, ld, jfo(feed), mesh, STOP, None, &mut || true)
-                            .unwrap_or_else(|e| panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"));
+                for model in [
+                    jfo(FeedLine::MaxFilm),
+                    jfo(FeedLine::OppositeLoad),
+                    ported(FeedLine::OppositeLoad, 0.2, 0.2, 0.5),
+                    ported(FeedLine::TwoGrooves, 0.8, 0.3, 2.0),
+                ] {
+                    let feed = model.mass_conserving;
+                    let j = match positioned_film(eps, ld, model, mesh, STOP, None, &mut || true) {
+                        Ok((_, j, _)) => j,
+                        // At light load a port's supply pressure may outweigh the film.
+                        Err(CalcError::Impossible { pointer, .. })
+                            if model.port().is_some()
+                                && eps < 0.5
+                                && pointer
+                                    == crate::calc::journal::performance::SUPPLY_DOMINATES =>
+                        {
+                            continue
+                        }
+                        Err(e) => panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"),
+                    };
                     let s = j.sommerfeld_number();
                     assert!(s.is_finite() && s > 0.0, "L/D {ld} ε {eps} {feed:?}");
                     for v in [
@@ -777,7 +882,9 @@ mod tests {
                     ] {
                         assert!(v.is_finite(), "L/D {ld} ε {eps} {feed:?}: {j:?}");
                     }
-                    assert!(balance(&j).abs() < 1e-6, "L/D {ld} ε {eps} {feed:?}");
+                    let out = j.outlet_flow_bar.unwrap();
+                    let b = (j.inlet_flow_bar - out - j.side_leakage_bar) / j.inlet_flow_bar;
+                    assert!(b.abs() < 1e-6, "L/D {ld} ε {eps} {feed:?}: {b}");
                 }
             }
         }
@@ -797,5 +904,81 @@ mod tests {
         assert_eq!(m(96, 5).refinement_ratio(), 2.0); // 5 → 2 is 2.5, the circle's 2 is smaller
         assert_eq!(m(96, 3).refinement_ratio(), 1.5);
         assert_eq!(m(96, 2).refinement_ratio(), 2.0);
+    }
+
+    fn ported(position: FeedLine, length_ratio: f64, width: f64, pressure_bar: f64) -> FilmModel {
+        FilmModel {
+            mass_conserving: Some(Supply {
+                position,
+                port: Some(Port {
+                    length_ratio,
+                    width,
+                    pressure_bar,
+                }),
+            }),
+            ..FilmModel::REYNOLDS
+        }
+    }
+
+    /// A port at h_max spanning the whole length, of no width and at the edges' pressure, is the
+    /// line feed: the periodic film gives the Reynolds film's load. Real ports (a hole or a
+    /// groove opposite the load, two grooves at ±90°) supply exactly what leaks from the sides,
+    /// and a hole opposite the load, which feeds the film's start over a fifth of its length
+    /// only, starves it: less load than the Reynolds film (which refills the whole gap at
+    /// h_max), and less than a groove over 0.8 L in the same place.
+    #[test]
+    fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
+        let mesh = Mesh {
+            circumferential: 96,
+            axial_half: 12,
+        };
+        let s = |model: FilmModel| {
+            let (_, f, _) = positioned_film(0.7, 1.0, model, mesh, STOP, None, &mut || true)
+                .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
+            f
+        };
+        let (r, _) = solve(Film::steady(0.7, 1.0), mesh, STOP, None, &mut || true).unwrap();
+        let line = s(ported(FeedLine::MaxFilm, 1.0, 0.0, 0.0));
+        assert!((line.sommerfeld_number() / r.sommerfeld_number() - 1.0).abs() < 1e-3);
+        let hole = s(ported(FeedLine::OppositeLoad, 0.2, 0.2, 0.5));
+        let groove = s(ported(FeedLine::OppositeLoad, 0.8, 0.2, 0.5));
+        let two = s(ported(FeedLine::TwoGrooves, 0.8, 0.6, 0.5));
+        for f in [&line, &hole, &groove, &two] {
+            assert!(f.inlet_flow_bar > 0.0);
+            let balance = (f.inlet_flow_bar - f.side_leakage_bar) / f.inlet_flow_bar;
+            assert!(balance.abs() < 1e-6, "{balance}");
+            assert_eq!(f.outlet_flow_bar, Some(0.0));
+        }
+        assert!(hole.sommerfeld_number() > groove.sommerfeld_number());
+        assert!(groove.sommerfeld_number() > r.sommerfeld_number());
+        assert!(hole.cavitated_fraction > groove.cavitated_fraction);
+    }
+
+    /// More supply pressure pushes more oil through a hole opposite the load and floods more of
+    /// the film: the supply flow rises and the cavitated share falls.
+    #[test]
+    fn more_supply_pressure_floods_more_of_the_film() {
+        let mesh = Mesh {
+            circumferential: 48,
+            axial_half: 6,
+        };
+        let mut last: Option<FilmSolution> = None;
+        for p in [0.1, 1.0, 10.0] {
+            let (_, f, _) = positioned_film(
+                0.5,
+                1.0,
+                ported(FeedLine::OppositeLoad, 0.2, 0.2, p),
+                mesh,
+                STOP,
+                None,
+                &mut || true,
+            )
+            .unwrap();
+            if let Some(prev) = &last {
+                assert!(f.inlet_flow_bar > prev.inlet_flow_bar, "P̄_s {p}");
+                assert!(f.cavitated_fraction < prev.cavitated_fraction, "P̄_s {p}");
+            }
+            last = Some(f);
+        }
     }
 }

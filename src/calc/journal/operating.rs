@@ -7,7 +7,7 @@ use std::f64::consts::PI;
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
 use super::feed::{self, Feed, Flows};
-use super::film::{FeedLine, FilmModel};
+use super::film::{FeedLine, FilmModel, Port, Supply};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
 use super::plain::{
     CavitationMode, DynamicCoefficients, FilmMoment, JournalEffects, PlainOutput, ProfilePoint,
@@ -100,20 +100,78 @@ impl Case {
         self.effects.cavitation != CavitationMode::Off
     }
 
-    /// Mass-conserving cavitation, and where its film is fed: opposite the load for a single
-    /// hole or axial groove there, else at h_max.
-    fn mass_conserving(&self) -> Option<FeedLine> {
-        (self.effects.cavitation == CavitationMode::Jfo).then(|| match self.feed {
+    /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
+    /// circumferential groove, or on a partial arc) a flooded line at h_max at the edges'
+    /// pressure; a hole or axial groove(s) as ports at supply pressure in a periodic film,
+    /// where the feed sits (opposite the load, at h_max, or two grooves at ±90°).
+    fn supply(&self, t: f64) -> Option<Supply> {
+        if self.effects.cavitation != CavitationMode::Jfo {
+            return None;
+        }
+        let g = self.geometry;
+        let pressure_scale =
+            self.lubricant.viscosity_pa_s(t) * self.speed_rps() * g.r_over_c().powi(2);
+        let at = |position: feed::FeedPosition| match position {
+            feed::FeedPosition::OppositeLoad => FeedLine::OppositeLoad,
+            feed::FeedPosition::AtMaxFilm => FeedLine::MaxFilm,
+        };
+        let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
+            length_ratio,
+            width: 2.0 * width_m / g.diameter_m,
+            pressure_bar: p_s / pressure_scale,
+        };
+        Some(match self.feed {
+            _ if self.arc.is_some() => Supply::line(FeedLine::MaxFilm),
             Some(Feed::Hole {
-                position: feed::FeedPosition::OppositeLoad,
-                ..
-            })
-            | Some(Feed::AxialGroove {
-                position: feed::FeedPosition::OppositeLoad,
-                ..
-            }) if self.arc.is_none() => FeedLine::OppositeLoad,
-            _ => FeedLine::MaxFilm,
+                position,
+                supply_pressure_pa,
+                hole_over_length,
+            }) => Supply {
+                position: at(position),
+                port: Some(port(
+                    hole_over_length,
+                    hole_over_length * g.length_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::AxialGroove {
+                position,
+                supply_pressure_pa,
+                length_ratio,
+                width_over_diameter,
+            }) => Supply {
+                position: at(position),
+                port: Some(port(
+                    length_ratio,
+                    width_over_diameter * g.diameter_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::TwoAxialGrooves {
+                supply_pressure_pa,
+                length_ratio,
+                width_over_diameter,
+            }) => Supply {
+                position: FeedLine::TwoGrooves,
+                port: Some(port(
+                    length_ratio,
+                    width_over_diameter * g.diameter_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::CircumferentialGroove { .. }) | None => Supply::line(FeedLine::MaxFilm),
         })
+    }
+
+    fn mass_conserving(&self) -> bool {
+        self.cavitation() && self.effects.cavitation == CavitationMode::Jfo
+    }
+
+    /// Whether the film's pressures are above ambient with the supply in them (JFO ports)
+    /// rather than relative to the supply pressure.
+    fn ported(&self) -> bool {
+        self.supply(DEFAULT_INLET_C)
+            .is_some_and(|s| s.port.is_some())
     }
 
     /// Film Reynolds number ρ U C/μ at temperature t.
@@ -134,7 +192,7 @@ impl Case {
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
             misalignment: self.misalignment,
-            mass_conserving: self.mass_conserving(),
+            mass_conserving: self.supply(t),
         }
     }
 
@@ -326,21 +384,31 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let cavitation = Decision {
         applied: case.cavitation(),
         mode: case.effects.cavitation.mode(),
-        reason: match (case.cavitation(), case.mass_conserving()) {
+        reason: match (case.cavitation(), case.supply(op.temperature_c)) {
             (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
             (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into(),
-            (true, Some(feed)) => format!(
-                "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed flooded {}",
-                match feed {
-                    FeedLine::MaxFilm => "at h_max",
-                    FeedLine::OppositeLoad => "opposite the load",
+            (true, Some(supply)) => format!(
+                "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed {}",
+                match (supply.position, supply.port) {
+                    (FeedLine::MaxFilm, None) => "flooded along a line at h_max".to_string(),
+                    (FeedLine::OppositeLoad, None) => "flooded along a line opposite the load".to_string(),
+                    (position, Some(port)) => format!(
+                        "through the feed at {} at P̄_s = {:.4} (supply pressure), a periodic 360° film elsewhere",
+                        match position {
+                            FeedLine::MaxFilm => "h_max",
+                            FeedLine::OppositeLoad => "the top, opposite the load",
+                            FeedLine::TwoGrooves => "±90° to the load line",
+                        },
+                        port.pressure_bar
+                    ),
+                    (FeedLine::TwoGrooves, None) => "through two grooves".to_string(),
                 }
             ),
         },
         criterion: None,
     };
-    if case.mass_conserving().is_some() && matches!(case.feed, Some(Feed::TwoAxialGrooves { .. })) {
-        ctx.warn("jfo_feed_at_max_film", "two axial grooves: the mass-conserving film is fed along one line at h_max; the grooves' own positions are not modelled in the film (their flows are Martin's)");
+    if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
+        ctx.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
     }
     ctx.decide("cavitation", cavitation);
     ctx.decide(
@@ -364,7 +432,12 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
 
     let power = case.power_loss(&op);
     let flows = case.flows(&op);
-    let supply_pressure = case.feed.map_or(0.0, |f| f.supply_pressure_pa());
+    // The Reynolds film's pressures are relative to the supply's; a ported JFO film holds it.
+    let supply_pressure = if case.ported() {
+        0.0
+    } else {
+        case.feed.map_or(0.0, |f| f.supply_pressure_pa())
+    };
     // A circumferential groove makes two half-bearings: the solve is of one half.
     let halves = case.halves();
     let friction = point.friction_parameter / g.r_over_c();
@@ -464,7 +537,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             damping_dimensionless: coefficients.damping,
             method: match case.method {
                 Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
-                Method::Numerical { .. } if case.mass_conserving().is_some() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
+                Method::Numerical { .. } if case.mass_conserving() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
                 Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
             },
         });
@@ -703,7 +776,7 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
             ..SolverReport::closed_form("closed_form")
         },
         Method::Numerical { level, mesh, .. } => SolverReport {
-            method: if case.mass_conserving().is_some() {
+            method: if case.mass_conserving() {
                 "finite_volume_jfo_gauss_seidel"
             } else {
                 "finite_volume_psor"
@@ -850,6 +923,12 @@ fn dynamic_coefficients(
                 }
             }
             Ok(None) => 50.0,
+            // Lighter than this a ported supply outweighs the film: the locus ends here.
+            Err(CalcError::Impossible { pointer, .. })
+                if pointer == performance::SUPPLY_DOMINATES =>
+            {
+                f64::NAN
+            }
             Err(err) => {
                 failure.borrow_mut().get_or_insert(err);
                 f64::NAN
@@ -859,6 +938,7 @@ fn dynamic_coefficients(
     let m0 = if stable_now { 1.0 } else { -1.0 };
     let mut bracket = None;
     let mut previous = eps;
+    let mut lightest = eps;
     for k in 1..=10 {
         let next = if stable_now {
             (eps * 0.6f64.powi(k)).max(1e-3)
@@ -869,6 +949,7 @@ fn dynamic_coefficients(
         if m.is_nan() {
             break;
         }
+        lightest = lightest.min(next);
         if m.signum() != m0 {
             bracket = Some((previous, next));
             break;
@@ -909,7 +990,7 @@ fn dynamic_coefficients(
     let statement = match (stable_now, threshold_rpm) {
         (true, Some(t)) => format!("stable at {:.0} rev/min; oil whirl sets in at about {t:.0} rev/min (rigid rotor of {mass:.3} kg, load and viscosity held)", case.speed_rpm),
         (true, None) if whirl.critical_mass_parameter.is_none() => format!("stable at every speed: at ε = {eps:.3} the film cannot sustain whirl for any rotor mass"),
-        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = 0.001)", case.speed_rpm),
+        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = {lightest:.4})", case.speed_rpm),
         (false, Some(t)) => format!("UNSTABLE: oil whirl above about {t:.0} rev/min, below the operating speed {:.0} rev/min", case.speed_rpm),
         (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
     };

@@ -117,12 +117,11 @@ pub fn positioned_film(
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
     // misalignment's direction is measured from it. A full film fed opposite the load starts
     // at θ = −φ.
-    let feed_opposite = model.arc.is_none() && opposite_feed(&model);
+    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
     let place = |phi: f64| Film {
         span: match model.arc {
             Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
-            None if feed_opposite => Some((-phi, 2.0 * PI - phi)),
-            None => None,
+            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
         },
         tilt: model.misalignment.map(|(e, dir, from_centres)| {
             (
@@ -180,10 +179,7 @@ pub fn positioned_film(
         }
         Err(_) => {
             // Not "/misalignment": that pointer means the journal touches.
-            return Err(CalcError::impossible(
-                if model.arc.is_some() { "/arc_deg" } else { "" },
-                "no attitude angle puts the film force on the load line at this eccentricity",
-            ));
+            return Err(no_attitude(&model));
         }
     };
     let film = place(phi);
@@ -192,24 +188,50 @@ pub fn positioned_film(
     let (wa, wb) = (-f.load_radial, f.load_tangential);
     let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
     if wa * da + wb * db <= 0.0 {
-        return Err(CalcError::impossible(
-            if model.arc.is_some() { "/arc_deg" } else { "" },
-            "no attitude angle puts the film force on the load line at this eccentricity",
-        ));
+        return Err(no_attitude(&model));
     }
     Ok((film, f, p))
 }
 
-/// A mass-conserving film fed opposite the load.
-fn opposite_feed(model: &FilmModel) -> bool {
-    model.has_content() && model.mass_conserving == Some(FeedLine::OppositeLoad)
+/// Where a mass-conserving film fed away from h_max starts, as θ + φ (the load line lies at
+/// θ = π − φ): −0 opposite the load, π/2 for the groove at +90° of two; None when fed at h_max.
+fn fed_at(model: &FilmModel) -> Option<f64> {
+    match model.mass_conserving {
+        Some(supply) if model.has_content() => match supply.position {
+            FeedLine::MaxFilm => None,
+            FeedLine::OppositeLoad => Some(0.0),
+            FeedLine::TwoGrooves => Some(0.5 * PI),
+        },
+        _ => None,
+    }
 }
 
 /// Whether the film must be placed against the load line (an attitude search): a partial arc,
 /// a misaligned journal, or a feed fixed in the bearing away from h_max.
 pub fn placed(model: &FilmModel) -> bool {
-    model.arc.is_some() || model.misalignment.is_some() || opposite_feed(model)
+    model.arc.is_some() || model.misalignment.is_some() || fed_at(model).is_some()
 }
+
+/// The film force never lies on the load line at this ε. With a ported supply this happens at
+/// light load, where the supply pressure's own push on the journal outweighs the film's
+/// (Stachowiak & Batchelor §5.6.3 on GROOVE: no attitude converges when the groove pressure
+/// exceeds the hydrodynamic pressure); an equilibrium search then looks at larger ε.
+fn no_attitude(model: &FilmModel) -> CalcError {
+    if model.port().is_some() {
+        CalcError::impossible(
+            SUPPLY_DOMINATES,
+            "the supply pressure's force on the journal outweighs the film's at this eccentricity: no attitude puts the film force on the load line (a heavier load or a lower supply pressure has an equilibrium)",
+        )
+    } else {
+        CalcError::impossible(
+            if model.arc.is_some() { "/arc_deg" } else { "" },
+            "no attitude angle puts the film force on the load line at this eccentricity",
+        )
+    }
+}
+
+/// The pointer of [`no_attitude`]'s error for a ported supply.
+pub const SUPPLY_DOMINATES: &str = "/feed/supply_pressure_pa";
 
 /// Smallest film (h_min/C) a misaligned journal may reach before it counts as touching.
 const TOUCHING: f64 = 1e-3;
@@ -556,6 +578,10 @@ impl Searcher<'_> {
                     // A misaligned journal touching at an end carries any load: S → 0.
                     Err(CalcError::Impossible { pointer, .. }) if pointer == "/misalignment" => {
                         return Ok(-50.0)
+                    }
+                    // The supply outweighs the film: it carries no load here, S → ∞.
+                    Err(CalcError::Impossible { pointer, .. }) if pointer == SUPPLY_DOMINATES => {
+                        return Ok(50.0)
                     }
                     Err(e) => return Err(e),
                 }

@@ -89,11 +89,15 @@ pub struct JournalEffects {
     /// and Adams' film content θ_f ∈ [0, 1], complementarity p (1 − θ_f) = 0, upwind Couette
     /// fluxes): the film ruptures as with the Reynolds condition and reforms only where the
     /// streamers fill the gap again; it is fed flooded (θ_f = 1, at the edges' pressure) along a
-    /// line across the whole length — at h_max, or, with a single `hole` or `axial_groove` feed
-    /// `opposite_load` (the default position), opposite the load, which lies inside the Reynolds
-    /// model's cavitated zone. The friction then counts the Couette shear of the liquid only
+    /// line across the whole length at h_max when no feed is given or with a circumferential
+    /// groove (a partial arc: along its leading edge); a `hole`, `axial_groove` or `two_axial_grooves` feed becomes ports of
+    /// its size at its supply pressure in a periodic 360° film (flooded, θ_f = 1, and held at
+    /// P̄_s; elsewhere the film carries round what leaves the cavitated zone), where it sits:
+    /// `opposite_load` (the default position, inside the Reynolds model's cavitated zone),
+    /// `at_max_film`, or ±90° to the load line. The flow the ports supply is then the film's own
+    /// (`inlet_flow_m3_s`). The friction then counts the Couette shear of the liquid only
     /// (θ_f/h in the cavitated zone). Costs about the same as the Reynolds condition per film;
-    /// a feed opposite the load adds an attitude search. `off` keeps the full Sommerfeld film
+    /// a feed away from h_max adds an attitude search. `off` keeps the full Sommerfeld film
     /// with its negative pressures (a film that cannot rupture: submerged at high ambient
     /// pressure).
     #[serde(default)]
@@ -402,7 +406,8 @@ impl Validate for PlainInput {
 pub struct ProfilePoint {
     /// θ from h_max in the direction of rotation, degrees.
     pub angle_deg: f64,
-    /// Film pressure above the feed pressure, Pa.
+    /// Film pressure above the feed pressure, Pa (above ambient with `jfo` and a hole or
+    /// axial-groove feed).
     pub pressure_pa: f64,
     /// Film content θ_f: the liquid fraction of the gap (1 in the full film, below 1 in the
     /// cavitated zone), dimensionless; with `effects.cavitation: jfo` only.
@@ -548,7 +553,8 @@ pub struct PlainOutput {
     /// h_min = C (1 − ε), m.
     pub min_film_thickness_m: f64,
     /// Peak film pressure, Pa gauge: the film's P̄_max μ N_s (R/C)², plus the supply pressure
-    /// when a feed is given (as Khonsari & Booser Ex 8.3 add it).
+    /// when a feed is given (as Khonsari & Booser Ex 8.3 add it) — except with `jfo` and a hole
+    /// or axial-groove feed, whose film holds the supply pressure at the ports itself.
     pub max_pressure_pa: f64,
     /// P̄_max = p_max (C/R)²/(μ N_s), dimensionless (Table 8.6 convention).
     pub max_pressure_dimensionless: f64,
@@ -577,8 +583,9 @@ pub struct PlainOutput {
     pub side_leakage_m3_s: f64,
     /// Q_L/((π/2) N_s D L C), dimensionless.
     pub side_leakage_dimensionless: f64,
-    /// Flow entering at the feed line (θ = 0, h_max; with `jfo` and a feed opposite the load,
-    /// there), m³/s; absent for closed forms.
+    /// Flow entering at the feed line (θ = 0, h_max), m³/s; with `jfo` and a hole or axial-groove
+    /// feed, the flow the ports supply, from the film (it equals the side leakage: the film
+    /// conserves mass); absent for closed forms.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inlet_flow_m3_s: Option<f64>,
     /// Adiabatic oil temperature rise ΔT = E_p/(ρ c_p Q_L) (Khonsari & Booser Eq. 8.44), K;
