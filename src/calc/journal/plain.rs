@@ -584,8 +584,8 @@ pub struct PlainOutput {
     /// Q_L/((π/2) N_s D L C), dimensionless.
     pub side_leakage_dimensionless: f64,
     /// Flow entering at the feed line (θ = 0, h_max), m³/s; with `jfo` and a hole or axial-groove
-    /// feed, the flow the ports supply, from the film (it equals the side leakage: the film
-    /// conserves mass); absent for closed forms.
+    /// feed, the flow the ports supply, from the film (the side leakage: the film conserves
+    /// mass); absent for closed forms.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inlet_flow_m3_s: Option<f64>,
     /// Adiabatic oil temperature rise ΔT = E_p/(ρ c_p Q_L) (Khonsari & Booser Eq. 8.44), K;
