@@ -40,7 +40,9 @@ impl Mesh {
     /// Whether [`Mesh::coarse`] halves the spacing exactly in both directions — the ratio 2 that
     /// Richardson's f + (f − c)/3 assumes for a second-order scheme.
     pub fn halves_exactly(self) -> bool {
-        self.circumferential % 2 == 0 && self.axial_half % 2 == 0 && self.axial_half >= 4
+        self.circumferential.is_multiple_of(2)
+            && self.axial_half.is_multiple_of(2)
+            && self.axial_half >= 4
     }
 
     /// The refinement ratio r from [`Mesh::coarse`] to this mesh for the error estimate
