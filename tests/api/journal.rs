@@ -595,3 +595,45 @@ fn turbulent_whirl_threshold_is_the_film_at_that_speed() {
     let (m, mc) = (num(s, "mass_parameter"), num(s, "critical_mass_parameter"));
     assert!((m / mc - 1.0).abs() < 2e-3, "m̄ {m} vs m̄_c {mc}");
 }
+
+/// JFO cavitation with the other film options: a partial arc (fed flooded at its leading edge,
+/// no reformation inside it: the Reynolds condition's load within 1 %), a misaligned journal
+/// from a load (reproduced, with its moment), and a turbulent film — all finite.
+#[test]
+fn jfo_with_arcs_misalignment_and_turbulence() {
+    let jfo = json!({"cavitation": "jfo", "thermal": "off"});
+    let arc =
+        |effects: Value| at_eccentricity(1.0, 0.8, json!({"arc_deg": 120.0, "effects": effects}));
+    let (r, j) = (
+        run(&arc(json!({"thermal": "off"}))).unwrap(),
+        run(&arc(jfo.clone())).unwrap(),
+    );
+    let s = |v: &Value| num(&v["result"], "sommerfeld_number");
+    assert!((s(&j) / s(&r) - 1.0).abs() < 0.01, "{} vs {}", s(&j), s(&r));
+
+    let mut tilted = at_eccentricity(1.0, 0.5, json!({"effects": jfo.clone()}));
+    tilted.as_object_mut().unwrap().remove("eccentricity_ratio");
+    tilted["load_n"] = json!(8000.0);
+    tilted["misalignment"] = json!({"slope_rad": 3e-4});
+    tilted["dynamics"] = json!(true);
+    let t = run(&tilted).unwrap();
+    let res = &t["result"];
+    let scale = 0.03 * 50.0 * 0.1 * 0.1 * 500.0f64.powi(2);
+    assert!((scale / num(res, "sommerfeld_number") / 8000.0 - 1.0).abs() < 1e-6);
+    assert!(num(&res["misalignment_moment"], "restoring_n_m") > 0.0);
+    assert!(num(&res["dynamic_coefficients"], "kxx").is_finite());
+
+    let mut fast = at_eccentricity(1.0, 0.6, json!({}));
+    fast["speed_rpm"] = json!(30000.0);
+    fast["lubricant"] = json!({"viscosity_pa_s": 0.003, "density_15c_kg_m3": 870.0});
+    fast["effects"] = json!({"cavitation": "jfo", "turbulence": "on", "thermal": "off"});
+    let f = run(&fast).unwrap();
+    assert_eq!(f["effects"]["turbulence"]["applied"], true);
+    for key in [
+        "sommerfeld_number",
+        "friction_coefficient",
+        "cavitated_area_fraction",
+    ] {
+        assert!(num(&f["result"], key).is_finite(), "{key}");
+    }
+}
