@@ -386,7 +386,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         mode: case.effects.cavitation.mode(),
         reason: match (case.cavitation(), case.supply(op.temperature_c)) {
             (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
-            (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into(),
+            (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish (auto keeps it; `jfo` conserves mass through rupture and reformation)".into(),
             (true, Some(supply)) => format!(
                 "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed {}",
                 match (supply.position, supply.port) {
