@@ -13,6 +13,10 @@
 //! conserved cell by cell. With `cavitation` the system is the linear complementarity problem
 //! p ≥ 0, L p − b ≥ 0, p (L p − b) = 0 — the Reynolds (Swift–Stieber) condition — solved by
 //! projected SOR (Cryer 1971): each Gauss–Seidel update is clipped at zero.
+//!
+//! [`solve_mass_conserving`] solves the mass-conserving (JFO) alternative on the same stencil,
+//! with the film content θ_f as a second field: the wedge term becomes Λ ∂x(θ_f h), upwinded,
+//! and a film may be periodic in x with nodes held at a feed's pressure.
 
 /// The grid: node positions along x (both ends are boundary nodes), and a uniform spacing across.
 #[derive(Debug, Clone, PartialEq)]

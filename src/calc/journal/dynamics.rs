@@ -6,6 +6,9 @@
 //! equilibrium; the film keeps its equilibrium grid and its feed line at the equilibrium h_max
 //! (the groove is fixed in the bearing), and cavitation is solved afresh in every perturbed
 //! film (Reynolds condition), so the rupture boundary moves consistently. Central differences.
+//! A mass-conserving film re-solves pressure and film content in each perturbed film from the
+//! equilibrium field (ports stay where the bearing holds them), with the squeeze term weighted
+//! by the content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t: the content's own rate is neglected).
 //!
 //! Frame: x along the static load, y perpendicular to it, 90° ahead in the direction of rotation.
 //! Dimensionless k_ij = K_ij C/W, c_ij = C_ij C ω/W, order [xx, xy, yx, yy]; a force

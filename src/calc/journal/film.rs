@@ -12,6 +12,12 @@
 //! ends; cavitation by the Reynolds condition (P̄ ≥ 0). The mid-plane is a symmetry plane, so
 //! half the length is solved. Nodes along θ cluster towards h_min, where the pressure spikes at
 //! high eccentricity: θ(s) = s + κ sin s on a uniform s, κ = 0.75 ε.
+//!
+//! Mass-conserving (JFO) cavitation replaces the Reynolds condition on request
+//! ([`FilmModel::mass_conserving`]): the film content θ_f is solved with the pressure
+//! ([`reynolds::solve_mass_conserving`]), the right side becomes 12π ∂θ(θ_f h̄), and the film is
+//! fed either along the same line (flooded, P̄ = 0), or, for a hole or axial-groove feed, through
+//! ports held at the supply pressure in a periodic 360° film (P̄ is then above ambient).
 
 use std::f64::consts::PI;
 
@@ -1012,5 +1018,30 @@ mod tests {
             }
             last = Some(f);
         }
+    }
+
+    /// A full circle from any start: both ends exact, increasing, and the spacing smallest at
+    /// h_min (θ = π) as on the circle from h_max.
+    #[test]
+    fn clustered_nodes_from_any_start() {
+        for start in [-1.3, -0.2, 0.7] {
+            let x = circumferential_nodes_from(start, 96, 0.8);
+            assert_eq!((x[0], x[96]), (start, start + 2.0 * PI));
+            assert!(x.windows(2).all(|w| w[1] > w[0]));
+            let (k, _) = x
+                .windows(2)
+                .enumerate()
+                .min_by(|a, b| (a.1[1] - a.1[0]).total_cmp(&(b.1[1] - b.1[0])))
+                .unwrap();
+            let middle = 0.5 * (x[k] + x[k + 1]);
+            assert!(
+                (middle.rem_euclid(2.0 * PI) - PI).abs() < 0.1,
+                "{start}: {middle}"
+            );
+        }
+        assert_eq!(
+            circumferential_nodes_from(0.0, 48, 0.5),
+            circumferential_nodes(48, 0.5)
+        );
     }
 }
