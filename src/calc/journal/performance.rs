@@ -194,7 +194,7 @@ pub fn positioned_film(
 }
 
 /// Where a mass-conserving film fed away from h_max starts, as θ + φ (the load line lies at
-/// θ = π − φ): −0 opposite the load, π/2 for the groove at +90° of two; None when fed at h_max.
+/// θ = π − φ): 0 opposite the load, π/2 for the groove at +90° of two; None when fed at h_max.
 fn fed_at(model: &FilmModel) -> Option<f64> {
     match model.mass_conserving {
         Some(supply) if model.has_content() => match supply.position {
