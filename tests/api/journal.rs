@@ -274,6 +274,10 @@ fn invalid_requests_name_their_field() {
         (json!({"fidelity": {"grid": [7, 3]}}), "/fidelity/grid"),
         (json!({"effects": {"inertia": "on"}}), "/effects/inertia"),
         (
+            json!({"fidelity": "closed_form", "effects": {"cavitation": "jfo"}}),
+            "/effects/cavitation",
+        ),
+        (
             json!({"geometry": {"diameter_m": 0.1, "lenght_m": 0.1, "radial_clearance_m": 1e-4}}),
             "/geometry/lenght_m",
         ),
@@ -434,5 +438,202 @@ fn partial_arcs_find_their_equilibrium() {
             "arc {arc}: ε {eps} above {last_eps}"
         );
         last_eps = eps;
+    }
+}
+
+/// `effects.cavitation: jfo` through the whole room: equilibrium from the load (reproduced to
+/// 1e-6), the effect reported, the cavitated share and the film content given, stiffness,
+/// damping and the whirl threshold from the mass-conserving film. Fed at h_max it carries the
+/// Reynolds film's load; fed by a hole opposite the load (inside the Reynolds model's
+/// cavitated zone) it must reform past h_max and runs at a higher eccentricity.
+#[test]
+fn jfo_cavitation_through_the_room() {
+    let mut body = at_eccentricity(1.0, 0.5, json!({"dynamics": true, "include_field": true}));
+    body.as_object_mut().unwrap().remove("eccentricity_ratio");
+    body["load_n"] = json!(2000.0);
+    let reynolds = run(&body).unwrap();
+    body["effects"] = json!({"cavitation": "jfo"});
+    let flooded = run(&body).unwrap();
+    body["feed"] = json!({"kind": "hole", "supply_pressure_pa": 1e5, "hole_diameter_m": 0.01});
+    let fed_on_top = run(&body).unwrap();
+    let scale = 0.03 * 50.0 * 0.1 * 0.1 * 500.0f64.powi(2);
+    let eps = |r: &Value| num(&r["result"], "eccentricity_ratio");
+    for r in [&flooded, &fed_on_top] {
+        let res = &r["result"];
+        assert!((scale / num(res, "sommerfeld_number") / 2000.0 - 1.0).abs() < 1e-6);
+        assert_eq!(r["effects"]["cavitation"]["applied"], true);
+        assert!(r["effects"]["cavitation"]["reason"]
+            .as_str()
+            .unwrap()
+            .contains("JFO"));
+        assert_eq!(r["solver"]["method"], "finite_volume_jfo_gauss_seidel");
+        let cav = num(res, "cavitated_area_fraction");
+        assert!(cav > 0.2 && cav < 0.8, "{cav}");
+        let profile = res["pressure_profile"].as_array().unwrap();
+        assert!(profile.iter().all(|p| {
+            let c = num(p, "film_content");
+            (0.0..=1.0).contains(&c) && (c == 1.0 || num(p, "pressure_pa") == 0.0)
+        }));
+        let k = &res["dynamic_coefficients"];
+        for key in ["kxx", "kxy", "kyx", "kyy", "cxx", "cxy", "cyx", "cyy"] {
+            assert!(num(k, key).is_finite(), "{key}");
+        }
+        assert!(num(k, "kxx") > 0.0 && num(k, "cxx") > 0.0);
+        assert!(res["stability"]["statement"].is_string());
+    }
+    assert!(reynolds["result"].get("cavitated_area_fraction").is_none());
+    assert!((eps(&flooded) - eps(&reynolds)).abs() < 1e-3);
+    assert!(
+        eps(&fed_on_top) > 1.05 * eps(&reynolds),
+        "{} vs {}",
+        eps(&fed_on_top),
+        eps(&reynolds)
+    );
+    assert!(fed_on_top["effects"]["cavitation"]["reason"]
+        .as_str()
+        .unwrap()
+        .contains("opposite the load"));
+    // The hole is a port at supply pressure in a periodic film: what it supplies leaks from
+    // the sides, and the film's peak already holds the supply pressure.
+    let top = &fed_on_top["result"];
+    let (q_in, q_side) = (num(top, "inlet_flow_m3_s"), num(top, "side_leakage_m3_s"));
+    assert!((q_in / q_side - 1.0).abs() < 1e-6, "{q_in} vs {q_side}");
+    let scale_p = 0.03 * 50.0 * 500.0f64.powi(2);
+    assert!(
+        (num(top, "max_pressure_pa") / (num(top, "max_pressure_dimensionless") * scale_p) - 1.0)
+            .abs()
+            < 1e-9
+    );
+    // At an eccentricity where the supply's push outweighs the film: a 422 naming it.
+    body.as_object_mut().unwrap().remove("load_n");
+    body["eccentricity_ratio"] = json!(0.01);
+    body["feed"]["supply_pressure_pa"] = json!(1e7);
+    match run(&body) {
+        Err(Failure::Calc(stribeck::calc::CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/feed/supply_pressure_pa")
+        }
+        other => panic!("expected a 422, got {other:?}"),
+    }
+}
+
+/// The misaligned film's moment on the journal: absent when aligned, vanishing with the tilt,
+/// growing with ε′ (about linearly while small), restoring (it opposes the tilt) whatever the
+/// tilt's direction, and lying about the axis the tilt turns about (z × u: y for a tilt in the
+/// load plane, −x for one 90° ahead).
+#[test]
+fn misalignment_moment_restores_and_grows_with_the_tilt() {
+    let bearing = |slope: f64, direction: f64| {
+        json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000.0,
+            "lubricant": {"viscosity_pa_s": 0.02, "density_15c_kg_m3": 870.0},
+            "eccentricity_ratio": 0.6,
+            "misalignment": {"slope_rad": slope, "direction_deg": direction},
+            "fidelity": "fast",
+            "dynamics": false
+        })
+    };
+    let aligned = run(&bearing(0.0, 0.0)).unwrap();
+    assert!(aligned["result"].get("misalignment_moment").is_none());
+    let moment = |slope: f64, direction: f64| {
+        let r = run(&bearing(slope, direction)).unwrap();
+        r["result"]["misalignment_moment"].clone()
+    };
+    let tiny = moment(1e-9, 0.0);
+    let small = moment(1e-4, 0.0);
+    let double = moment(2e-4, 0.0);
+    let large = moment(4e-4, 0.0);
+    let m = |v: &Value, k: &str| num(v, k);
+    assert!(m(&tiny, "magnitude_n_m") < 1e-4 * m(&small, "magnitude_n_m"));
+    for v in [&small, &double, &large] {
+        assert!(m(v, "restoring_n_m") > 0.0, "{v}");
+        // A tilt in the load plane turns about y: the moment lies (mostly) about −y.
+        assert!(m(v, "my_n_m") < 0.0 && m(v, "mx_n_m").abs() < m(v, "my_n_m").abs());
+    }
+    let ratio = m(&double, "magnitude_n_m") / m(&small, "magnitude_n_m");
+    assert!((ratio - 2.0).abs() < 0.1, "M(2ε′)/M(ε′) = {ratio}");
+    assert!(m(&large, "magnitude_n_m") > m(&double, "magnitude_n_m"));
+    // Tilted 90° ahead of the load line: the tilt turns about −x, the moment about +x.
+    let side = moment(2e-4, 90.0);
+    assert!(
+        m(&side, "restoring_n_m") > 0.0 && m(&side, "mx_n_m") > 0.0,
+        "{side}"
+    );
+    let mut centres = bearing(2e-4, 30.0);
+    centres["misalignment"]["measured_from"] = json!("line_of_centres");
+    let r = run(&centres).unwrap();
+    assert!(m(&r["result"]["misalignment_moment"], "restoring_n_m") > 0.0);
+    // Dimensional moment = dimensionless × μ N_s (R/C)² R L².
+    let scale = 0.02 * 50.0 * 500.0f64.powi(2) * 0.05 * 0.01;
+    let dim = double["dimensionless"].as_array().unwrap();
+    assert!((dim[1].as_f64().unwrap() * scale / m(&double, "my_n_m") - 1.0).abs() < 1e-9);
+}
+
+/// The whirl threshold of a turbulent film is consistent with the film at that speed: along the
+/// locus the film Reynolds number follows the speed, so a request at the reported threshold
+/// speed (same load, viscosity, rotor; the same `fast` mesh the search walks) sits on the
+/// stability boundary, m̄ = m̄_c.
+#[test]
+fn turbulent_whirl_threshold_is_the_film_at_that_speed() {
+    let body = |rpm: f64| {
+        json!({
+            "geometry": {"diameter_m": 0.2, "length_m": 0.1, "radial_clearance_m": 0.0002},
+            "speed_rpm": rpm,
+            "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
+            "load_n": 5000.0,
+            "rotor_mass_kg": 500.0,
+            "effects": {"thermal": "off", "turbulence": "on"},
+            "fidelity": "fast"
+        })
+    };
+    let op = run(&body(6000.0)).unwrap();
+    assert!(num(&op["result"], "reynolds_number") > 1000.0);
+    let threshold = num(&op["result"]["stability"], "threshold_speed_rpm");
+    assert!(threshold < 6000.0, "{}", op["result"]["stability"]);
+    let at = run(&body(threshold)).unwrap();
+    let s = &at["result"]["stability"];
+    let (m, mc) = (num(s, "mass_parameter"), num(s, "critical_mass_parameter"));
+    assert!((m / mc - 1.0).abs() < 2e-3, "m̄ {m} vs m̄_c {mc}");
+}
+
+/// JFO cavitation with the other film options: a partial arc (fed flooded at its leading edge,
+/// no reformation inside it: the Reynolds condition's load within 1 %), a misaligned journal
+/// from a load (reproduced, with its moment), and a turbulent film — all finite.
+#[test]
+fn jfo_with_arcs_misalignment_and_turbulence() {
+    let jfo = json!({"cavitation": "jfo", "thermal": "off"});
+    let arc =
+        |effects: Value| at_eccentricity(1.0, 0.8, json!({"arc_deg": 120.0, "effects": effects}));
+    let (r, j) = (
+        run(&arc(json!({"thermal": "off"}))).unwrap(),
+        run(&arc(jfo.clone())).unwrap(),
+    );
+    let s = |v: &Value| num(&v["result"], "sommerfeld_number");
+    assert!((s(&j) / s(&r) - 1.0).abs() < 0.01, "{} vs {}", s(&j), s(&r));
+
+    let mut tilted = at_eccentricity(1.0, 0.5, json!({"effects": jfo.clone()}));
+    tilted.as_object_mut().unwrap().remove("eccentricity_ratio");
+    tilted["load_n"] = json!(8000.0);
+    tilted["misalignment"] = json!({"slope_rad": 3e-4});
+    tilted["dynamics"] = json!(true);
+    let t = run(&tilted).unwrap();
+    let res = &t["result"];
+    let scale = 0.03 * 50.0 * 0.1 * 0.1 * 500.0f64.powi(2);
+    assert!((scale / num(res, "sommerfeld_number") / 8000.0 - 1.0).abs() < 1e-6);
+    assert!(num(&res["misalignment_moment"], "restoring_n_m") > 0.0);
+    assert!(num(&res["dynamic_coefficients"], "kxx").is_finite());
+
+    let mut fast = at_eccentricity(1.0, 0.6, json!({}));
+    fast["speed_rpm"] = json!(30000.0);
+    fast["lubricant"] = json!({"viscosity_pa_s": 0.003, "density_15c_kg_m3": 870.0});
+    fast["effects"] = json!({"cavitation": "jfo", "turbulence": "on", "thermal": "off"});
+    let f = run(&fast).unwrap();
+    assert_eq!(f["effects"]["turbulence"]["applied"], true);
+    for key in [
+        "sommerfeld_number",
+        "friction_coefficient",
+        "cavitated_area_fraction",
+    ] {
+        assert!(num(&f["result"], key).is_finite(), "{key}");
     }
 }

@@ -6,6 +6,9 @@
 //! equilibrium; the film keeps its equilibrium grid and its feed line at the equilibrium h_max
 //! (the groove is fixed in the bearing), and cavitation is solved afresh in every perturbed
 //! film (Reynolds condition), so the rupture boundary moves consistently. Central differences.
+//! A mass-conserving film re-solves pressure and film content in each perturbed film from the
+//! equilibrium field (ports stay where the bearing holds them), with the squeeze term weighted
+//! by the content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t: the content's own rate is neglected).
 //!
 //! Frame: x along the static load, y perpendicular to it, 90° ahead in the direction of rotation.
 //! Dimensionless k_ij = K_ij C/W, c_ij = C_ij C ω/W, order [xx, xy, yx, yy]; a force
@@ -130,6 +133,15 @@ pub struct Whirl {
 /// k_eq = (k_xx c_yy + k_yy c_xx − k_xy c_yx − k_yx c_xy)/(c_xx + c_yy),
 /// γ² = [(k_xx − k_eq)(k_yy − k_eq) − k_xy k_yx]/(c_xx c_yy − c_xy c_yx), m̄_c = k_eq/γ².
 pub fn whirl(c: &Coefficients) -> Whirl {
+    whirl_on_shaft(c, 0.0)
+}
+
+/// As [`whirl`], for a rotor on a shaft of flexibility γ = W/(k_s C) in series with the film (a
+/// Jeffcott rotor): at the threshold the film acts as the real stiffness k_eq at the whirl
+/// frequency, the shaft in series gives k_eq/(1 + γ k_eq), so m̄_c = k_eq/(γ_w² (1 + γ k_eq)).
+/// This is Hori's Routh–Hurwitz threshold as Stachowiak & Batchelor §5.6.4 print it,
+/// ω*_c² = A1 A3 A5²/[(A1² + A2 A5² − A1 A4 A5)(A5 + γ A1)] (A1 = k_eq A5, A5 = c_xx + c_yy).
+pub fn whirl_on_shaft(c: &Coefficients, shaft_flexibility: f64) -> Whirl {
     let [kxx, kxy, kyx, kyy] = c.stiffness;
     let [cxx, cxy, cyx, cyy] = c.damping;
     let k_eq = (kxx * cyy + kyy * cxx - kxy * cyx - kyx * cxy) / (cxx + cyy);
@@ -142,7 +154,7 @@ pub fn whirl(c: &Coefficients) -> Whirl {
         critical_mass_parameter: if k_eq <= 0.0 {
             Some(0.0)
         } else {
-            unstable_possible.then(|| k_eq / gamma2)
+            unstable_possible.then(|| k_eq / gamma2 / (1.0 + shaft_flexibility * k_eq))
         },
     }
 }
@@ -217,5 +229,95 @@ mod tests {
         let heavy = perturbation(0.9, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");
+    }
+
+    /// With mass-conserving cavitation the perturbed films re-solve pressure and content: fed at
+    /// h_max they give the Reynolds film's coefficients (rupture obeys the same condition, and
+    /// the squeeze acts only where the film is full), fed opposite the load they stay finite
+    /// with positive direct terms, and the equilibrium they were taken about is the JFO one.
+    #[test]
+    fn mass_conserving_films_have_consistent_coefficients() {
+        use crate::calc::journal::film::{FeedLine, Supply};
+        let mesh = Mesh {
+            circumferential: 96,
+            axial_half: 12,
+        };
+        for eps in [0.3, 0.7] {
+            let reynolds =
+                perturbation(eps, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+            let jfo = |feed| FilmModel {
+                mass_conserving: Some(Supply::line(feed)),
+                ..FilmModel::REYNOLDS
+            };
+            let flooded =
+                perturbation(eps, 1.0, jfo(FeedLine::MaxFilm), mesh, STOP, &mut || true).unwrap();
+            let scale = |m: &[f64; 4]| m.iter().map(|v| v.abs()).fold(0.0, f64::max);
+            for i in 0..4 {
+                let (k, c) = (reynolds.stiffness, reynolds.damping);
+                assert!(
+                    (flooded.stiffness[i] - k[i]).abs() < 0.01 * scale(&k),
+                    "ε {eps} k[{i}]: {} vs {}",
+                    flooded.stiffness[i],
+                    k[i]
+                );
+                assert!(
+                    (flooded.damping[i] - c[i]).abs() < 0.01 * scale(&c),
+                    "ε {eps} c[{i}]: {} vs {}",
+                    flooded.damping[i],
+                    c[i]
+                );
+            }
+            let top = perturbation(
+                eps,
+                1.0,
+                jfo(FeedLine::OppositeLoad),
+                mesh,
+                STOP,
+                &mut || true,
+            )
+            .unwrap();
+            assert!(top
+                .stiffness
+                .iter()
+                .chain(&top.damping)
+                .all(|v| v.is_finite()));
+            assert!(top.stiffness[0] > 0.0 && top.damping[0] > 0.0 && top.damping[3] > 0.0);
+            assert!(top.sommerfeld_number > reynolds.sommerfeld_number);
+            let w = whirl(&top);
+            assert!(w.equivalent_stiffness.is_finite());
+        }
+    }
+
+    /// The shaft-in-series threshold is the text's Routh–Hurwitz expression (Stachowiak &
+    /// Batchelor Eq. in §5.6.4), and with a rigid shaft it is Lund's.
+    #[test]
+    fn flexible_shaft_threshold_is_horis() {
+        let c = Coefficients {
+            stiffness: [5.0482, 3.6960, -0.0475, 1.1953],
+            damping: [7.8693, 1.4988, 1.4982, 0.9243],
+            sommerfeld_number: 0.1,
+        };
+        let ([kxx, kxy, kyx, kyy], [cxx, cxy, cyx, cyy]) = (c.stiffness, c.damping);
+        let a1 = kxx * cyy - kxy * cyx - kyx * cxy + kyy * cxx;
+        let a2 = kxx * kyy - kxy * kyx;
+        let a3 = cxx * cyy - cxy * cyx;
+        let a4 = kxx + kyy;
+        let a5 = cxx + cyy;
+        for gamma in [0.0, 0.1, 1.0] {
+            let text =
+                a1 * a3 * a5 * a5 / ((a1 * a1 + a2 * a5 * a5 - a1 * a4 * a5) * (a5 + gamma * a1));
+            let ours = whirl_on_shaft(&c, gamma).critical_mass_parameter.unwrap();
+            assert!(
+                (ours / text - 1.0).abs() < 1e-12,
+                "γ {gamma}: {ours} vs {text}"
+            );
+        }
+        // The printed STABILITY example: ω*_c = 2.059 from its (11 × 11) coefficients, γ = 0.1.
+        let w = whirl_on_shaft(&c, 0.1)
+            .critical_mass_parameter
+            .unwrap()
+            .sqrt();
+        assert!((w - 2.059).abs() < 1e-3, "{w}");
+        assert_eq!(whirl(&c), whirl_on_shaft(&c, 0.0));
     }
 }

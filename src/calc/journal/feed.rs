@@ -325,6 +325,12 @@ pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
             let f3 = 10f64.powf(c3g);
             let q_l = leakage * f2 / f3;
             let f_g = groove_factor(length_ratio, width_over_diameter);
+            // Eq. 8.57 as Khonsari & Booser print it (the text; Table 8.8's "(h_g/D)³" is a
+            // misprint for (h_g/C)³, spec G9): (1 + ε cos φ)³ + (1 − ε sin φ)³. Reviewed
+            // against the text, not changed: geometrically the grooves at ±90° to the load line
+            // see h/C = 1 ± ε sin φ (the first term, 1 + ε cos φ, is the film opposite the
+            // load). The two differ much at high ε (ε = 0.9, φ = 30°: 5.80 against 3.21); the
+            // text is the source here and Martin's paper (1998) is not at hand to settle it.
             let h3 = (1.0 + eps * attitude.cos()).powi(3) + (1.0 - eps * attitude.sin()).powi(3);
             let q_p = f_g * h3 * supply_pressure_pa * c3 / mu_inlet;
             let q_m = combine(q_l, q_p);
@@ -404,5 +410,31 @@ mod tests {
         let (a, b) = (flows(feed(1e5), at), flows(feed(3e5), at));
         assert!(b.pressure_fed > a.pressure_fed && b.total > a.total);
         assert!(a.total > a.pressure_fed.min(a.leakage));
+    }
+
+    /// Two axial grooves at ±90° (Eq. 8.57 as printed, spec G9): Q_p carries
+    /// (h_g/C)³ = (1 + ε cos φ)³ + (1 − ε sin φ)³ — not the table's (h_g/D)³ misprint.
+    #[test]
+    fn two_grooves_use_eq_8_57() {
+        let (eps, phi) = (0.6f64, 0.8f64);
+        let feed = Feed::TwoAxialGrooves {
+            supply_pressure_pa: 2e5,
+            length_ratio: 0.8,
+            width_over_diameter: 0.1,
+        };
+        let at = FlowPoint {
+            leakage: 1e-5,
+            diameter_m: 0.1,
+            l_over_d: 1.0,
+            clearance_m: 1e-4,
+            mu_inlet: 0.02,
+            eps,
+            attitude: phi,
+        };
+        let f_g = (1.25 - 0.25 * 0.8) / (3.0 * (1.0f64 / 0.8 - 1.0).cbrt()) + 0.1 / (3.0 * 0.2);
+        let h3 = (1.0 + eps * phi.cos()).powi(3) + (1.0 - eps * phi.sin()).powi(3);
+        let want = f_g * h3 * 2e5 * 1e-12 / 0.02;
+        let got = flows(feed, at).pressure_fed;
+        assert!((got / want - 1.0).abs() < 1e-12, "{got} vs {want}");
     }
 }

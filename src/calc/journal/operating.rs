@@ -7,9 +7,12 @@ use std::f64::consts::PI;
 use super::closed_form;
 use super::dynamics::{self, Coefficients};
 use super::feed::{self, Feed, Flows};
-use super::film::FilmModel;
+use super::film::{FeedLine, FilmModel, Port, Supply};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
-use super::plain::{DynamicCoefficients, JournalEffects, PlainOutput, ProfilePoint, Stability};
+use super::plain::{
+    CavitationMode, DynamicCoefficients, FilmMoment, JournalEffects, PlainOutput, ProfilePoint,
+    Stability,
+};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{Budget, CalcError, Context};
@@ -63,6 +66,8 @@ pub struct Case {
     /// (ε′, direction of the tilt from the load line, rad); None when aligned.
     pub misalignment: Option<(f64, f64, bool)>,
     pub rotor_mass_kg: Option<f64>,
+    /// Shaft stiffness in series with the film, N/m (None: rigid).
+    pub shaft_stiffness_n_m: Option<f64>,
     pub method: Method,
     pub effects: JournalEffects,
     pub dynamics: bool,
@@ -92,7 +97,81 @@ impl Case {
         mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
     }
     fn cavitation(&self) -> bool {
-        self.effects.cavitation != Mode::Off
+        self.effects.cavitation != CavitationMode::Off
+    }
+
+    /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
+    /// circumferential groove, or on a partial arc) a flooded line at h_max at the edges'
+    /// pressure; a hole or axial groove(s) as ports at supply pressure in a periodic film,
+    /// where the feed sits (opposite the load, at h_max, or two grooves at ±90°).
+    fn supply(&self, t: f64) -> Option<Supply> {
+        if self.effects.cavitation != CavitationMode::Jfo {
+            return None;
+        }
+        let g = self.geometry;
+        let pressure_scale =
+            self.lubricant.viscosity_pa_s(t) * self.speed_rps() * g.r_over_c().powi(2);
+        let at = |position: feed::FeedPosition| match position {
+            feed::FeedPosition::OppositeLoad => FeedLine::OppositeLoad,
+            feed::FeedPosition::AtMaxFilm => FeedLine::MaxFilm,
+        };
+        let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
+            length_ratio,
+            width: 2.0 * width_m / g.diameter_m,
+            pressure_bar: p_s / pressure_scale,
+        };
+        Some(match self.feed {
+            _ if self.arc.is_some() => Supply::line(FeedLine::MaxFilm),
+            Some(Feed::Hole {
+                position,
+                supply_pressure_pa,
+                hole_over_length,
+            }) => Supply {
+                position: at(position),
+                port: Some(port(
+                    hole_over_length,
+                    hole_over_length * g.length_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::AxialGroove {
+                position,
+                supply_pressure_pa,
+                length_ratio,
+                width_over_diameter,
+            }) => Supply {
+                position: at(position),
+                port: Some(port(
+                    length_ratio,
+                    width_over_diameter * g.diameter_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::TwoAxialGrooves {
+                supply_pressure_pa,
+                length_ratio,
+                width_over_diameter,
+            }) => Supply {
+                position: FeedLine::TwoGrooves,
+                port: Some(port(
+                    length_ratio,
+                    width_over_diameter * g.diameter_m,
+                    supply_pressure_pa,
+                )),
+            },
+            Some(Feed::CircumferentialGroove { .. }) | None => Supply::line(FeedLine::MaxFilm),
+        })
+    }
+
+    fn mass_conserving(&self) -> bool {
+        self.cavitation() && self.effects.cavitation == CavitationMode::Jfo
+    }
+
+    /// Whether the film's pressures are above ambient with the supply in them (JFO ports)
+    /// rather than relative to the supply pressure.
+    fn ported(&self) -> bool {
+        self.supply(DEFAULT_INLET_C)
+            .is_some_and(|s| s.port.is_some())
     }
 
     /// Film Reynolds number ρ U C/μ at temperature t.
@@ -113,6 +192,7 @@ impl Case {
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
             misalignment: self.misalignment,
+            mass_conserving: self.supply(t),
         }
     }
 
@@ -303,14 +383,33 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     decide_inertia(ctx, case.effects, reynolds, g);
     let cavitation = Decision {
         applied: case.cavitation(),
-        mode: case.effects.cavitation,
-        reason: if case.cavitation() {
-            "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish".into()
-        } else {
-            "requested off: full Sommerfeld film, negative pressures kept".into()
+        mode: case.effects.cavitation.mode(),
+        reason: match (case.cavitation(), case.supply(op.temperature_c)) {
+            (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
+            (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish (auto keeps it; `jfo` conserves mass through rupture and reformation)".into(),
+            (true, Some(supply)) => format!(
+                "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed {}",
+                match (supply.position, supply.port) {
+                    (FeedLine::MaxFilm, None) => "flooded along a line at h_max".to_string(),
+                    (FeedLine::OppositeLoad, None) => "flooded along a line opposite the load".to_string(),
+                    (position, Some(port)) => format!(
+                        "through the feed at {} at P̄_s = {:.4} (supply pressure), a periodic 360° film elsewhere",
+                        match position {
+                            FeedLine::MaxFilm => "h_max",
+                            FeedLine::OppositeLoad => "the top, opposite the load",
+                            FeedLine::TwoGrooves => "±90° to the load line",
+                        },
+                        port.pressure_bar
+                    ),
+                    (FeedLine::TwoGrooves, None) => "through two grooves".to_string(),
+                }
+            ),
         },
         criterion: None,
     };
+    if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
+        ctx.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
+    }
     ctx.decide("cavitation", cavitation);
     ctx.decide(
         "misalignment",
@@ -333,7 +432,12 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
 
     let power = case.power_loss(&op);
     let flows = case.flows(&op);
-    let supply_pressure = case.feed.map_or(0.0, |f| f.supply_pressure_pa());
+    // The Reynolds film's pressures are relative to the supply's; a ported JFO film holds it.
+    let supply_pressure = if case.ported() {
+        0.0
+    } else {
+        case.feed.map_or(0.0, |f| f.supply_pressure_pa())
+    };
     // A circumferential groove makes two half-bearings: the solve is of one half.
     let halves = case.halves();
     let friction = point.friction_parameter / g.r_over_c();
@@ -359,6 +463,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         max_pressure_dimensionless: point.max_pressure_bar,
         max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
         cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
+        cavitated_area_fraction: point.cavitated_fraction,
         friction_coefficient: friction,
         friction_parameter: point.friction_parameter,
         friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
@@ -383,15 +488,41 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         pressure_profile: if case.include_field {
             point.midplane.as_ref().map(|m| {
                 m.iter()
-                    .map(|&(theta, p)| ProfilePoint {
+                    .enumerate()
+                    .map(|(i, &(theta, p))| ProfilePoint {
                         angle_deg: theta.to_degrees(),
                         pressure_pa: p * pressure_scale,
+                        film_content: point
+                            .midplane_content
+                            .as_ref()
+                            .and_then(|c| c.get(i).copied()),
                     })
                     .collect()
             })
         } else {
             None
         },
+        misalignment_moment: point.moment_bar.map(|m| {
+            let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
+            let (mx, my) = (m[0] * scale, m[1] * scale);
+            // The tilt direction u in the load frame; the tilt is a rotation about z × u.
+            let (_, dir, from_centres) = case.misalignment.unwrap_or_default();
+            let towards = if from_centres {
+                // From the line of centres (h_min lies φ ahead of the load line).
+                dir + point.attitude_angle
+            } else {
+                dir
+            };
+            let axis = [-towards.sin(), towards.cos()];
+            FilmMoment {
+                frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+                mx_n_m: mx,
+                my_n_m: my,
+                magnitude_n_m: mx.hypot(my),
+                dimensionless: m,
+                restoring_n_m: -(mx * axis[0] + my * axis[1]),
+            }
+        }),
         dynamic_coefficients: None,
         stability: None,
     };
@@ -406,6 +537,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             damping_dimensionless: coefficients.damping,
             method: match case.method {
                 Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
+                Method::Numerical { .. } if case.mass_conserving() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
                 Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
             },
         });
@@ -644,7 +776,12 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
             ..SolverReport::closed_form("closed_form")
         },
         Method::Numerical { level, mesh, .. } => SolverReport {
-            method: "finite_volume_psor".into(),
+            method: if case.mass_conserving() {
+                "finite_volume_jfo_gauss_seidel"
+            } else {
+                "finite_volume_psor"
+            }
+            .into(),
             fidelity: level,
             grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
             iterations: point.sweeps,
@@ -711,7 +848,12 @@ fn dynamic_coefficients(
     let omega = 2.0 * PI * case.speed_rps();
     let s_op = coefficients.sommerfeld_number;
     let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
-    let whirl = dynamics::whirl(&coefficients);
+    // γ = W/(k_s C) with the whole bearing's load and shaft (per half-bearing with a
+    // circumferential groove both halve: the same γ).
+    let flexibility = case
+        .shaft_stiffness_n_m
+        .map_or(0.0, |k| case.halves() * w / (k * g.radial_clearance_m));
+    let whirl = dynamics::whirl_on_shaft(&coefficients, flexibility);
     let stable_now = whirl
         .critical_mass_parameter
         .is_none_or(|mc| mass_parameter(omega) < mc);
@@ -737,17 +879,56 @@ fn dynamic_coefficients(
         }
         _ => s_op,
     };
+    // Along the locus the speed changes, and with it a turbulent film's Reynolds number
+    // (Re ∝ speed at fixed viscosity): the film at ε has Re = Re_op S(ε; Re)/S_op, a fixed point
+    // found from single film solves (S changes little with Re, so it settles in a few steps)
+    // before the coefficients are taken there. The turbulence decision itself stays the
+    // operating point's (the Ng–Pan factors tend to laminar as Re falls).
+    let locus_physics = |e: f64| -> Result<FilmModel, CalcError> {
+        let (Some(re_op), Method::Numerical { mesh, stop, .. }) =
+            (physics.turbulence_reynolds, search)
+        else {
+            return Ok(physics);
+        };
+        let ld = case.geometry.l_over_d();
+        let mut re = re_op;
+        for _ in 0..30 {
+            let mut alive = || budget.alive();
+            let with = FilmModel {
+                turbulence_reynolds: Some(re),
+                ..physics
+            };
+            let (_, film, _) =
+                performance::positioned_film(e, ld, with, mesh, stop, None, &mut alive)?;
+            let next = re_op * film.sommerfeld_number() / s_op;
+            let settled = (next / re - 1.0).abs() < 1e-6;
+            re = next;
+            if settled {
+                break;
+            }
+        }
+        Ok(FilmModel {
+            turbulence_reynolds: Some(re),
+            ..physics
+        })
+    };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match coefficients_at(case, search, e, physics, &budget) {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, &budget)) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
-                match dynamics::whirl(&c).critical_mass_parameter {
+                match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
                     Some(mc) => (mc / mass_parameter(speed)).ln(),
                     None => 50.0,
                 }
             }
             Ok(None) => 50.0,
+            // Lighter than this a ported supply outweighs the film: the locus ends here.
+            Err(CalcError::Impossible { pointer, .. })
+                if pointer == performance::SUPPLY_DOMINATES =>
+            {
+                f64::NAN
+            }
             Err(err) => {
                 failure.borrow_mut().get_or_insert(err);
                 f64::NAN
@@ -757,6 +938,7 @@ fn dynamic_coefficients(
     let m0 = if stable_now { 1.0 } else { -1.0 };
     let mut bracket = None;
     let mut previous = eps;
+    let mut lightest = eps;
     for k in 1..=10 {
         let next = if stable_now {
             (eps * 0.6f64.powi(k)).max(1e-3)
@@ -767,6 +949,7 @@ fn dynamic_coefficients(
         if m.is_nan() {
             break;
         }
+        lightest = lightest.min(next);
         if m.signum() != m0 {
             bracket = Some((previous, next));
             break;
@@ -798,7 +981,7 @@ fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, physics, &budget)?
+            coefficients_at(case, search, e, locus_physics(e)?, &budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),
@@ -807,7 +990,7 @@ fn dynamic_coefficients(
     let statement = match (stable_now, threshold_rpm) {
         (true, Some(t)) => format!("stable at {:.0} rev/min; oil whirl sets in at about {t:.0} rev/min (rigid rotor of {mass:.3} kg, load and viscosity held)", case.speed_rpm),
         (true, None) if whirl.critical_mass_parameter.is_none() => format!("stable at every speed: at ε = {eps:.3} the film cannot sustain whirl for any rotor mass"),
-        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = 0.001)", case.speed_rpm),
+        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = {lightest:.4})", case.speed_rpm),
         (false, Some(t)) => format!("UNSTABLE: oil whirl above about {t:.0} rev/min, below the operating speed {:.0} rev/min", case.speed_rpm),
         (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
     };
@@ -819,6 +1002,12 @@ fn dynamic_coefficients(
         threshold_speed_rpm: threshold_rpm,
         whirl_frequency_ratio: whirl.whirl_frequency_ratio,
         critical_mass_parameter: whirl.critical_mass_parameter,
+        critical_speed_rad_s: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * g.radial_clearance_m)).sqrt()),
+        critical_speed_dimensionless: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * GRAVITY)).sqrt()),
         mass_parameter: mass_parameter(omega),
         rotor_mass_kg: mass * case.halves(),
         statement,

@@ -4,7 +4,7 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
-use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
+use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::CalcError;
 use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
@@ -110,16 +110,19 @@ pub fn positioned_film(
         physics: model,
         ..Film::steady(eps, l_over_d)
     };
-    if model.arc.is_none() && model.misalignment.is_none() {
+    if !placed(&model) {
         let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
         return Ok((base, f, p));
     }
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
-    // misalignment's direction is measured from it.
+    // misalignment's direction is measured from it. A full film fed opposite the load starts
+    // at θ = −φ.
+    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
     let place = |phi: f64| Film {
-        span: model
-            .arc
-            .map(|arc| (PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+        span: match model.arc {
+            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
+        },
         tilt: model.misalignment.map(|(e, dir, from_centres)| {
             (
                 e,
@@ -176,10 +179,7 @@ pub fn positioned_film(
         }
         Err(_) => {
             // Not "/misalignment": that pointer means the journal touches.
-            return Err(CalcError::impossible(
-                if model.arc.is_some() { "/arc_deg" } else { "" },
-                "no attitude angle puts the film force on the load line at this eccentricity",
-            ));
+            return Err(no_attitude(&model));
         }
     };
     let film = place(phi);
@@ -188,13 +188,50 @@ pub fn positioned_film(
     let (wa, wb) = (-f.load_radial, f.load_tangential);
     let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
     if wa * da + wb * db <= 0.0 {
-        return Err(CalcError::impossible(
-            if model.arc.is_some() { "/arc_deg" } else { "" },
-            "no attitude angle puts the film force on the load line at this eccentricity",
-        ));
+        return Err(no_attitude(&model));
     }
     Ok((film, f, p))
 }
+
+/// Where a mass-conserving film fed away from h_max starts, as θ + φ (the load line lies at
+/// θ = π − φ): 0 opposite the load, π/2 for the groove at +90° of two; None when fed at h_max.
+fn fed_at(model: &FilmModel) -> Option<f64> {
+    match model.mass_conserving {
+        Some(supply) if model.has_content() => match supply.position {
+            FeedLine::MaxFilm => None,
+            FeedLine::OppositeLoad => Some(0.0),
+            FeedLine::TwoGrooves => Some(0.5 * PI),
+        },
+        _ => None,
+    }
+}
+
+/// Whether the film must be placed against the load line (an attitude search): a partial arc,
+/// a misaligned journal, or a feed fixed in the bearing away from h_max.
+pub fn placed(model: &FilmModel) -> bool {
+    model.arc.is_some() || model.misalignment.is_some() || fed_at(model).is_some()
+}
+
+/// The film force never lies on the load line at this ε. With a ported supply this happens at
+/// light load, where the supply pressure's own push on the journal outweighs the film's
+/// (Stachowiak & Batchelor §5.6.3 on GROOVE: no attitude converges when the groove pressure
+/// exceeds the hydrodynamic pressure); an equilibrium search then looks at larger ε.
+fn no_attitude(model: &FilmModel) -> CalcError {
+    if model.port().is_some() {
+        CalcError::impossible(
+            SUPPLY_DOMINATES,
+            "the supply pressure's force on the journal outweighs the film's at this eccentricity: no attitude puts the film force on the load line (a heavier load or a lower supply pressure has an equilibrium)",
+        )
+    } else {
+        CalcError::impossible(
+            if model.arc.is_some() { "/arc_deg" } else { "" },
+            "no attitude angle puts the film force on the load line at this eccentricity",
+        )
+    }
+}
+
+/// The pointer of [`no_attitude`]'s error for a ported supply.
+pub const SUPPLY_DOMINATES: &str = "/feed/supply_pressure_pa";
 
 /// Smallest film (h_min/C) a misaligned journal may reach before it counts as touching.
 const TOUCHING: f64 = 1e-3;
@@ -222,6 +259,12 @@ pub struct Point {
     pub min_film_bar: f64,
     /// (θ, P̄) along the mid-plane, numerical solutions only.
     pub midplane: Option<Vec<(f64, f64)>>,
+    /// The film's moment on a misaligned journal in the load frame (x along the load, y 90°
+    /// ahead in the rotation, z along the spin), per μ N_s (R/C)² R L²; None when aligned.
+    pub moment_bar: Option<[f64; 2]>,
+    /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
+    pub midplane_content: Option<Vec<f64>>,
+    pub cavitated_fraction: Option<f64>,
     /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
     /// estimate of S, the mesh.
     pub sweeps: u32,
@@ -255,6 +298,16 @@ pub fn solve_error(e: SolveError) -> CalcError {
     }
 }
 
+/// A vector of the film frame (towards h_max, 90° ahead) in the load frame: x along the load
+/// W = −F, y 90° ahead of it in the direction of rotation.
+pub fn load_frame(f: &FilmSolution, v: [f64; 2]) -> [f64; 2] {
+    let force = [f.load_radial, -f.load_tangential];
+    let norm = force[0].hypot(force[1]);
+    let x = [-force[0] / norm, -force[1] / norm];
+    let y = [-x[1], x[0]];
+    [v[0] * x[0] + v[1] * x[1], v[0] * y[0] + v[1] * y[1]]
+}
+
 fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
@@ -270,6 +323,9 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         inlet_flow_bar: Some(f.inlet_flow_bar),
         min_film_bar: f.min_thickness,
         midplane: Some(f.midplane.clone()),
+        midplane_content: f.midplane_content.clone(),
+        moment_bar: physics.misalignment.map(|_| load_frame(f, f.moment)),
+        cavitated_fraction: f.cavitated_fraction,
         sweeps: f.solved.sweeps,
         residual: Some(f.solved.residual),
         error_estimate: None,
@@ -305,7 +361,7 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
-            let load_fixed = physics.arc.is_some() || physics.misalignment.is_some();
+            let load_fixed = placed(&physics);
             let (fine, coarse) = match load_fixed {
                 false => {
                     let film = Film {
@@ -317,10 +373,7 @@ fn at_eccentricity_from(
                     (fine, coarse)
                 }
                 true => {
-                    let half = Mesh {
-                        circumferential: mesh.circumferential / 2,
-                        axial_half: (mesh.axial_half / 2).max(2),
-                    };
+                    let half = mesh.coarse();
                     let (_, coarse, _) =
                         positioned_film(eps, l_over_d, physics, half, stop, None, keep_going)?;
                     let (_, fine, _) =
@@ -330,9 +383,14 @@ fn at_eccentricity_from(
             };
             let mut point = from_film(eps, &fine, physics);
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
-            // Second-order scheme: the fine mesh's error is about (S_h − S_2h)/3.
-            point.error_estimate = Some(((sf - sc) / 3.0 / sf).abs());
-            if richardson {
+            // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
+            // when the coarse mesh halves both spacings.
+            let r = mesh.refinement_ratio();
+            point.error_estimate = Some(((sf - sc) / (r * r - 1.0) / sf).abs());
+            // Richardson's extrapolation needs the same ratio both ways: only exact halvings
+            // (the `high` mesh is one) are extrapolated.
+            debug_assert!(!richardson || mesh.halves_exactly(), "{mesh:?}");
+            if richardson && mesh.halves_exactly() {
                 let extrapolate = |f: f64, c: f64| f + (f - c) / 3.0;
                 let film = FilmSolution {
                     load_radial: extrapolate(fine.load_radial, coarse.load_radial),
@@ -341,6 +399,10 @@ fn at_eccentricity_from(
                     side_leakage_bar: extrapolate(fine.side_leakage_bar, coarse.side_leakage_bar),
                     inlet_flow_bar: extrapolate(fine.inlet_flow_bar, coarse.inlet_flow_bar),
                     pressure_shear: extrapolate(fine.pressure_shear, coarse.pressure_shear),
+                    moment: [
+                        extrapolate(fine.moment[0], coarse.moment[0]),
+                        extrapolate(fine.moment[1], coarse.moment[1]),
+                    ],
                     ..fine.clone()
                 };
                 point = Point {
@@ -387,6 +449,9 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         inlet_flow_bar: None,
         min_film_bar: 1.0 - eps,
         midplane: None,
+        midplane_content: None,
+        cavitated_fraction: None,
+        moment_bar: None,
         sweeps: 0,
         residual: None,
         error_estimate: None,
@@ -418,10 +483,7 @@ pub fn equilibrium(
             richardson: false,
         } if mesh.circumferential >= 32 => Some(Method::Numerical {
             level,
-            mesh: Mesh {
-                circumferential: mesh.circumferential / 2,
-                axial_half: (mesh.axial_half / 2).max(2),
-            },
+            mesh: mesh.coarse(),
             stop,
             richardson: false,
         }),
@@ -516,6 +578,10 @@ impl Searcher<'_> {
                     // A misaligned journal touching at an end carries any load: S → 0.
                     Err(CalcError::Impossible { pointer, .. }) if pointer == "/misalignment" => {
                         return Ok(-50.0)
+                    }
+                    // The supply outweighs the film: it carries no load here, S → ∞.
+                    Err(CalcError::Impossible { pointer, .. }) if pointer == SUPPLY_DOMINATES => {
+                        return Ok(50.0)
                     }
                     Err(e) => return Err(e),
                 }

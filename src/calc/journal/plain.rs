@@ -45,6 +45,34 @@ pub enum ClosedFormChoice {
     Long,
 }
 
+/// How the film cavitates (see `JournalEffects::cavitation`).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum CavitationMode {
+    /// The Reynolds condition.
+    #[default]
+    Auto,
+    /// The Reynolds condition.
+    On,
+    /// No cavitation: the full Sommerfeld film.
+    Off,
+    /// The Reynolds (Swift–Stieber) condition, p ≥ 0, by projected SOR.
+    Reynolds,
+    /// Mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod–Adams film content).
+    Jfo,
+}
+
+impl CavitationMode {
+    /// The auto/on/off mode an effect report carries.
+    pub fn mode(self) -> Mode {
+        match self {
+            CavitationMode::Auto => Mode::Auto,
+            CavitationMode::Off => Mode::Off,
+            _ => Mode::On,
+        }
+    }
+}
+
 /// Effects this calculation understands.
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -54,10 +82,26 @@ pub struct JournalEffects {
     /// isothermal rise lowers the viscosity by more than 5 %.
     #[serde(default)]
     pub thermal: Mode,
-    /// Reynolds cavitation (p ≥ 0, Swift–Stieber). `off` keeps the full Sommerfeld film with its
-    /// negative pressures (a film that cannot rupture: submerged at high ambient pressure).
+    /// The cavitation model: `auto`, `on` and `reynolds` apply the Reynolds (Swift–Stieber)
+    /// condition p ≥ 0 (the film ruptures where the pressure and its gradient vanish and refills
+    /// wherever the pressure would rise: mass is not conserved across the cavitated zone; the
+    /// Table 8.6 model). `jfo` applies mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod
+    /// and Adams' film content θ_f ∈ [0, 1], complementarity p (1 − θ_f) = 0, upwind Couette
+    /// fluxes): the film ruptures as with the Reynolds condition and reforms only where the
+    /// streamers fill the gap again; it is fed flooded (θ_f = 1, at the edges' pressure) along a
+    /// line across the whole length at h_max when no feed is given or with a circumferential
+    /// groove (a partial arc: along its leading edge); a `hole`, `axial_groove` or `two_axial_grooves` feed becomes ports of
+    /// its size at its supply pressure in a periodic 360° film (flooded, θ_f = 1, and held at
+    /// P̄_s; elsewhere the film carries round what leaves the cavitated zone), where it sits:
+    /// `opposite_load` (the default position, inside the Reynolds model's cavitated zone),
+    /// `at_max_film`, or ±90° to the load line. The flow the ports supply is then the film's own
+    /// (`inlet_flow_m3_s`). The friction then counts the Couette shear of the liquid only
+    /// (θ_f/h in the cavitated zone). Costs about the same as the Reynolds condition per film;
+    /// a feed away from h_max adds an attitude search. `off` keeps the full Sommerfeld film
+    /// with its negative pressures (a film that cannot rupture: submerged at high ambient
+    /// pressure).
     #[serde(default)]
-    pub cavitation: Mode,
+    pub cavitation: CavitationMode,
     /// Turbulent film (Ng–Pan linearised coefficients for the pressure flows and the Couette
     /// shear, Khonsari & Booser Eq. 6.26–6.31, local Re = ρ U h/μ). `auto` applies it when the
     /// film Reynolds number ρ U C/μ at the inlet temperature exceeds 1000.
@@ -101,6 +145,12 @@ pub struct PlainInput {
     /// Rotor mass carried by this bearing, kg, for the stability threshold (default W/g).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
     pub rotor_mass_kg: Option<Positive>,
+    /// Stiffness of the shaft between the rotor mass and this bearing, N/m (a Jeffcott rotor:
+    /// the shaft in series with the film; default rigid). Its flexibility γ = W/(k_s C) lowers
+    /// the critical mass by 1 + γ k_eq (Hori's Routh–Hurwitz threshold as Stachowiak &
+    /// Batchelor §5.6.4 give it; γ is their "dimensionless exciter mass").
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1e8)]
+    pub shaft_stiffness_n_m: Option<Positive>,
     /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
     /// half-length axial 2…256], "tolerance": 1e-14…1e-3}`.
     #[serde(default)]
@@ -221,6 +271,11 @@ impl Validate for PlainInput {
                 Some(Method::numerical(Level::Standard, mesh, custom.tolerance))
             }
         };
+        if self.effects.cavitation == CavitationMode::Jfo
+            && matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
+        {
+            errors.push(FieldError::new("/effects/cavitation", "the closed forms use the half-Sommerfeld or Reynolds condition; mass-conserving (jfo) cavitation needs a numerical fidelity"));
+        }
         if self.effects.inertia == Mode::On {
             errors.push(FieldError::new("/effects/inertia", "fluid inertia is not modelled; use auto (the reduced Reynolds number is reported) or off"));
         }
@@ -334,6 +389,7 @@ impl Validate for PlainInput {
                 arc,
                 misalignment,
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
+                shaft_stiffness_n_m: self.shaft_stiffness_n_m.map(Positive::get),
                 method,
                 effects: self.effects,
                 dynamics: self.dynamics,
@@ -350,8 +406,13 @@ impl Validate for PlainInput {
 pub struct ProfilePoint {
     /// θ from h_max in the direction of rotation, degrees.
     pub angle_deg: f64,
-    /// Film pressure above the feed pressure, Pa.
+    /// Film pressure above the feed pressure, Pa (above ambient with `jfo` and a hole or
+    /// axial-groove feed).
     pub pressure_pa: f64,
+    /// Film content θ_f: the liquid fraction of the gap (1 in the full film, below 1 in the
+    /// cavitated zone), dimensionless; with `effects.cavitation: jfo` only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film_content: Option<f64>,
 }
 
 /// The line a misalignment's direction is measured from.
@@ -373,15 +434,39 @@ pub struct MisalignmentSpec {
     pub slope_rad: crate::calc::quantity::NonNegative,
     /// Direction of the tilt: the plane it lies in, from the load line in the direction of
     /// rotation, degrees (−180 … 180; default 0, tilt in the load plane as a shaft bends under it).
+    /// The journal's end at +z (z along its spin vector) is the one displaced this way; the
+    /// other end moves the opposite way.
     #[serde(default)]
     #[schema(minimum = -180.0, maximum = 180.0, example = 0.0)]
     pub direction_deg: f64,
-    /// What `direction_deg` is measured from: `load_line` (default; a tilt fixed in space, as a
-    /// shaft bending under its load) or `line_of_centres` (a tilt that follows the journal, the
-    /// convention of Stachowiak & Batchelor's PARTIAL and STABILITY programs, where 0 tilts
-    /// towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
+    /// What `direction_deg` is measured from: `load_line` (default; a tilt fixed in the bearing,
+    /// as a shaft bending under its load — the convention of Stachowiak & Batchelor's PARTIAL
+    /// and STABILITY programs, whose film h* = 1 + ε cos(x* − β) + y* t cos x* tilts in the load
+    /// plane: `direction_deg` 0, ε′ = t) or `line_of_centres` (a tilt that follows the journal,
+    /// where 0 tilts towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
     #[serde(default)]
     pub measured_from: MisalignmentReference,
+}
+
+/// The film's moment on a misaligned journal.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct FilmMoment {
+    /// The frame: x along the static load, y 90° ahead of it in the direction of rotation, z
+    /// along the journal's spin vector (x, y, z right-handed); the tilted journal's end at +z is
+    /// the one displaced towards `misalignment.direction_deg`. The moment is taken about the
+    /// bearing centre (on the axis at mid-length).
+    pub frame: String,
+    /// Moment about x, N·m.
+    pub mx_n_m: f64,
+    /// Moment about y, N·m.
+    pub my_n_m: f64,
+    /// |M|, N·m.
+    pub magnitude_n_m: f64,
+    /// (M_x, M_y)/(μ N_s (R/C)² R L²), dimensionless (N_s in rev/s).
+    pub dimensionless: [f64; 2],
+    /// The moment's component against the tilt, N·m: −M·(z × u) for the tilt direction u (a
+    /// tilt by the slope about z × u); positive when the film resists the misalignment.
+    pub restoring_n_m: f64,
 }
 
 /// Stiffness and damping of the film.
@@ -423,17 +508,29 @@ pub struct Stability {
     /// Whether a rigid rotor of `rotor_mass_kg` runs stably at the operating speed.
     pub stable_at_operating_speed: bool,
     /// Speed at which oil whirl sets in, rev/min, holding load and viscosity (searched along the
-    /// equilibrium locus on the `fast` mesh: a few per cent); absent when none
-    /// exists in the solved range (see `statement`).
+    /// equilibrium locus on the `fast` mesh: a few per cent; a turbulent film's Reynolds number
+    /// follows the speed along it); absent when none exists in the solved range (see
+    /// `statement`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub threshold_speed_rpm: Option<f64>,
     /// Whirl frequency ratio at the operating point, dimensionless (about 0.5 for plain bearings);
     /// absent when the film cannot whirl.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub whirl_frequency_ratio: Option<f64>,
-    /// Critical mass parameter m C ω²/W at the operating point; absent when stable for any mass.
+    /// Critical mass parameter m C ω²/W at the operating point (with the shaft's flexibility
+    /// when `shaft_stiffness_n_m` is given); absent when stable for any mass.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_mass_parameter: Option<f64>,
+    /// Critical speed at the operating eccentricity, rad/s: ω_c = (m̄_c W/(m C))^½, the speed at
+    /// which a rotor of `rotor_mass_kg` would whirl if the film kept this eccentricity and its
+    /// dimensionless coefficients (Stachowiak & Batchelor's ω_c, §5.6.4); absent when stable
+    /// for any mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_speed_rad_s: Option<f64>,
+    /// ω_c (C/g)^½, dimensionless: Stachowiak & Batchelor's ω*_c (with m = W/g it is
+    /// (m̄_c)^½); absent when stable for any mass.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_speed_dimensionless: Option<f64>,
     /// The rotor's m C ω²/W at the operating speed.
     pub mass_parameter: f64,
     /// Rotor mass used, kg.
@@ -456,7 +553,8 @@ pub struct PlainOutput {
     /// h_min = C (1 − ε), m.
     pub min_film_thickness_m: f64,
     /// Peak film pressure, Pa gauge: the film's P̄_max μ N_s (R/C)², plus the supply pressure
-    /// when a feed is given (as Khonsari & Booser Ex 8.3 add it).
+    /// when a feed is given (as Khonsari & Booser Ex 8.3 add it) — except with `jfo` and a hole
+    /// or axial-groove feed, whose film holds the supply pressure at the ports itself.
     pub max_pressure_pa: f64,
     /// P̄_max = p_max (C/R)²/(μ N_s), dimensionless (Table 8.6 convention).
     pub max_pressure_dimensionless: f64,
@@ -465,6 +563,10 @@ pub struct PlainOutput {
     /// Film rupture angle from h_max (mid-plane), degrees; absent for a full film.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub cavitation_start_angle_deg: Option<f64>,
+    /// Share of the film's area that is cavitated (film content θ_f < 1), dimensionless 0 … 1;
+    /// with `effects.cavitation: jfo` only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub cavitated_area_fraction: Option<f64>,
     /// Petroff's friction coefficient 2π² S (C/R), the concentric-journal estimate, dimensionless.
     pub petroff_friction_coefficient: f64,
     /// f = F/W, dimensionless; F is the journal-surface shear integrated over the full
@@ -481,7 +583,9 @@ pub struct PlainOutput {
     pub side_leakage_m3_s: f64,
     /// Q_L/((π/2) N_s D L C), dimensionless.
     pub side_leakage_dimensionless: f64,
-    /// Flow entering at the feed line (θ = 0, h_max), m³/s; absent for closed forms.
+    /// Flow entering at the feed line (θ = 0, h_max), m³/s; with `jfo` and a hole or axial-groove
+    /// feed, the flow the ports supply, from the film (the side leakage: the film conserves
+    /// mass); absent for closed forms.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub inlet_flow_m3_s: Option<f64>,
     /// Adiabatic oil temperature rise ΔT = E_p/(ρ c_p Q_L) (Khonsari & Booser Eq. 8.44), K;
@@ -519,6 +623,10 @@ pub struct PlainOutput {
     /// Mid-plane pressure profile, with `include_field` and a numerical fidelity.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure_profile: Option<Vec<ProfilePoint>>,
+    /// The film's moment on the journal when `misalignment` is given (absent when aligned: it
+    /// is then zero by symmetry).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub misalignment_moment: Option<FilmMoment>,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamic_coefficients: Option<DynamicCoefficients>,
     #[serde(skip_serializing_if = "Option::is_none")]
