@@ -15,3 +15,4 @@ pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
+pub mod static_capacity;
