@@ -11,6 +11,7 @@ use super::geometry::BallBearingSpec;
 use super::kinematics::{Kinematics, KinematicsOutput};
 use super::life::{Life, LifeOutput};
 use super::load_distribution::{LoadDistribution, LoadDistributionOutput};
+use super::static_capacity::{StaticCapacity, StaticCapacityOutput};
 use crate::calc::contact::ehl_film::{EhlFilm, EhlFilmOutput};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
@@ -89,6 +90,7 @@ pub struct AnalysisInput {
 #[derive(Debug, Clone)]
 pub struct AnalysisCase {
     load_distribution: <<LoadDistribution as Calculation>::Input as Validate>::Valid,
+    static_request: Value,
     life_request: Value,
     bearing: Value,
     lubricant: Value,
@@ -208,6 +210,7 @@ impl Validate for AnalysisInput {
         match (errors.is_empty(), load_distribution) {
             (true, Ok(load_distribution)) => Ok(AnalysisCase {
                 load_distribution,
+                static_request: json!({"bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a}),
                 life_request: life,
                 bearing: self.bearing,
                 lubricant: self.lubricant,
@@ -231,6 +234,11 @@ fn json_pointer(path: &serde_path_to_error::Path) -> String {
 pub struct AnalysisOutput {
     /// Ball loads, load zone and raceway contacts of the most loaded ball.
     pub load_distribution: LoadDistributionOutput,
+    /// ISO 76 static load rating C0 and the static safety factor under the operating loads
+    /// (`/v1/rolling-bearings/static-capacity`); absent, with a warning, where ISO 76 gives no
+    /// X0, Y0 for the bearing's nominal contact angle.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub static_capacity: Option<StaticCapacityOutput>,
     /// Speeds at the most loaded ball's contact angle.
     pub kinematics: KinematicsOutput,
     /// EHL film at the inner raceway of the most loaded ball.
@@ -253,7 +261,8 @@ impl Calculation for Analysis {
     const PATH: &'static str = "/v1/rolling-bearings/analysis";
     const SUMMARY: &'static str = "Ball bearing at one operating point: load distribution, contact stresses, films, κ and life";
     const DESCRIPTION: &'static str = "The whole chain, each step by its own room: quasi-static load distribution \
-(`/v1/rolling-bearings/load-distribution`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
+(`/v1/rolling-bearings/load-distribution`), ISO 76 static capacity and safety factor under the operating loads \
+(`/v1/rolling-bearings/static-capacity`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
 Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball (`/v1/contacts/ehl-film`: ball radius D/2; inner race \
 R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
 a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own, the films' merged over both raceways.";
@@ -277,6 +286,24 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
         if let Some(report) = step.report.take() {
             ctx.report(report);
         }
+
+        let static_capacity = {
+            let mut step = ctx.child();
+            match sub_in::<StaticCapacity>(case.static_request, &mut step) {
+                Ok(out) => {
+                    absorb(ctx, &mut step, "static capacity");
+                    Some(out)
+                }
+                Err(CalcError::Impossible { message, .. }) => {
+                    ctx.warn(
+                        "static_capacity_not_rated",
+                        format!("static capacity: {message}"),
+                    );
+                    None
+                }
+                Err(e) => return Err(e),
+            }
+        };
 
         let ball = case.bearing["ball_diameter_m"].as_f64().unwrap_or(f64::NAN);
         let pitch = case.bearing["pitch_diameter_m"]
@@ -353,6 +380,7 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
         };
         Ok(AnalysisOutput {
             load_distribution,
+            static_capacity,
             kinematics,
             inner_film,
             outer_film,
@@ -441,6 +469,10 @@ mod tests {
             &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
         );
         assert_eq!(r["load_distribution"], alone["result"]);
+        let static_alone = ok::<StaticCapacity>(
+            &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
+        );
+        assert_eq!(r["static_capacity"], static_alone["result"]);
         let q = r["load_distribution"]["max_ball_load_n"].as_f64().unwrap();
         // The film's Hertz pressure at Q_max equals the load distribution's inner contact.
         let p_film = r["inner_film"]["max_hertz_pressure_pa"].as_f64().unwrap();
@@ -463,6 +495,21 @@ mod tests {
                 "{effect}"
             );
         }
+    }
+
+    /// ISO 76 tabulates no X0, Y0 for a 10° angular-contact bearing: the chain runs on and says
+    /// why its static block is missing.
+    #[test]
+    fn an_unrated_angle_drops_the_static_block_with_a_warning() {
+        let mut r = example();
+        r["bearing"]["free_contact_angle_deg"] = json!(10.0);
+        let v = ok::<Analysis>(&r);
+        assert!(v["result"].get("static_capacity").is_none());
+        assert!(v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .any(|w| w["code"] == "static_capacity_not_rated"));
     }
 
     #[test]
