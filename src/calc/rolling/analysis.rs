@@ -127,9 +127,10 @@ impl Validate for AnalysisInput {
                 "the rings must turn relative to each other",
             ));
         }
-        let load_distribution = validate_value::<LoadDistribution>(
-            json!({"bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a}),
-        );
+        let load_distribution = validate_value::<LoadDistribution>(json!({
+            "bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a,
+            "inner_ring_speed_rpm": self.inner_ring_speed_rpm, "outer_ring_speed_rpm": outer_rpm,
+        }));
         let lubricant =
             serde_path_to_error::deserialize::<_, LubricantSpec>(self.lubricant.clone())
                 .map_err(|e| {
@@ -265,7 +266,9 @@ impl Calculation for Analysis {
 (`/v1/rolling-bearings/static-capacity`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
 Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball (`/v1/contacts/ehl-film`: ball radius D/2; inner race \
 R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
-a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own, the films' merged over both raceways.";
+a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). The load distribution gets the ring speeds, so its centrifugal and \
+gyroscopic ball loads apply by their criteria; the outer film then sits at the largest outer load. Effects are the steps' own, \
+the films' merged over both raceways.";
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[
         "thermal",
@@ -316,6 +319,14 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
             .ok_or_else(|| CalcError::Internal("no balls".into()))?;
         let alpha = most_loaded.contact_angle_deg.to_radians();
         let q_max = load_distribution.max_ball_load_n;
+        // With the centrifugal ball loads the outer contacts carry more, at their own angle:
+        // the outer film sits at the ball with the largest outer load.
+        let (q_outer, alpha_outer) = load_distribution
+            .ball_loads
+            .iter()
+            .filter_map(|b| Some((b.outer_load_n?, b.outer_contact_angle_deg?)))
+            .max_by(|a, b| a.0.total_cmp(&b.0))
+            .map_or((q_max, alpha), |(q, a)| (q, a.to_radians()));
 
         let kinematics_request = json!({
             "ball_diameter_m": ball, "pitch_diameter_m": pitch,
@@ -331,9 +342,9 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
             json!({"radius_x_m": radius_x, "radius_y_m": -case.bearing[groove].as_f64().unwrap_or(f64::NAN),
                 "elastic_modulus_pa": material("rings")["elastic_modulus_pa"], "poisson_ratio": material("rings")["poisson_ratio"]})
         };
-        let film = |race_body: Value, speed: f64, race_rms: Option<f64>| {
+        let film = |race_body: Value, load: f64, speed: f64, race_rms: Option<f64>| {
             let mut request = json!({
-                "body1": ball_body, "body2": race_body, "load_n": q_max.max(f64::MIN_POSITIVE),
+                "body1": ball_body, "body2": race_body, "load_n": load.max(f64::MIN_POSITIVE),
                 "entrainment_speed_m_s": speed.abs().max(1e-9), "lubricant": case.lubricant, "temperature_c": case.temperature_c,
             });
             if let (Some(r), Some(race)) = (case.roughness, race_rms) {
@@ -344,11 +355,16 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
         };
         let cos = alpha.cos();
         let inner_race = race((pitch - ball * cos) / (2.0 * cos), "inner_groove_radius_m");
-        let outer_race = race(-(pitch + ball * cos) / (2.0 * cos), "outer_groove_radius_m");
+        let cos_o = alpha_outer.cos();
+        let outer_race = race(
+            -(pitch + ball * cos_o) / (2.0 * cos_o),
+            "outer_groove_radius_m",
+        );
         let mut inner_ctx = ctx.child();
         let inner_film = sub_in::<EhlFilm>(
             film(
                 inner_race,
+                q_max,
                 kinematics.inner_contact_entrainment_speed_m_s,
                 case.roughness.map(|r| r.inner_race_rms_m.get()),
             ),
@@ -358,6 +374,7 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). Effects are the steps' own
         let outer_film = sub_in::<EhlFilm>(
             film(
                 outer_race,
+                q_outer,
                 kinematics.outer_contact_entrainment_speed_m_s,
                 case.roughness.map(|r| r.outer_race_rms_m.get()),
             ),
@@ -465,9 +482,10 @@ mod tests {
     fn the_chain_is_its_rooms() {
         let v = ok::<Analysis>(&example());
         let r = &v["result"];
-        let alone = ok::<LoadDistribution>(
-            &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
-        );
+        let alone = ok::<LoadDistribution>(&json!({
+            "bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0,
+            "inner_ring_speed_rpm": 2000.0, "outer_ring_speed_rpm": 0.0,
+        }));
         assert_eq!(r["load_distribution"], alone["result"]);
         let static_alone = ok::<StaticCapacity>(
             &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
@@ -495,6 +513,26 @@ mod tests {
                 "{effect}"
             );
         }
+    }
+
+    /// At speed the chain's load distribution is the ball-by-ball one: the outer film sits at
+    /// the largest outer load, which exceeds the inner by about F_c.
+    #[test]
+    fn at_speed_the_outer_film_carries_the_centrifugal_force() {
+        let mut r = example();
+        r["inner_ring_speed_rpm"] = json!(30000.0);
+        r["radial_load_n"] = json!(2000.0);
+        let v = ok::<Analysis>(&r);
+        assert_eq!(v["effects"]["centrifugal"]["applied"], true);
+        let ld = &v["result"]["load_distribution"];
+        let q_o = ld["max_outer_ball_load_n"].as_f64().unwrap();
+        assert!(q_o > ld["max_ball_load_n"].as_f64().unwrap());
+        // The film's Hertz pressure at the outer raceway is the load distribution's.
+        let p_film = v["result"]["outer_film"]["max_hertz_pressure_pa"]
+            .as_f64()
+            .unwrap();
+        let p_ld = ld["outer_contact"]["max_pressure_pa"].as_f64().unwrap();
+        assert!((p_film / p_ld - 1.0).abs() < 1e-3, "{p_film} vs {p_ld}");
     }
 
     /// ISO 76 tabulates no X0, Y0 for a 10° angular-contact bearing: the chain runs on and says

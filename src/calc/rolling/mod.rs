@@ -9,6 +9,7 @@
 //! the texts; each constant cites where it was checked).
 
 pub mod analysis;
+mod ball_equilibrium;
 pub mod friction;
 pub mod geometry;
 pub mod grease_life;

@@ -345,7 +345,7 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0.";
         let f0_n_m2 = q0 / (STRIBECK_FACTOR * d * d);
         let (f_r, f_a) = (case.radial_load_n, case.axial_load_n);
         let p0 = (case.x0 * f_r + case.y0 * f_a).max(f_r);
-        if !(p0 >= MIN_EQUIVALENT_LOAD_N) {
+        if p0.is_nan() || p0 < MIN_EQUIVALENT_LOAD_N {
             return Err(CalcError::impossible(
                 if f_r > 0.0 { "/radial_load_n" } else { "/axial_load_n" },
                 format!(
@@ -393,6 +393,7 @@ fn rating_ball_load(
     let steel = MaterialSpec {
         elastic_modulus_pa: Positive::try_from(RATING_STEEL.0).map_err(CalcError::Internal)?,
         poisson_ratio: PoissonRatio::try_from(RATING_STEEL.1).map_err(CalcError::Internal)?,
+        density_kg_m3: None,
     };
     let radius = |r: f64| Radius::try_from(r).map_err(CalcError::Internal);
     let body = |rx: f64, ry: f64| -> Result<BodySpec, CalcError> {
