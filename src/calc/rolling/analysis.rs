@@ -127,6 +127,12 @@ impl Validate for AnalysisInput {
                 "the rings must turn relative to each other",
             ));
         }
+        if self.bearing.get("roller_diameter_m").is_some() {
+            errors.push(FieldError::new(
+                "/bearing",
+                "the analysis chain is for ball bearings; a cylindrical roller bearing's load distribution is at /v1/rolling-bearings/load-distribution",
+            ));
+        }
         let load_distribution = validate_value::<LoadDistribution>(json!({
             "bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a,
             "inner_ring_speed_rpm": self.inner_ring_speed_rpm, "outer_ring_speed_rpm": outer_rpm,
@@ -563,6 +569,12 @@ mod tests {
         let mut axial = example();
         axial["axial_load_n"] = json!(2000.0);
         assert!(invalid_pointers::<Analysis>(&axial).contains(&"/equivalent_load_n".to_owned()));
+        let mut roller = example();
+        roller["bearing"] = json!({"roller_diameter_m": 0.01, "roller_effective_length_m": 0.01,
+            "pitch_diameter_m": 0.065, "roller_count": 14, "diametral_clearance_m": 2e-5,
+            "rollers": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3},
+            "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}});
+        assert!(invalid_pointers::<Analysis>(&roller).contains(&"/bearing".to_owned()));
         let mut typo = example();
         typo["lubricant"]["viscosty_pa_s"] = json!(1.0);
         assert!(invalid_pointers::<Analysis>(&typo)

@@ -16,4 +16,5 @@ pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
+pub mod roller;
 pub mod static_capacity;
