@@ -16,7 +16,7 @@ use crate::calc::contact::ehl_film::{EhlFilm, EhlFilmOutput};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{validate_value, CalcError, Calculation, Context, FieldError, Validate};
-use crate::effects::Decision;
+use crate::effects::{Decision, Mode};
 use crate::fidelity::Level;
 
 pub struct Analysis;
@@ -83,7 +83,62 @@ pub struct AnalysisInput {
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
     pub fatigue_load_limit_n: Option<Positive>,
     pub roughness: Option<RaceRoughness>,
+    /// Bore d, m (< pitch diameter), for the speed limit d·n (Khonsari & Booser Table 14.5);
+    /// absent: the pitch diameter stands in (conservative, d_m > d).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.05)]
+    pub bore_diameter_m: Option<Positive>,
+    /// How the bearing is lubricated, for the speed limit: `grease_or_bath` (d·n ≤ 300 000 mm·rpm)
+    /// or `circulating_oil` (500 000); absent: both limits are judged.
+    pub lubrication_method: Option<LubricationMethod>,
+    /// Misalignment of the inner ring against the outer, rad (0 … 0.1), for the limit of
+    /// Khonsari & Booser Table 14.8 (deep groove 12–16′) and Table 13.1 (angular contact 2′).
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 0.1, example = 0.002)]
+    pub misalignment_rad: Option<NonNegative>,
+    /// Distance from the contact centre upstream to the inlet oil meniscus, m (> 0), passed to
+    /// both raceway films for their starvation effect (`/v1/contacts/ehl-film`).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.0005)]
+    pub inlet_meniscus_distance_m: Option<Positive>,
+    /// The raceway films' effects (`thermal` inlet heating, `starvation`, `mixed_lubrication`:
+    /// `auto`, `on`, `off`), passed to `/v1/contacts/ehl-film` for both raceways.
+    #[serde(default)]
+    pub film_effects: FilmEffects,
 }
+
+/// The films' effects the chain passes on (the EHL film room's own).
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FilmEffects {
+    #[serde(default)]
+    pub thermal: Mode,
+    #[serde(default)]
+    pub starvation: Mode,
+    #[serde(default)]
+    pub mixed_lubrication: Mode,
+}
+
+/// Lubrication method for the speed limit (Khonsari & Booser Table 14.5).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum LubricationMethod {
+    GreaseOrBath,
+    CirculatingOil,
+}
+
+/// d·n limits of ball bearings, mm·rpm (Khonsari & Booser Table 14.5): grease or oil bath,
+/// circulating oil.
+const DN_GREASE_OR_BATH: f64 = 3.0e5;
+const DN_CIRCULATING_OIL: f64 = 5.0e5;
+/// 52100 through-hardened steel: dimensional stabilisation needed above about 125 °C
+/// (Khonsari & Booser §14.12); mineral oil's limit 150 °C (Table 14.7).
+const STABILISATION_C: f64 = 125.0;
+const MINERAL_OIL_LIMIT_C: f64 = 150.0;
+/// Misalignment limits, rad: deep-groove 12′ (Table 14.8: 12–16′), angular contact 2′ (Table 13.1).
+const MISALIGNMENT_DEEP_GROOVE_RAD: f64 = 12.0 / 60.0 * std::f64::consts::PI / 180.0;
+const MISALIGNMENT_ANGULAR_RAD: f64 = 2.0 / 60.0 * std::f64::consts::PI / 180.0;
+/// Load classes of ball bearings by P/C (Table 14.6: heavy above 15 %) and the minimum load
+/// 0.01 C below which the balls may skid (RB-6).
+const HEAVY_LOAD_RATIO: f64 = 0.15;
+const MINIMUM_LOAD_RATIO: f64 = 0.01;
 
 /// The validated chain: the requests of the steps that need no earlier result, and what the
 /// later steps are built from.
@@ -99,6 +154,12 @@ pub struct AnalysisCase {
     outer_rpm: f64,
     roughness: Option<RaceRoughness>,
     kinematic_viscosity_mm2_s: f64,
+    bore_m: Option<f64>,
+    lubrication_method: Option<LubricationMethod>,
+    misalignment_rad: Option<f64>,
+    angular_contact: bool,
+    meniscus_m: Option<f64>,
+    film_effects: FilmEffects,
 }
 
 impl Validate for AnalysisInput {
@@ -127,6 +188,31 @@ impl Validate for AnalysisInput {
                 "the rings must turn relative to each other",
             ));
         }
+        let pitch_m = self.bearing.get("pitch_diameter_m").and_then(Value::as_f64);
+        if let (Some(bore), Some(pitch)) = (self.bore_diameter_m, pitch_m) {
+            if bore.get() >= pitch {
+                errors.push(FieldError::new(
+                    "/bore_diameter_m",
+                    format!(
+                        "the bore must be smaller than the pitch diameter {pitch} m, got {}",
+                        bore.get()
+                    ),
+                ));
+            }
+        }
+        if let Some(m) = self.misalignment_rad {
+            if m.get() > 0.1 {
+                errors.push(FieldError::new(
+                    "/misalignment_rad",
+                    format!("must be within [0, 0.1] rad, got {}", m.get()),
+                ));
+            }
+        }
+        let bearing_angle = self
+            .bearing
+            .get("free_contact_angle_deg")
+            .and_then(Value::as_f64)
+            .unwrap_or(0.0);
         if self.bearing.get("roller_diameter_m").is_some() {
             errors.push(FieldError::new(
                 "/bearing",
@@ -226,6 +312,12 @@ impl Validate for AnalysisInput {
                 outer_rpm,
                 roughness: self.roughness,
                 kinematic_viscosity_mm2_s: nu,
+                bore_m: self.bore_diameter_m.map(Positive::get),
+                lubrication_method: self.lubrication_method,
+                misalignment_rad: self.misalignment_rad.map(NonNegative::get),
+                angular_contact: bearing_angle > 0.0,
+                meniscus_m: self.inlet_meniscus_distance_m.map(Positive::get),
+                film_effects: self.film_effects,
             }),
             _ => Err(errors),
         }
@@ -262,6 +354,91 @@ pub struct AnalysisOutput {
     /// The smaller film parameter of the two raceways, Λ = h_min/σ, dimensionless.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub min_film_parameter_lambda: Option<f64>,
+    /// Speed factor d·n, bore in mm × relative ring speed in rpm (Khonsari & Booser Table 14.5);
+    /// the pitch diameter stands in when no bore is given.
+    pub speed_dn_mm_rpm: f64,
+    /// d_m·n, pitch diameter in mm × rpm (the measure of Khonsari & Booser Fig. 14.13).
+    pub pitch_dn_mm_rpm: f64,
+}
+
+/// The chain's limit checks, as warnings (Khonsari & Booser §14.10–14.13, Tables 13.1,
+/// 14.5–14.8, RB-6); returns (d·n, d_m·n).
+fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Context) -> (f64, f64) {
+    let n = (case.inner_rpm - case.outer_rpm).abs();
+    let pitch_dn = pitch_m * 1e3 * n;
+    let dn = case.bore_m.map_or(pitch_dn, |d| d * 1e3 * n);
+    let what = if case.bore_m.is_some() {
+        "d·n"
+    } else {
+        "d_m·n (no bore given: the pitch diameter stands in, a conservative d·n)"
+    };
+    let (limit, method) = match case.lubrication_method {
+        Some(LubricationMethod::CirculatingOil) => (DN_CIRCULATING_OIL, "circulating oil"),
+        Some(LubricationMethod::GreaseOrBath) | None => {
+            (DN_GREASE_OR_BATH, "grease or an oil bath")
+        }
+    };
+    if dn > limit {
+        ctx.warn(
+            "speed_above_dn_limit",
+            format!(
+                "{what} = {dn:.0} mm·rpm exceeds the {limit:.0} of ball bearings with {method} (Khonsari & Booser Table 14.5{}); d_m·n = {pitch_dn:.0}: precision bearings, better cooling or a special design (about 2 × the catalogue limit) are needed",
+                if case.lubrication_method.is_none() && dn <= DN_CIRCULATING_OIL {
+                    "; within the 500 000 of circulating oil"
+                } else {
+                    ""
+                }
+            ),
+        );
+    }
+    let t = case.temperature_c;
+    if t > MINERAL_OIL_LIMIT_C {
+        ctx.warn(
+            "temperature_above_mineral_oil_limit",
+            format!("{t} °C exceeds the 150 °C limit of mineral oils (and 110–150 °C of petroleum greases; Khonsari & Booser Table 14.7): a synthetic lubricant is needed"),
+        );
+    }
+    if t > STABILISATION_C {
+        ctx.warn(
+            "temperature_above_steel_stabilisation",
+            format!("{t} °C: 52100 bearing steel needs dimensional stabilisation above about 125 °C (limit 140–175 °C, Khonsari & Booser §14.12, Table 14.7)"),
+        );
+    }
+    if let Some(m) = case.misalignment_rad {
+        let (limit, kind) = if case.angular_contact {
+            (
+                MISALIGNMENT_ANGULAR_RAD,
+                "angular-contact ball bearings (Table 13.1: ±2′)",
+            )
+        } else {
+            (
+                MISALIGNMENT_DEEP_GROOVE_RAD,
+                "deep-groove ball bearings (Table 14.8: 12–16′)",
+            )
+        };
+        if m > limit {
+            ctx.warn(
+                "misalignment_above_limit",
+                format!(
+                    "the misalignment {:.2}′ exceeds the limit of {kind} (Khonsari & Booser): expect life loss and cage wear",
+                    m.to_degrees() * 60.0
+                ),
+            );
+        }
+    }
+    let p_over_c = 1.0 / life.load_ratio;
+    if p_over_c > HEAVY_LOAD_RATIO {
+        ctx.warn(
+            "heavy_load_class",
+            format!("P/C = {p_over_c:.3} is a heavy load for a ball bearing (above 0.15, Khonsari & Booser Table 14.6); with a heavy press fit 0.25–0.3 C risks cracking the ring"),
+        );
+    } else if p_over_c < MINIMUM_LOAD_RATIO {
+        ctx.warn(
+            "below_minimum_load",
+            format!("P/C = {p_over_c:.4} is below the minimum load 0.01 C of ball bearings (Khonsari & Booser RB-6): the balls may skid; consider a spring preload"),
+        );
+    }
+    (dn, pitch_dn)
 }
 
 impl Calculation for Analysis {
@@ -298,7 +475,7 @@ the films' merged over both raceways.";
 
         let static_capacity = {
             let mut step = ctx.child();
-            match sub_in::<StaticCapacity>(case.static_request, &mut step) {
+            match sub_in::<StaticCapacity>(case.static_request.clone(), &mut step) {
                 Ok(out) => {
                     absorb(ctx, &mut step, "static capacity");
                     Some(out)
@@ -323,7 +500,11 @@ the films' merged over both raceways.";
             .iter()
             .max_by(|a, b| a.load_n.total_cmp(&b.load_n))
             .ok_or_else(|| CalcError::Internal("no balls".into()))?;
-        let alpha = most_loaded.contact_angle_deg.to_radians();
+        // The sign of a contact angle says only which groove shoulder the ball leans on; the
+        // kinematics and the raceway radii take its magnitude (a symmetric solve can leave a
+        // round-off −0).
+        let alpha_deg = most_loaded.contact_angle_deg.abs();
+        let alpha = alpha_deg.to_radians();
         let q_max = load_distribution.max_ball_load_n;
         // With the centrifugal ball loads the outer contacts carry more, at their own angle:
         // the outer film sits at the ball with the largest outer load.
@@ -332,11 +513,11 @@ the films' merged over both raceways.";
             .iter()
             .filter_map(|b| Some((b.outer_load_n?, b.outer_contact_angle_deg?)))
             .max_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or((q_max, alpha), |(q, a)| (q, a.to_radians()));
+            .map_or((q_max, alpha), |(q, a)| (q, a.abs().to_radians()));
 
         let kinematics_request = json!({
             "ball_diameter_m": ball, "pitch_diameter_m": pitch,
-            "ball_count": case.bearing["ball_count"], "contact_angle_deg": most_loaded.contact_angle_deg,
+            "ball_count": case.bearing["ball_count"], "contact_angle_deg": alpha_deg,
             "inner_ring_speed_rpm": case.inner_rpm, "outer_ring_speed_rpm": case.outer_rpm,
         });
         let kinematics = sub::<Kinematics>(kinematics_request, ctx, "kinematics")?;
@@ -352,7 +533,12 @@ the films' merged over both raceways.";
             let mut request = json!({
                 "body1": ball_body, "body2": race_body, "load_n": load.max(f64::MIN_POSITIVE),
                 "entrainment_speed_m_s": speed.abs().max(1e-9), "lubricant": case.lubricant, "temperature_c": case.temperature_c,
+                "effects": {"thermal": case.film_effects.thermal, "starvation": case.film_effects.starvation,
+                            "mixed_lubrication": case.film_effects.mixed_lubrication},
             });
+            if let Some(m) = case.meniscus_m {
+                request["inlet_meniscus_distance_m"] = json!(m);
+            }
             if let (Some(r), Some(race)) = (case.roughness, race_rms) {
                 request["roughness"] =
                     json!({"body1_rms_m": r.ball_rms_m.get(), "body2_rms_m": race});
@@ -390,7 +576,8 @@ the films' merged over both raceways.";
         absorb(ctx, &mut inner_ctx, "inner raceway film");
         absorb(ctx, &mut outer_ctx, "outer raceway film");
 
-        let life = sub::<Life>(case.life_request, ctx, "life")?;
+        let life = sub::<Life>(case.life_request.clone(), ctx, "life")?;
+        let limits = limits(&case, pitch, &life, ctx);
         let kappa = life
             .rated_viscosity_mm2_s
             .map(|nu1| case.kinematic_viscosity_mm2_s / nu1);
@@ -411,6 +598,8 @@ the films' merged over both raceways.";
             operating_viscosity_mm2_s: case.kinematic_viscosity_mm2_s,
             kappa,
             min_film_parameter_lambda: lambda,
+            speed_dn_mm_rpm: limits.0,
+            pitch_dn_mm_rpm: limits.1,
         })
     }
 }
@@ -539,6 +728,110 @@ mod tests {
             .unwrap();
         let p_ld = ld["outer_contact"]["max_pressure_pa"].as_f64().unwrap();
         assert!((p_film / p_ld - 1.0).abs() < 1e-3, "{p_film} vs {p_ld}");
+    }
+
+    fn codes(v: &Value) -> Vec<String> {
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w["code"].as_str().unwrap().to_owned())
+            .collect()
+    }
+
+    /// Khonsari & Booser Ex 14.7: a 110 mm shaft at 5000 rpm, pitch diameter 150 mm: d·n =
+    /// 550 000 above the 500 000 of circulating oil (d_m·n = 750 000, Fig. 14.13's angular-contact
+    /// or cylindrical-roller territory).
+    #[test]
+    fn khonsari_ex_14_7_speed_limit() {
+        let mut r = example();
+        r["bearing"] = json!({"ball_diameter_m": 0.022225, "pitch_diameter_m": 0.15, "ball_count": 14,
+            "inner_groove_radius_m": 0.52 * 0.022225, "outer_groove_radius_m": 0.52 * 0.022225,
+            "diametral_clearance_m": 2e-5,
+            "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3},
+            "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}});
+        r["inner_ring_speed_rpm"] = json!(5000.0);
+        r["radial_load_n"] = json!(10000.0);
+        r["dynamic_load_rating_n"] = json!(150000.0);
+        r["bore_diameter_m"] = json!(0.11);
+        r["lubrication_method"] = json!("circulating_oil");
+        let v = ok::<Analysis>(&r);
+        assert!((v["result"]["speed_dn_mm_rpm"].as_f64().unwrap() - 550000.0).abs() < 1e-6);
+        assert!((v["result"]["pitch_dn_mm_rpm"].as_f64().unwrap() - 750000.0).abs() < 1e-6);
+        assert!(codes(&v).contains(&"speed_above_dn_limit".to_owned()));
+        r["inner_ring_speed_rpm"] = json!(4000.0);
+        assert!(!codes(&ok::<Analysis>(&r)).contains(&"speed_above_dn_limit".to_owned()));
+    }
+
+    /// Temperature (Table 14.7), misalignment (Tables 14.8, 13.1) and load class (Table 14.6).
+    #[test]
+    fn limits_warn() {
+        let v = ok::<Analysis>(&example());
+        // The example: P/C = 8900/35 700 = 0.25, a heavy load.
+        assert!(codes(&v).contains(&"heavy_load_class".to_owned()));
+        assert!(!codes(&v).contains(&"misalignment_above_limit".to_owned()));
+        let mut r = example();
+        r["temperature_c"] = json!(160.0);
+        r["misalignment_rad"] = json!(0.005); // 17.2′ > 12′
+        let c = codes(&ok::<Analysis>(&r));
+        for code in [
+            "temperature_above_mineral_oil_limit",
+            "temperature_above_steel_stabilisation",
+            "misalignment_above_limit",
+        ] {
+            assert!(c.contains(&code.to_owned()), "{code}");
+        }
+        r["temperature_c"] = json!(70.0);
+        r["misalignment_rad"] = json!(0.002); // 6.9′: within 12′, beyond an angular contact's 2′
+        assert!(!codes(&ok::<Analysis>(&r)).contains(&"misalignment_above_limit".to_owned()));
+        r["bearing"]["free_contact_angle_deg"] = json!(25.0);
+        r["axial_load_n"] = json!(3000.0);
+        r["equivalent_load_n"] = json!(9000.0);
+        assert!(codes(&ok::<Analysis>(&r)).contains(&"misalignment_above_limit".to_owned()));
+        let mut bad = example();
+        bad["misalignment_rad"] = json!(0.2);
+        bad["bore_diameter_m"] = json!(0.2);
+        let p = invalid_pointers::<Analysis>(&bad);
+        assert!(
+            p.contains(&"/misalignment_rad".to_owned())
+                && p.contains(&"/bore_diameter_m".to_owned())
+        );
+    }
+
+    /// The films' effects reach the EHL room: starvation from the meniscus distance (on, and
+    /// judged in auto), thermal off on request.
+    #[test]
+    fn film_effects_pass_through() {
+        let mut r = example();
+        r["inlet_meniscus_distance_m"] = json!(6e-4);
+        r["film_effects"] = json!({"thermal": "off", "starvation": "on"});
+        let v = ok::<Analysis>(&r);
+        assert_eq!(v["effects"]["thermal"]["applied"], false);
+        assert_eq!(v["effects"]["thermal"]["mode"], "off");
+        assert_eq!(
+            v["effects"]["starvation"]["applied"], true,
+            "{}",
+            v["effects"]["starvation"]
+        );
+        let mut flooded = example();
+        flooded["film_effects"] = json!({"thermal": "off"});
+        let flooded = ok::<Analysis>(&flooded);
+        let h = |v: &Value| {
+            v["result"]["inner_film"]["min_film_thickness_m"]
+                .as_f64()
+                .unwrap()
+        };
+        assert!(h(&v) <= h(&flooded));
+        // In auto, that meniscus lies beyond both critical distances: reported, not applied.
+        r["film_effects"] = json!({"starvation": "auto"});
+        let auto = ok::<Analysis>(&r);
+        assert_eq!(auto["effects"]["starvation"]["applied"], false);
+        assert!(
+            auto["effects"]["starvation"]["criterion"]["value"]
+                .as_f64()
+                .unwrap()
+                > 0.0
+        );
     }
 
     /// ISO 76 tabulates no X0, Y0 for a 10° angular-contact bearing: the chain runs on and says
