@@ -119,6 +119,7 @@ pub struct StaticCapacityInput {
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e10, example = 23200.0)]
     pub static_load_rating_n: Option<Positive>,
     /// Whether the bearing rotates under the load (default true).
+    #[schema(example = true)]
     pub rotating: Option<bool>,
     /// `smooth`, `normal` (default) or `shock`.
     #[serde(default)]
