@@ -499,7 +499,7 @@ pub struct LoadDistributionOutput {
 impl Calculation for LoadDistribution {
     const PATH: &'static str = "/v1/rolling-bearings/load-distribution";
     const SUMMARY: &'static str =
-        "Ball-bearing load distribution: ball loads, contact angles, load zone and ring displacements under combined radial and axial load";
+        "Ball- and cylindrical-roller-bearing load distribution: element loads, contact angles, load zone and ring displacements under combined load, moment and speed";
     const DESCRIPTION: &'static str = "Quasi-static equilibrium of the inner ring of a single-row ball bearing (deep-groove or \
 angular-contact, clearance or preload) under a radial load F_r, an axial load F_a and optionally a tilting moment M, rigid rings, \
 every ball summed discretely at ψ_j = 2πj/Z (Harris; Hamrock §21.3.6; Khonsari & Booser §14.4). Groove curvature centres BD apart \
@@ -513,7 +513,9 @@ outer-race control) put every ball at its own place between the grooves (Jones):
 equilibrium is the minimum of the convex elastic energy less the work of the loads: safeguarded Newton (ball blocks eliminated), \
 Brent's method for pure radial or pure axial loads held square; every force balance to 1e-9 of the load. Load-zone factor \
 ε = δ(0)/[δ(0) − δ(π)] (classic ½(1 + δ_a tan α/δ_r) at fixed angle). Zero clearance, pure radial: Q_max = 4.37 F_r/Z for many \
-balls (Stribeck); pure axial: Q = F_a/(Z sin α).";
+balls (Stribeck); pure axial: Q = F_a/(Z sin α). A cylindrical roller `bearing` (fields `roller_…`, Khonsari & Booser RI-4, RI-6): \
+straight or crowned rollers (40 laminae, crown drop y²/2R), Palmgren's Q = K_n δ^(10/9) per roller, radial load only, \
+δ_j = δ_r cos ψ_j − P_d/2 solved by Brent's method; the raceway contacts are Hertz line contacts (static factor against 4000 MPa).";
     const FIDELITY: &'static [Level] = &[Level::Standard];
     const EFFECTS: &'static [&'static str] = &["centrifugal", "gyroscopic"];
     const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "inner_groove_radius_m": 0.0066, "outer_groove_radius_m": 0.0066, "diametral_clearance_m": 1.8e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 3000, "axial_load_n": 1000}"#;
@@ -644,12 +646,24 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
             "an equilibrium without a loaded roller".to_owned(),
         ));
     }
+    // The most loaded lamina (the middle one of a crowned roller) sets the pressure: its line
+    // load over its width; the contact reaches as far along the roller as laminae are loaded.
+    let laminae = b.laminae();
+    let (_, lamina_loads) = b.roller_load(eq.max_approach_m, &laminae);
+    let width = b.length_m / laminae.len() as f64;
+    let q_lamina = lamina_loads.iter().copied().fold(0.0, f64::max);
+    let reach = laminae
+        .iter()
+        .zip(&lamina_loads)
+        .filter(|(_, &q)| q > 0.0)
+        .map(|(l, _)| l.0.abs() + 0.5 * width)
+        .fold(0.0, f64::max);
     let contact = |inner: bool, ctx: &mut Context| -> Result<RacewayContact, CalcError> {
-        let h = b.raceway_contact(inner, q_max, ctx)?;
+        let h = b.raceway_contact(inner, q_lamina, width, ctx)?;
         match (h.half_width_m, h.approach_m) {
             (Some(half_width), Some(approach)) => Ok(RacewayContact {
                 max_pressure_pa: h.max_pressure_pa,
-                semi_major_axis_m: 0.5 * b.length_m,
+                semi_major_axis_m: reach,
                 semi_minor_axis_m: half_width,
                 approach_m: approach,
             }),
@@ -2485,5 +2499,53 @@ mod tests {
             pointer_of(&request(b, 1.0, 0.0, "varying")),
             "/bearing/ball_count"
         );
+    }
+
+    /// Crowned rollers, sliced into laminae: a very flat crown is the straight roller; a crown
+    /// of 100 D (Hamrock A.1.8) touches only the middle at light load, spreads along the roller
+    /// as the load grows, and presses harder than the straight roller at the same load.
+    #[test]
+    fn crowned_rollers() {
+        let crowned = |r: f64| {
+            let mut b = roller_bearing(10.0, 10.0, 65.0, 14, 0.02);
+            b["profile"] = json!({"crown_radius_m": r});
+            b
+        };
+        let straight = ok(&roller_request(
+            roller_bearing(10.0, 10.0, 65.0, 14, 0.02),
+            10000.0,
+        ));
+        let flat = ok(&roller_request(crowned(1e4), 10000.0));
+        assert_rel(
+            get(&flat, "/result/max_ball_load_n"),
+            get(&straight, "/result/max_ball_load_n"),
+            1e-3,
+            "R → ∞",
+        );
+        assert_rel(
+            get(&straight, "/result/inner_contact/semi_major_axis_m"),
+            5e-3,
+            1e-12,
+            "L/2",
+        );
+        let light = ok(&roller_request(crowned(1.0), 50.0));
+        let heavy = ok(&roller_request(crowned(1.0), 50000.0));
+        let reach = |v: &Value| get(v, "/result/inner_contact/semi_major_axis_m");
+        assert!(reach(&light) < 0.5 * 5e-3, "{}", reach(&light));
+        assert!(reach(&heavy) > reach(&light));
+        let crowned_10k = ok(&roller_request(crowned(1.0), 10000.0));
+        assert!(
+            get(&crowned_10k, "/result/inner_contact/max_pressure_pa")
+                > get(&straight, "/result/inner_contact/max_pressure_pa")
+        );
+        for v in [&light, &heavy, &crowned_10k] {
+            let f = get(v, "/result/ball_loads/0/load_n");
+            assert!(f > 0.0);
+        }
+        for (v, f) in [(&light, 50.0), (&heavy, 50000.0), (&crowned_10k, 10000.0)] {
+            assert!((resultant(v).0 - f).abs() <= 1e-9 * f);
+        }
+        let r = roller_request(crowned(0.005), 1000.0);
+        assert_eq!(pointer_of(&r), "/bearing/profile/crown_radius_m");
     }
 }

@@ -14,9 +14,14 @@
 //!   Σ Q_j cos ψ_j = F_r, solved for δ_r by Brent's method (monotone). Zero clearance gives
 //!   Stribeck's roller constant Z F_r/Q_max → 4.08 (Khonsari T16: 4.077 for 8, 4.088 for 10
 //!   rollers).
+//! - Crowned rollers (`profile: {"crown_radius_m": R}`; Hamrock A.1.8: r_ay/D ≈ 10² for
+//!   cylindrical rollers) are sliced into 40 laminae of width w = L/40 across the length; at
+//!   lamina k, y_k from the roller's middle, the crown drop g_k = y_k²/(2R) lowers the approach
+//!   at each of the two contacts, and the lamina carries its share of Palmgren's law:
+//!   Q_k = (w/L) K_n (δ − 2g_k)₊^{10/9}, which sums back to the straight roller's Q = K_n δ^{10/9}
+//!   when R → ∞. Light loads touch only the middle laminae (the point-contact end of the range).
 //! - A cylindrical roller bearing of the N/NU kind carries no axial load and this model no
-//!   tilting moment; crowned profiles (point contact at light load, line contact beyond) are
-//!   not modelled.
+//!   tilting moment (no edge loading, no misalignment along the rollers).
 //! - The raceway contacts of the most loaded roller are the Hertz room's line contacts (roller
 //!   radius D/2 against (d_m − D)/2 convex inside and −(d_m + D)/2 concave outside): maximum
 //!   pressure, half-width b (reported as the semi-minor axis; the semi-major axis is L/2) and
@@ -72,7 +77,22 @@ pub struct RollerBearingSpec {
     pub rollers: MaterialSpec,
     /// The rings' material.
     pub rings: MaterialSpec,
+    /// The rollers' profile; absent: straight (uncrowned).
+    pub profile: Option<RollerProfile>,
 }
+
+/// A crowned roller profile: the crown's radius across the roller, along its axis.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RollerProfile {
+    /// Crown radius R along the roller axis, m (≥ the effective length, at most 1e4 m; about
+    /// 100 D for cylindrical rollers, Hamrock A.1.8).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e4, example = 1.0)]
+    pub crown_radius_m: Positive,
+}
+
+/// Laminae of a crowned roller.
+const LAMINAE: usize = 40;
 
 /// A validated roller bearing.
 #[derive(Debug, Clone, Copy)]
@@ -82,6 +102,8 @@ pub struct RollerBearing {
     pub pitch_diameter_m: f64,
     pub roller_count: usize,
     pub clearance_m: f64,
+    /// Crown radius, m (None: straight).
+    pub crown_radius_m: Option<f64>,
     rollers: MaterialSpec,
     rings: MaterialSpec,
 }
@@ -150,6 +172,15 @@ impl RollerBearingSpec {
                 ));
             }
         }
+        if let Some(p) = self.profile {
+            let r = p.crown_radius_m.get();
+            if !(l..=1e4).contains(&r) {
+                errors.push(FieldError::new(
+                    format!("{at}/profile/crown_radius_m"),
+                    format!("must be within [L, 1e4] m = [{l:.4e}, 1e4] m (a crown sharper than the roller's length is not a cylindrical roller), got {r}"),
+                ));
+            }
+        }
         if errors.is_empty() {
             Ok(RollerBearing {
                 roller_diameter_m: d,
@@ -157,6 +188,7 @@ impl RollerBearingSpec {
                 pitch_diameter_m: dm,
                 roller_count: z as usize,
                 clearance_m: p_d,
+                crown_radius_m: self.profile.map(|p| p.crown_radius_m.get()),
                 rollers: self.rollers,
                 rings: self.rings,
             })
@@ -176,6 +208,8 @@ pub struct RollerCase {
 /// The roller equilibrium.
 pub struct RollerEquilibrium {
     pub loads: Vec<f64>,
+    /// The most loaded roller's total approach δ, m.
+    pub max_approach_m: f64,
     pub radial_displacement_m: f64,
     pub stiffness: f64,
     pub report: SolverReport,
@@ -203,11 +237,43 @@ impl RollerBearing {
         (2.0 * self.palmgren()).powf(-10.0 / 9.0)
     }
 
+    /// The laminae: (offset from the middle y_k, crown drop g_k), m; one lamina of drop 0 for a
+    /// straight roller.
+    pub fn laminae(&self) -> Vec<(f64, f64)> {
+        match self.crown_radius_m {
+            None => vec![(0.0, 0.0)],
+            Some(r) => (0..LAMINAE)
+                .map(|k| {
+                    let y = ((k as f64 + 0.5) / LAMINAE as f64 - 0.5) * self.length_m;
+                    (y, y * y / (2.0 * r))
+                })
+                .collect(),
+        }
+    }
+
+    /// A roller's load at the total approach δ (both contacts), N, and its laminae's loads.
+    pub fn roller_load(&self, delta: f64, laminae: &[(f64, f64)]) -> (f64, Vec<f64>) {
+        let k = self.contact_stiffness() / laminae.len() as f64;
+        let loads: Vec<f64> = laminae
+            .iter()
+            .map(|&(_, g)| {
+                let d = delta - 2.0 * g;
+                if d > 0.0 {
+                    k * d.powf(10.0 / 9.0)
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        (loads.iter().sum(), loads)
+    }
+
     /// The Hertz line contact of a roller on the inner or outer raceway under `load_n`.
     pub fn raceway_contact(
         &self,
         inner: bool,
         load_n: f64,
+        length_m: f64,
         ctx: &mut Context,
     ) -> Result<HertzOutput, CalcError> {
         let d = self.roller_diameter_m;
@@ -230,7 +296,7 @@ impl RollerBearing {
             body2: body(race, self.rings)?,
             load_n: Positive::try_from(load_n).map_err(CalcError::Internal)?,
             line: Some(LineSpec {
-                length_m: Positive::try_from(self.length_m).map_err(CalcError::Internal)?,
+                length_m: Positive::try_from(length_m).map_err(CalcError::Internal)?,
             }),
             fidelity: FidelityRequest::default(),
             closed_form: None,
@@ -258,20 +324,16 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     let z = b.roller_count;
     let k = b.contact_stiffness();
     let half = 0.5 * b.clearance_m;
+    // The crown drop at the roller's ends: the approach a crowned roller needs to touch all along.
+    let crown = b.laminae().iter().map(|l| 2.0 * l.1).fold(0.0, f64::max);
     let cosines: Vec<f64> = (0..z)
         .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).cos())
         .collect();
+    let laminae = b.laminae();
     let loads = |d_r: f64| -> Vec<f64> {
         cosines
             .iter()
-            .map(|&c| {
-                let delta = d_r * c - half;
-                if delta > 0.0 {
-                    k * delta.powf(10.0 / 9.0)
-                } else {
-                    0.0
-                }
-            })
+            .map(|&c| b.roller_load(d_r * c - half, &laminae).0)
             .collect()
     };
     let force = |d_r: f64| -> f64 {
@@ -282,7 +344,7 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
             .sum::<f64>()
             - case.radial_load_n
     };
-    let preload = z as f64 * k * (-half).max(0.0).powf(10.0 / 9.0);
+    let preload = z as f64 * b.roller_load(-half, &laminae).0;
     let scale = case.radial_load_n.max(preload);
     let report = |iterations: u32, residual: f64| SolverReport {
         method: "brent_roller_load_balance".to_owned(),
@@ -296,6 +358,7 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     if case.radial_load_n == 0.0 {
         return Ok(RollerEquilibrium {
             loads: loads(0.0),
+            max_approach_m: -half,
             radial_displacement_m: 0.0,
             stiffness: k,
             report: report(0, 0.0),
@@ -303,7 +366,7 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     }
     // From the concentric position, past the clearance, doubled until the rollers carry F_r.
     let delta_scale = (case.radial_load_n / (z as f64 * k)).powf(0.9);
-    let mut hi = half.abs() + delta_scale;
+    let mut hi = half.abs() + delta_scale + crown;
     let mut grown = 0;
     while force(hi) <= 0.0 {
         hi *= 2.0;
@@ -337,6 +400,7 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     }
     Ok(RollerEquilibrium {
         loads: loads(root.x),
+        max_approach_m: root.x - half,
         radial_displacement_m: root.x,
         stiffness: k,
         report: report(root.iterations, residual),
