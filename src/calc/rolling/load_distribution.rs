@@ -2548,4 +2548,55 @@ mod tests {
         let r = roller_request(crowned(0.005), 1000.0);
         assert_eq!(pointer_of(&r), "/bearing/profile/crown_radius_m");
     }
+
+    /// Denormal speeds, moments and densities stay finite (or answer 422), never NaN or a 500.
+    #[test]
+    fn denormal_inputs_stay_finite() {
+        let tiny = 5e-324;
+        let mut rows = vec![
+            at_speed(
+                bearing_6210(0.018),
+                3000.0,
+                500.0,
+                tiny,
+                json!({"centrifugal": "on"}),
+            ),
+            at_speed(
+                bearing_7220(),
+                3000.0,
+                20000.0,
+                1e4,
+                json!({"centrifugal": "on", "gyroscopic": "on"}),
+            ),
+        ];
+        let mut m = request(bearing_6210(0.018), 3000.0, 0.0, "varying");
+        m["moment_n_m"] = json!(tiny);
+        rows.push(m);
+        let mut d = bearing_6210(0.018);
+        d["ball"]["density_kg_m3"] = json!(tiny);
+        rows.push(at_speed(d, tiny, 0.0, 3e4, json!({"centrifugal": "on"})));
+        let mut r = roller_bearing(10.0, 10.0, 65.0, 14, 0.0);
+        r["profile"] = json!({"crown_radius_m": 1e4});
+        rows.push(roller_request(r, tiny));
+        for r in rows {
+            match post(&r) {
+                Ok(v) => {
+                    for p in [
+                        "/result/max_ball_load_n",
+                        "/result/radial_displacement_m",
+                        "/result/tilt_rad",
+                        "/result/inner_contact/max_pressure_pa",
+                        "/result/static_safety_factor",
+                    ] {
+                        assert!(get(&v, p).is_finite(), "{p} in {r}");
+                    }
+                }
+                // A 422: refused, or (loads and forces all denormal) no converged balance.
+                Err(Failure::Invalid(_))
+                | Err(Failure::Calc(CalcError::Impossible { .. }))
+                | Err(Failure::Calc(CalcError::NotConverged { .. })) => {}
+                Err(e) => panic!("{r}: {e:?}"),
+            }
+        }
+    }
 }
