@@ -139,6 +139,10 @@ const MISALIGNMENT_ANGULAR_RAD: f64 = 2.0 / 60.0 * std::f64::consts::PI / 180.0;
 /// 0.01 C below which the balls may skid (RB-6).
 const HEAVY_LOAD_RATIO: f64 = 0.15;
 const MINIMUM_LOAD_RATIO: f64 = 0.01;
+/// Rollers: heavy above 18 % (Table 14.6), minimum 0.02 C (RB-6), misalignment 3′ (Table 14.8).
+const HEAVY_LOAD_RATIO_ROLLER: f64 = 0.18;
+const MINIMUM_LOAD_RATIO_ROLLER: f64 = 0.02;
+const MISALIGNMENT_ROLLER_RAD: f64 = 3.0 / 60.0 * std::f64::consts::PI / 180.0;
 
 /// The validated chain: the requests of the steps that need no earlier result, and what the
 /// later steps are built from.
@@ -158,6 +162,8 @@ pub struct AnalysisCase {
     lubrication_method: Option<LubricationMethod>,
     misalignment_rad: Option<f64>,
     angular_contact: bool,
+    /// A cylindrical roller bearing: line contacts, roller life exponent, roller limits.
+    roller: bool,
     meniscus_m: Option<f64>,
     film_effects: FilmEffects,
 }
@@ -213,12 +219,7 @@ impl Validate for AnalysisInput {
             .get("free_contact_angle_deg")
             .and_then(Value::as_f64)
             .unwrap_or(0.0);
-        if self.bearing.get("roller_diameter_m").is_some() {
-            errors.push(FieldError::new(
-                "/bearing",
-                "the analysis chain is for ball bearings; a cylindrical roller bearing's load distribution is at /v1/rolling-bearings/load-distribution",
-            ));
-        }
+        let roller = self.bearing.get("roller_diameter_m").is_some();
         let load_distribution = validate_value::<LoadDistribution>(json!({
             "bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a,
             "inner_ring_speed_rpm": self.inner_ring_speed_rpm, "outer_ring_speed_rpm": outer_rpm,
@@ -251,7 +252,7 @@ impl Validate for AnalysisInput {
             .cloned()
             .unwrap_or(Value::Null);
         let mut life = json!({
-            "bearing_kind": "ball",
+            "bearing_kind": if roller { "roller" } else { "ball" },
             "dynamic_load_rating_n": self.dynamic_load_rating_n.get(),
             "speed_rpm": (self.inner_ring_speed_rpm - outer_rpm).abs().max(f64::MIN_POSITIVE),
             "pitch_diameter_m": bearing_pitch,
@@ -316,6 +317,7 @@ impl Validate for AnalysisInput {
                 lubrication_method: self.lubrication_method,
                 misalignment_rad: self.misalignment_rad.map(NonNegative::get),
                 angular_contact: bearing_angle > 0.0,
+                roller,
                 meniscus_m: self.inlet_meniscus_distance_m.map(Positive::get),
                 film_effects: self.film_effects,
             }),
@@ -382,7 +384,7 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
         ctx.warn(
             "speed_above_dn_limit",
             format!(
-                "{what} = {dn:.0} mm·rpm exceeds the {limit:.0} of ball bearings with {method} (Khonsari & Booser Table 14.5{}); d_m·n = {pitch_dn:.0}: precision bearings, better cooling or a special design (about 2 × the catalogue limit) are needed",
+                "{what} = {dn:.0} mm·rpm exceeds the {limit:.0} of ball and cylindrical roller bearings with {method} (Khonsari & Booser Table 14.5{}); d_m·n = {pitch_dn:.0}: precision bearings, better cooling or a special design (about 2 × the catalogue limit) are needed",
                 if case.lubrication_method.is_none() && dn <= DN_CIRCULATING_OIL {
                     "; within the 500 000 of circulating oil"
                 } else {
@@ -405,7 +407,12 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
         );
     }
     if let Some(m) = case.misalignment_rad {
-        let (limit, kind) = if case.angular_contact {
+        let (limit, kind) = if case.roller {
+            (
+                MISALIGNMENT_ROLLER_RAD,
+                "cylindrical roller bearings (Table 14.8: 3–4′)",
+            )
+        } else if case.angular_contact {
             (
                 MISALIGNMENT_ANGULAR_RAD,
                 "angular-contact ball bearings (Table 13.1: ±2′)",
@@ -427,15 +434,20 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
         }
     }
     let p_over_c = 1.0 / life.load_ratio;
-    if p_over_c > HEAVY_LOAD_RATIO {
+    let (heavy, minimum, kind) = if case.roller {
+        (HEAVY_LOAD_RATIO_ROLLER, MINIMUM_LOAD_RATIO_ROLLER, "roller")
+    } else {
+        (HEAVY_LOAD_RATIO, MINIMUM_LOAD_RATIO, "ball")
+    };
+    if p_over_c > heavy {
         ctx.warn(
             "heavy_load_class",
-            format!("P/C = {p_over_c:.3} is a heavy load for a ball bearing (above 0.15, Khonsari & Booser Table 14.6); with a heavy press fit 0.25–0.3 C risks cracking the ring"),
+            format!("P/C = {p_over_c:.3} is a heavy load for a {kind} bearing (above {heavy}, Khonsari & Booser Table 14.6); with a heavy press fit 0.25–0.3 C risks cracking the ring"),
         );
-    } else if p_over_c < MINIMUM_LOAD_RATIO {
+    } else if p_over_c < minimum {
         ctx.warn(
             "below_minimum_load",
-            format!("P/C = {p_over_c:.4} is below the minimum load 0.01 C of ball bearings (Khonsari & Booser RB-6): the balls may skid; consider a spring preload"),
+            format!("P/C = {p_over_c:.4} is below the minimum load {minimum} C of {kind} bearings (Khonsari & Booser RB-6): the rolling elements may skid; consider a preload"),
         );
     }
     (dn, pitch_dn)
@@ -443,7 +455,7 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
 
 impl Calculation for Analysis {
     const PATH: &'static str = "/v1/rolling-bearings/analysis";
-    const SUMMARY: &'static str = "Ball bearing at one operating point: load distribution, contact stresses, films, κ and life";
+    const SUMMARY: &'static str = "Ball or cylindrical roller bearing at one operating point: load distribution, static capacity, contact stresses, films, κ, life and limits";
     const DESCRIPTION: &'static str = "The whole chain, each step by its own room: quasi-static load distribution \
 (`/v1/rolling-bearings/load-distribution`), ISO 76 static capacity and safety factor under the operating loads \
 (`/v1/rolling-bearings/static-capacity`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
@@ -451,7 +463,9 @@ Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball
 R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
 a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). The load distribution gets the ring speeds, so its centrifugal and \
 gyroscopic ball loads apply by their criteria; the outer film then sits at the largest outer load. Effects are the steps' own, \
-the films' merged over both raceways.";
+the films' merged over both raceways. A cylindrical roller `bearing` runs the same chain on line contacts over the effective \
+length (the EHL room's line formulas, Hamrock's k → ∞ limit among them), with the roller life exponent 10/3 and the roller \
+limits; ISO 76's static block is for ball bearings only.";
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[
         "thermal",
@@ -473,7 +487,13 @@ the films' merged over both raceways.";
             ctx.report(report);
         }
 
-        let static_capacity = {
+        let static_capacity = if case.roller {
+            ctx.warn(
+                "static_capacity_not_rated",
+                "static capacity: the ISO 76 room rates ball bearings; a roller bearing's static safety against 4000 MPa is the load distribution's static_safety_factor",
+            );
+            None
+        } else {
             let mut step = ctx.child();
             match sub_in::<StaticCapacity>(case.static_request.clone(), &mut step) {
                 Ok(out) => {
@@ -491,7 +511,17 @@ the films' merged over both raceways.";
             }
         };
 
-        let ball = case.bearing["ball_diameter_m"].as_f64().unwrap_or(f64::NAN);
+        let element_key = if case.roller {
+            "roller_diameter_m"
+        } else {
+            "ball_diameter_m"
+        };
+        let ball = case.bearing[element_key].as_f64().unwrap_or(f64::NAN);
+        let count = if case.roller {
+            case.bearing["roller_count"].clone()
+        } else {
+            case.bearing["ball_count"].clone()
+        };
         let pitch = case.bearing["pitch_diameter_m"]
             .as_f64()
             .unwrap_or(f64::NAN);
@@ -517,17 +547,30 @@ the films' merged over both raceways.";
 
         let kinematics_request = json!({
             "ball_diameter_m": ball, "pitch_diameter_m": pitch,
-            "ball_count": case.bearing["ball_count"], "contact_angle_deg": alpha_deg,
+            "ball_count": count, "contact_angle_deg": alpha_deg,
             "inner_ring_speed_rpm": case.inner_rpm, "outer_ring_speed_rpm": case.outer_rpm,
         });
         let kinematics = sub::<Kinematics>(kinematics_request, ctx, "kinematics")?;
 
         let material = |key: &str| case.bearing[key].clone();
-        let ball_body = json!({"radius_x_m": ball / 2.0, "radius_y_m": ball / 2.0,
-            "elastic_modulus_pa": material("ball")["elastic_modulus_pa"], "poisson_ratio": material("ball")["poisson_ratio"]});
+        let element = material(if case.roller { "rollers" } else { "ball" });
+        // A roller is a cylinder along y on straight raceways: a line contact over the effective
+        // length (the texts' roller films, Hamrock A-R2); a ball meets the grooves' concave
+        // radii across the rolling direction.
+        let ball_body = if case.roller {
+            json!({"radius_x_m": ball / 2.0,
+                "elastic_modulus_pa": element["elastic_modulus_pa"], "poisson_ratio": element["poisson_ratio"]})
+        } else {
+            json!({"radius_x_m": ball / 2.0, "radius_y_m": ball / 2.0,
+                "elastic_modulus_pa": element["elastic_modulus_pa"], "poisson_ratio": element["poisson_ratio"]})
+        };
         let race = |radius_x: f64, groove: &str| {
-            json!({"radius_x_m": radius_x, "radius_y_m": -case.bearing[groove].as_f64().unwrap_or(f64::NAN),
-                "elastic_modulus_pa": material("rings")["elastic_modulus_pa"], "poisson_ratio": material("rings")["poisson_ratio"]})
+            let mut body = json!({"radius_x_m": radius_x,
+                "elastic_modulus_pa": material("rings")["elastic_modulus_pa"], "poisson_ratio": material("rings")["poisson_ratio"]});
+            if !case.roller {
+                body["radius_y_m"] = json!(-case.bearing[groove].as_f64().unwrap_or(f64::NAN));
+            }
+            body
         };
         let film = |race_body: Value, load: f64, speed: f64, race_rms: Option<f64>| {
             let mut request = json!({
@@ -538,6 +581,9 @@ the films' merged over both raceways.";
             });
             if let Some(m) = case.meniscus_m {
                 request["inlet_meniscus_distance_m"] = json!(m);
+            }
+            if case.roller {
+                request["line"] = json!({"length_m": case.bearing["roller_effective_length_m"]});
             }
             if let (Some(r), Some(race)) = (case.roughness, race_rms) {
                 request["roughness"] =
@@ -834,6 +880,60 @@ mod tests {
         );
     }
 
+    /// Hamrock's A-R2 cylindrical roller bearing through the chain: d_i = 64, d_o = 96 mm,
+    /// D = l = 16 mm, n = 9, F_r = 10 800 N, ω_i = 524 rad/s, η₀ = 0.01 Pa·s, ξ = 2.2e-8 m²/N,
+    /// E = 207.5 GPa, ν = 0.3. Source (spec A-R2, verified): u = 10.061 m/s, inner
+    /// h_min = 0.3233 µm, outer 0.3905 µm with the point formula at k → ∞ and F_max = 4800 N
+    /// (4 F_r/n). The chain's Q_max comes from the discrete 10/9 law (about 4934 N): the films
+    /// scale by (Q/4800)^−0.073, under 0.3 %, inside the source's ±1 %.
+    #[test]
+    fn hamrock_a_r2_roller_chain() {
+        let steel = json!({"elastic_modulus_pa": 2.075e11, "poisson_ratio": 0.3});
+        let r = json!({
+            "bearing": {"roller_diameter_m": 0.016, "roller_effective_length_m": 0.016,
+                "pitch_diameter_m": 0.08, "roller_count": 9, "diametral_clearance_m": 0.0,
+                "rollers": steel, "rings": steel},
+            "radial_load_n": 10800.0,
+            "inner_ring_speed_rpm": 524.0 * 60.0 / std::f64::consts::TAU,
+            "lubricant": {"viscosity_pa_s": 0.01, "pressure_viscosity_coefficient_1_pa": 2.2e-8},
+            "temperature_c": 40.0,
+            "dynamic_load_rating_n": 100000.0,
+        });
+        let v = ok::<Analysis>(&r);
+        let res = &v["result"];
+        let f = |film: &str| {
+            res[film]["formulas"]["hamrock_dowson_line_limit"]["min_film_thickness_m"]
+                .as_f64()
+                .unwrap()
+        };
+        let q = res["load_distribution"]["max_ball_load_n"]
+            .as_f64()
+            .unwrap();
+        let s = (q / 4800.0).powf(-0.073);
+        assert!(
+            (f("inner_film") / (0.3233e-6 * s) - 1.0).abs() < 0.01,
+            "{}",
+            f("inner_film")
+        );
+        assert!(
+            (f("outer_film") / (0.3905e-6 * s) - 1.0).abs() < 0.01,
+            "{}",
+            f("outer_film")
+        );
+        assert!(
+            (res["kinematics"]["inner_contact_entrainment_speed_m_s"]
+                .as_f64()
+                .unwrap()
+                / 10.061
+                - 1.0)
+                .abs()
+                < 1e-3
+        );
+        assert_eq!(res["life"]["life_exponent"].as_f64().unwrap(), 10.0 / 3.0);
+        assert!(res.get("static_capacity").is_none());
+        assert_eq!(res["inner_film"]["contact"], "line");
+    }
+
     /// ISO 76 tabulates no X0, Y0 for a 10° angular-contact bearing: the chain runs on and says
     /// why its static block is missing.
     #[test]
@@ -862,12 +962,6 @@ mod tests {
         let mut axial = example();
         axial["axial_load_n"] = json!(2000.0);
         assert!(invalid_pointers::<Analysis>(&axial).contains(&"/equivalent_load_n".to_owned()));
-        let mut roller = example();
-        roller["bearing"] = json!({"roller_diameter_m": 0.01, "roller_effective_length_m": 0.01,
-            "pitch_diameter_m": 0.065, "roller_count": 14, "diametral_clearance_m": 2e-5,
-            "rollers": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3},
-            "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}});
-        assert!(invalid_pointers::<Analysis>(&roller).contains(&"/bearing".to_owned()));
         let mut typo = example();
         typo["lubricant"]["viscosty_pa_s"] = json!(1.0);
         assert!(invalid_pointers::<Analysis>(&typo)
