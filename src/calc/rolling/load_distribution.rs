@@ -2578,6 +2578,10 @@ mod tests {
         let mut r = roller_bearing(10.0, 10.0, 65.0, 14, 0.0);
         r["profile"] = json!({"crown_radius_m": 1e4});
         rows.push(roller_request(r, tiny));
+        rows.push(roller_request(
+            roller_bearing(10.0, 10.0, 65.0, 14, 0.0),
+            tiny,
+        ));
         for r in rows {
             match post(&r) {
                 Ok(v) => {

@@ -366,7 +366,8 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     }
     // From the concentric position, past the clearance, doubled until the rollers carry F_r.
     let delta_scale = (case.radial_load_n / (z as f64 * k)).powf(0.9);
-    let mut hi = half.abs() + delta_scale + crown;
+    // (At least a millionth of the roller diameter: a denormal load's δ scale underflows.)
+    let mut hi = (half.abs() + delta_scale + crown).max(1e-6 * b.roller_diameter_m);
     let mut grown = 0;
     while force(hi) <= 0.0 {
         hi *= 2.0;
