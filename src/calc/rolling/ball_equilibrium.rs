@@ -40,7 +40,11 @@
 //! ω_m − ω_o = (ω_i − ω_o)(1 − γ cos α_i)/[1 − γ cos α_i + γ κ cos(α_i + β)], γ = D/d_m, κ the
 //! root above (Harris's outer-race control, derived here from the rolling and no-spin
 //! conditions; at α = 0 it gives the texts' cage and spin speeds). The outer contact supplies
-//! the moment by the friction force f = (2M_g/D) τ, τ ⟂ n_o in the ball's plane.
+//! the moment by the friction force f = (2M_g/D) τ, τ ⟂ n_o in the ball's plane. Checked in
+//! direction against a public Harris-form implementation (S. Sudhof's `BallBearing` MATLAB class,
+//! its ball force balances with λ_o = 2, λ_i = 0): the same friction force on the ball; another
+//! public port (a `Ball_balance.m` of a spindle study) writes the term with the opposite sign.
+//! Not checked against a worked example: the texts have none.
 
 use crate::calc::{CalcError, Context};
 use crate::fidelity::{Level, SolverReport};
