@@ -465,7 +465,7 @@ a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). The load distribution gets
 gyroscopic ball loads apply by their criteria; the outer film then sits at the largest outer load. Effects are the steps' own, \
 the films' merged over both raceways. A cylindrical roller `bearing` runs the same chain on line contacts over the effective \
 length (the EHL room's line formulas, Hamrock's k → ∞ limit among them), with the roller life exponent 10/3 and the roller \
-limits; ISO 76's static block is for ball bearings only.";
+limits and ISO 76's roller rating.";
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[
         "thermal",
@@ -487,13 +487,7 @@ limits; ISO 76's static block is for ball bearings only.";
             ctx.report(report);
         }
 
-        let static_capacity = if case.roller {
-            ctx.warn(
-                "static_capacity_not_rated",
-                "static capacity: the ISO 76 room rates ball bearings; a roller bearing's static safety against 4000 MPa is the load distribution's static_safety_factor",
-            );
-            None
-        } else {
+        let static_capacity = {
             let mut step = ctx.child();
             match sub_in::<StaticCapacity>(case.static_request.clone(), &mut step) {
                 Ok(out) => {
@@ -930,7 +924,12 @@ mod tests {
                 < 1e-3
         );
         assert_eq!(res["life"]["life_exponent"].as_f64().unwrap(), 10.0 / 3.0);
-        assert!(res.get("static_capacity").is_none());
+        assert!(
+            res["static_capacity"]["basic_static_load_rating_n"]
+                .as_f64()
+                .unwrap()
+                > 0.0
+        );
         assert_eq!(res["inner_film"]["contact"], "line");
     }
 

@@ -26,6 +26,12 @@
 //!   ISO 76's Table 2 for radial and angular-contact groove ball bearings; the table itself
 //!   was not available to check. Independently, the texts' 6210 (Khonsari & Booser Table 13.5
 //!   C = 35 700 N × Table 13.11 C0/C = 0.66 → C0 ≈ 23 560 N) is reproduced within 2 %.
+//! - Cylindrical roller bearings by the same definition: 4000 MPa (ISO 76 for roller bearings,
+//!   UMBRA's and Koyo's summaries) at the more stressed line contact of a roller carrying
+//!   Q_max = 5 F_r/Z, on the effective length, steel as above: C0 = Z Q₀/5 =
+//!   f0′ (1 − γ) Z L D with f0′ = Q₀/[5 L D (1 − γ)] = π p² (1 − ν²)/(5E) = 44.2 N/mm² at the
+//!   inner raceway, the 44 of ISO 76's C0r = 44 (1 − D cos α/d_m) Z L D cos α (**verify**: the
+//!   constant as recalled; the evaluation is the definition). P0 = F_r (X0 = 1, Y0 = 0).
 //! - P0 = max(X0 F_r + Y0 F_a, F_r) (ISO 76; Minebea's JIS B 1519 summary). X0 = 0.6,
 //!   Y0 = 0.5 for a radial-contact (deep-groove) bearing (Khonsari & Booser RB-8; SKF's Y-bearing
 //!   page; Minebea). Single-row angular contact: X0 = 0.5 and Y0 by the nominal angle, 15°:
@@ -35,14 +41,20 @@
 //! - Guideline minimum s0 for ball bearings (SKF's table, as reproduced by bearing-centre.com;
 //!   ISO 76 gives the same kind of guidance): rotating — smooth or normal operation 0.5 / 1 / 2
 //!   for low / normal / high demands on quiet running, pronounced shock loads 1.5 / 1.5 / 2;
-//!   non-rotating — 0.4 smooth, 0.5 normal, 1 with shock loads. Khonsari & Booser RB-8: up to
+//!   non-rotating — 0.4 smooth, 0.5 normal, 1 with shock loads. Roller bearings: rotating
+//!   1 / 1.5 / 3 smooth, 1 / 1.5 / 3.5 normal, 2.5 / 3 / 4 with shock loads; non-rotating 0.8,
+//!   1, 2. Khonsari & Booser RB-8: up to
 //!   4 C0 is tolerable where noise and some life loss are acceptable; about 8 C0 may fracture.
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use serde_json::Value;
+
 use super::geometry::{BallBearingSpec, MaterialSpec};
-use crate::calc::contact::hertz::{BodySpec, Hertz, HertzInput, PoissonRatio, Radius};
+use super::load_distribution::{parse_at, LoadDistributionBearing};
+use super::roller::{RollerBearingSpec, ROLLER_STATIC_LIMIT_PA};
+use crate::calc::contact::hertz::{BodySpec, Hertz, HertzInput, LineSpec, PoissonRatio, Radius};
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
@@ -99,9 +111,11 @@ pub enum QuietRunning {
 #[derive(Debug, Clone, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct StaticCapacityInput {
-    /// The bearing (as for `/v1/rolling-bearings/load-distribution`); its nominal contact angle
-    /// is `free_contact_angle_deg` (absent: a deep-groove bearing, α = 0).
-    pub bearing: BallBearingSpec,
+    /// The bearing (as for `/v1/rolling-bearings/load-distribution`): a ball bearing, whose
+    /// nominal contact angle is `free_contact_angle_deg` (absent: deep groove, α = 0), or a
+    /// cylindrical roller bearing (rated on its effective length, crown ignored).
+    #[schema(value_type = LoadDistributionBearing)]
+    pub bearing: Value,
     /// Static radial load F_r, N, 0 … 1e9 (the largest that acts, shocks included).
     #[schema(value_type = f64, minimum = 0.0, maximum = 1e9, example = 3000.0)]
     pub radial_load_n: NonNegative,
@@ -147,6 +161,9 @@ pub struct StaticCapacityCase {
     rotating: bool,
     operation: StaticOperation,
     quiet_running: QuietRunning,
+    /// A cylindrical roller bearing: the effective roller length, m (ball_* then describe the
+    /// rollers).
+    roller_length_m: Option<f64>,
 }
 
 /// ISO 76's X0, Y0 for a single-row ball bearing at nominal angle `deg`, if tabulated.
@@ -165,7 +182,16 @@ fn iso_factors(deg: f64) -> Option<(f64, f64)> {
 impl Validate for StaticCapacityInput {
     type Valid = StaticCapacityCase;
     fn validate(self) -> Result<StaticCapacityCase, Vec<FieldError>> {
-        let bearing = self.bearing.validate_at("/bearing");
+        if self.bearing.get("roller_diameter_m").is_some() {
+            return self.validate_roller();
+        }
+        let spec = parse_at::<BallBearingSpec>(self.bearing.clone(), "/bearing");
+        let deg = spec
+            .as_ref()
+            .ok()
+            .and_then(|b| b.free_contact_angle_deg)
+            .unwrap_or(0.0);
+        let bearing = spec.and_then(|b| b.validate_at("/bearing"));
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
         let f_a = self.axial_load_n.map_or(0.0, NonNegative::get);
@@ -191,7 +217,6 @@ impl Validate for StaticCapacityInput {
                 ));
             }
         }
-        let deg = self.bearing.free_contact_angle_deg.unwrap_or(0.0);
         let factors = match (self.x0_factor, self.y0_factor) {
             (Some(x), Some(y)) => {
                 for (v, pointer) in [(x.get(), "/x0_factor"), (y.get(), "/y0_factor")] {
@@ -252,6 +277,74 @@ impl Validate for StaticCapacityInput {
                 rotating: self.rotating.unwrap_or(true),
                 operation: self.operation,
                 quiet_running: self.quiet_running,
+                roller_length_m: None,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+impl StaticCapacityInput {
+    /// A radial cylindrical roller bearing: P0 = F_r (X0 = 1, Y0 = 0, ISO 76 for α = 0), no
+    /// axial load.
+    fn validate_roller(self) -> Result<StaticCapacityCase, Vec<FieldError>> {
+        let bearing = parse_at::<RollerBearingSpec>(self.bearing, "/bearing")
+            .and_then(|b| b.validate_at("/bearing"));
+        let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
+        let f_r = self.radial_load_n.get();
+        if f_r > MAX_LOAD_N {
+            errors.push(FieldError::new(
+                "/radial_load_n",
+                format!("must be at most {MAX_LOAD_N:e} N, got {f_r}"),
+            ));
+        }
+        if f_r == 0.0 {
+            errors.push(FieldError::new(
+                "/radial_load_n",
+                "give a radial load: s0 = C0/P0 needs P0 = F_r > 0",
+            ));
+        }
+        if self.axial_load_n.is_some_and(|f| f.get() > 0.0) {
+            errors.push(FieldError::new(
+                "/axial_load_n",
+                "a cylindrical roller bearing (N, NU type) is rated for radial load only: give 0",
+            ));
+        }
+        for (v, pointer) in [
+            (self.x0_factor, "/x0_factor"),
+            (self.y0_factor, "/y0_factor"),
+        ] {
+            if v.is_some() {
+                errors.push(FieldError::new(
+                    pointer,
+                    "a radial cylindrical roller bearing has P0 = F_r (X0 = 1, Y0 = 0): omit the factors",
+                ));
+            }
+        }
+        if let Some(c0) = self.static_load_rating_n {
+            if c0.get() > 1e10 {
+                errors.push(FieldError::new(
+                    "/static_load_rating_n",
+                    format!("must be at most 1e10 N, got {}", c0.get()),
+                ));
+            }
+        }
+        match bearing {
+            Ok(b) if errors.is_empty() => Ok(StaticCapacityCase {
+                ball_diameter_m: b.roller_diameter_m,
+                pitch_diameter_m: b.pitch_diameter_m,
+                ball_count: b.roller_count,
+                contact_angle: 0.0,
+                conformity: (0.0, 0.0),
+                radial_load_n: f_r,
+                axial_load_n: 0.0,
+                x0: 1.0,
+                y0: 0.0,
+                catalogue_rating_n: self.static_load_rating_n.map(Positive::get),
+                rotating: self.rotating.unwrap_or(true),
+                operation: self.operation,
+                quiet_running: self.quiet_running,
+                roller_length_m: Some(b.length_m),
             }),
             _ => Err(errors),
         }
@@ -273,8 +366,10 @@ pub struct StaticCapacityOutput {
     pub static_rating_factor_f0: f64,
     /// Inner and outer groove conformities r/D the rating is evaluated at: ISO's 0.52 and 0.53,
     /// or the bearing's own where looser.
+    /// Absent for a roller bearing.
+    #[serde(skip_serializing_if = "Option::is_none")]
     #[schema(example = json!([0.52, 0.53]))]
-    pub rating_conformities: [f64; 2],
+    pub rating_conformities: Option<[f64; 2]>,
     /// Ball load Q₀ that brings the more stressed raceway contact to 4200 MPa, N.
     #[schema(example = 11600.0)]
     pub ball_load_at_rating_pressure_n: f64,
@@ -343,7 +438,16 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0.";
         };
         let z = case.ball_count as f64;
         let c0 = z * q0 * cos / STRIBECK_FACTOR;
-        let f0_n_m2 = q0 / (STRIBECK_FACTOR * d * d);
+        let roller = case.roller_length_m;
+        // Balls: f0 = Q₀/(5 D²); rollers: ISO's 44 = Q₀/(5 L D (1 − γ)), both in N/mm².
+        let f0_n_m2 = match roller {
+            None => q0 / (STRIBECK_FACTOR * d * d),
+            Some(l) => q0 / (STRIBECK_FACTOR * l * d * (1.0 - d * cos / case.pitch_diameter_m)),
+        };
+        let (limit_pa, pressure_exponent) = match roller {
+            None => (STATIC_RATING_PRESSURE_PA, 1.0 / 3.0),
+            Some(_) => (ROLLER_STATIC_LIMIT_PA, 0.5),
+        };
         let (f_r, f_a) = (case.radial_load_n, case.axial_load_n);
         let p0 = (case.x0 * f_r + case.y0 * f_a).max(f_r);
         if p0.is_nan() || p0 < MIN_EQUIVALENT_LOAD_N {
@@ -356,13 +460,20 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0.";
         }
         let rating = case.catalogue_rating_n.unwrap_or(c0);
         let s0 = rating / p0;
-        let minimum = guideline_minimum(case.rotating, case.operation, case.quiet_running);
+        let minimum = guideline_minimum(
+            roller.is_some(),
+            case.rotating,
+            case.operation,
+            case.quiet_running,
+        );
         warn_on(ctx, s0, minimum);
         Ok(StaticCapacityOutput {
             contact_angle_deg: case.contact_angle.to_degrees(),
             gamma: d * cos / case.pitch_diameter_m,
             static_rating_factor_f0: f0_n_m2 * 1e-6,
-            rating_conformities: [case.conformity.0, case.conformity.1],
+            rating_conformities: roller
+                .is_none()
+                .then_some([case.conformity.0, case.conformity.1]),
             ball_load_at_rating_pressure_n: q0,
             governing_raceway: governing,
             basic_static_load_rating_n: c0,
@@ -372,7 +483,7 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0.";
             equivalent_static_load_n: p0,
             static_safety_factor: s0,
             recommended_min_static_safety_factor: minimum,
-            max_contact_pressure_pa: STATIC_RATING_PRESSURE_PA * (p0 / rating).cbrt(),
+            max_contact_pressure_pa: limit_pa * (p0 / rating).powf(pressure_exponent),
         })
     }
 }
@@ -385,6 +496,9 @@ fn rating_ball_load(
     ctx: &Context,
 ) -> Result<f64, CalcError> {
     let d = case.ball_diameter_m;
+    if let Some(length) = case.roller_length_m {
+        return rating_roller_load(case, length, inner, ctx);
+    }
     let along = case.pitch_diameter_m / case.contact_angle.cos();
     let (rolling, groove) = if inner {
         (0.5 * (along - d), -case.conformity.0 * d)
@@ -432,23 +546,88 @@ fn rating_ball_load(
     Ok((STATIC_RATING_PRESSURE_PA / unit.max_pressure_pa).powi(3))
 }
 
-/// The guideline minimum s0 for ball bearings (SKF's table; see the module doc).
-fn guideline_minimum(rotating: bool, operation: StaticOperation, quiet: QuietRunning) -> f64 {
+/// Q₀ of a roller's line contact on one raceway (rating steel, effective length): the load at
+/// which the Hertz pressure is 4000 MPa, from the pressure at 1 N (p ∝ Q^½).
+fn rating_roller_load(
+    case: &StaticCapacityCase,
+    length: f64,
+    inner: bool,
+    ctx: &Context,
+) -> Result<f64, CalcError> {
+    let d = case.ball_diameter_m;
+    let race = if inner {
+        0.5 * (case.pitch_diameter_m - d)
+    } else {
+        -0.5 * (case.pitch_diameter_m + d)
+    };
+    let body = |r: f64| -> Result<BodySpec, CalcError> {
+        Ok(BodySpec {
+            radius_x_m: Some(Radius::try_from(r).map_err(CalcError::Internal)?),
+            radius_y_m: None,
+            elastic_modulus_pa: Positive::try_from(RATING_STEEL.0).map_err(CalcError::Internal)?,
+            poisson_ratio: PoissonRatio::try_from(RATING_STEEL.1).map_err(CalcError::Internal)?,
+        })
+    };
+    let input = HertzInput {
+        body1: body(0.5 * d)?,
+        body2: body(race)?,
+        load_n: Positive::try_from(1.0).map_err(CalcError::Internal)?,
+        line: Some(LineSpec {
+            length_m: Positive::try_from(length).map_err(CalcError::Internal)?,
+        }),
+        fidelity: FidelityRequest::default(),
+        closed_form: None,
+    };
+    let hertz_case = input.validate().map_err(|errors| {
+        CalcError::impossible(
+            "/bearing",
+            format!(
+                "a roller's rating contact is not a Hertz line contact: {}",
+                errors
+                    .into_iter()
+                    .map(|e| format!("{}: {}", e.pointer, e.message))
+                    .collect::<Vec<_>>()
+                    .join("; ")
+            ),
+        )
+    })?;
+    let mut step = ctx.child();
+    let unit = Hertz::run(hertz_case, &mut step)?;
+    Ok((ROLLER_STATIC_LIMIT_PA / unit.max_pressure_pa).powi(2))
+}
+
+/// The guideline minimum s0 (SKF's table; see the module doc): ball or roller bearings.
+fn guideline_minimum(
+    roller: bool,
+    rotating: bool,
+    operation: StaticOperation,
+    quiet: QuietRunning,
+) -> f64 {
     use QuietRunning as Q;
     use StaticOperation as O;
     if !rotating {
-        return match operation {
-            O::Smooth => 0.4,
-            O::Normal => 0.5,
-            O::Shock => 1.0,
+        return match (operation, roller) {
+            (O::Smooth, false) => 0.4,
+            (O::Normal, false) => 0.5,
+            (O::Shock, false) => 1.0,
+            (O::Smooth, true) => 0.8,
+            (O::Normal, true) => 1.0,
+            (O::Shock, true) => 2.0,
         };
     }
-    match (operation, quiet) {
-        (O::Shock, Q::High) => 2.0,
-        (O::Shock, _) => 1.5,
-        (_, Q::Unimportant) => 0.5,
-        (_, Q::Normal) => 1.0,
-        (_, Q::High) => 2.0,
+    match (operation, quiet, roller) {
+        (O::Shock, Q::Unimportant, false) | (O::Shock, Q::Normal, false) => 1.5,
+        (O::Shock, Q::High, false) => 2.0,
+        (_, Q::Unimportant, false) => 0.5,
+        (_, Q::Normal, false) => 1.0,
+        (_, Q::High, false) => 2.0,
+        (O::Shock, Q::Unimportant, true) => 2.5,
+        (O::Shock, Q::Normal, true) => 3.0,
+        (O::Shock, Q::High, true) => 4.0,
+        (_, Q::Unimportant, true) => 1.0,
+        (_, Q::Normal, true) => 1.5,
+        (O::Smooth, Q::High, true) => 3.0,
+        (O::Normal, Q::High, true) => 3.5,
     }
 }
 
@@ -723,6 +902,79 @@ mod tests {
                 }
                 other => panic!("{r}: {other:?}"),
             }
+        }
+    }
+
+    fn roller(d: f64, l: f64, dm: f64, z: u32) -> Value {
+        json!({"roller_diameter_m": d * 1e-3, "roller_effective_length_m": l * 1e-3,
+            "pitch_diameter_m": dm * 1e-3, "roller_count": z, "diametral_clearance_m": 2e-5,
+            "rollers": steel(), "rings": steel()})
+    }
+
+    /// A cylindrical roller bearing: at F_r = C0 the most loaded roller (5 C0/Z) presses the
+    /// inner raceway at 4000 MPa (the definition); the factor is ISO 76's 44 (verify: 44.2
+    /// unrounded); P0 = F_r; the roller guidelines.
+    #[test]
+    fn roller_static_rating() {
+        let v = ok::<StaticCapacity>(
+            &json!({"bearing": roller(10.0, 9.601, 65.0115, 14), "radial_load_n": 6000.0}),
+        );
+        let c0 = result_field(&v, "basic_static_load_rating_n");
+        assert_rel(
+            result_field(&v, "static_rating_factor_f0"),
+            44.0,
+            0.005,
+            "44",
+        );
+        let gamma = 10.0 / 65.0115;
+        assert_rel(
+            c0,
+            result_field(&v, "static_rating_factor_f0") * (1.0 - gamma) * 14.0 * 9.601 * 10.0,
+            1e-12,
+            "C0 = f0' (1 − γ) Z L D",
+        );
+        assert_eq!(v["result"]["governing_raceway"], "inner");
+        let hertz = ok::<Hertz>(&json!({
+            "body1": {"radius_x_m": 0.005, "elastic_modulus_pa": 2.07e11, "poisson_ratio": 0.3},
+            "body2": {"radius_x_m": 0.5 * (0.0650115 - 0.01), "elastic_modulus_pa": 2.07e11, "poisson_ratio": 0.3},
+            "line": {"length_m": 0.009601}, "load_n": 5.0 * c0 / 14.0}));
+        assert_rel(
+            result_field(&hertz, "max_pressure_pa"),
+            4.0e9,
+            1e-9,
+            "p at C0",
+        );
+        assert_eq!(result_field(&v, "equivalent_static_load_n"), 6000.0);
+        assert_rel(
+            result_field(&v, "max_contact_pressure_pa"),
+            4.0e9 * (6000.0 / c0).sqrt(),
+            1e-12,
+            "p ∝ Q^½",
+        );
+        assert_eq!(
+            result_field(&v, "recommended_min_static_safety_factor"),
+            1.5
+        );
+        assert!(v["result"].get("rating_conformities").is_none());
+        let refusals = [
+            (
+                json!({"bearing": roller(10.0, 10.0, 65.0, 14), "radial_load_n": 1.0, "axial_load_n": 1.0}),
+                "/axial_load_n",
+            ),
+            (
+                json!({"bearing": roller(10.0, 10.0, 65.0, 14), "radial_load_n": 1.0, "x0_factor": 1.0, "y0_factor": 0.0}),
+                "/x0_factor",
+            ),
+            (
+                json!({"bearing": roller(10.0, 10.0, 65.0, 14), "radial_load_n": 0.0}),
+                "/radial_load_n",
+            ),
+        ];
+        for (r, pointer) in refusals {
+            assert!(
+                invalid_pointers::<StaticCapacity>(&r).contains(&pointer.to_owned()),
+                "{r}"
+            );
         }
     }
 }
