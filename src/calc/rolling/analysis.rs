@@ -89,7 +89,7 @@ pub struct AnalysisInput {
     pub bore_diameter_m: Option<Positive>,
     /// How the bearing is lubricated, for the speed limit: `grease_or_bath` (d·n ≤ 300 000 mm·rpm)
     /// or `circulating_oil` (500 000); absent: both limits are judged.
-    pub lubrication_method: Option<LubricationMethod>,
+    pub lubrication_method: Option<AnalysisLubricationMethod>,
     /// Misalignment of the inner ring against the outer, rad (0 … 0.1), for the limit of
     /// Khonsari & Booser Table 14.8 (deep groove 12–16′) and Table 13.1 (angular contact 2′).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 0.1, example = 0.002)]
@@ -101,13 +101,13 @@ pub struct AnalysisInput {
     /// The raceway films' effects (`thermal` inlet heating, `starvation`, `mixed_lubrication`:
     /// `auto`, `on`, `off`), passed to `/v1/contacts/ehl-film` for both raceways.
     #[serde(default)]
-    pub film_effects: FilmEffects,
+    pub film_effects: AnalysisFilmEffects,
 }
 
 /// The films' effects the chain passes on (the EHL film room's own).
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct FilmEffects {
+pub struct AnalysisFilmEffects {
     #[serde(default)]
     pub thermal: Mode,
     #[serde(default)]
@@ -119,7 +119,7 @@ pub struct FilmEffects {
 /// Lubrication method for the speed limit (Khonsari & Booser Table 14.5).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
-pub enum LubricationMethod {
+pub enum AnalysisLubricationMethod {
     GreaseOrBath,
     CirculatingOil,
 }
@@ -159,13 +159,13 @@ pub struct AnalysisCase {
     roughness: Option<RaceRoughness>,
     kinematic_viscosity_mm2_s: f64,
     bore_m: Option<f64>,
-    lubrication_method: Option<LubricationMethod>,
+    lubrication_method: Option<AnalysisLubricationMethod>,
     misalignment_rad: Option<f64>,
     angular_contact: bool,
     /// A cylindrical roller bearing: line contacts, roller life exponent, roller limits.
     roller: bool,
     meniscus_m: Option<f64>,
-    film_effects: FilmEffects,
+    film_effects: AnalysisFilmEffects,
 }
 
 impl Validate for AnalysisInput {
@@ -375,8 +375,8 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
         "d_m·n (no bore given: the pitch diameter stands in, a conservative d·n)"
     };
     let (limit, method) = match case.lubrication_method {
-        Some(LubricationMethod::CirculatingOil) => (DN_CIRCULATING_OIL, "circulating oil"),
-        Some(LubricationMethod::GreaseOrBath) | None => {
+        Some(AnalysisLubricationMethod::CirculatingOil) => (DN_CIRCULATING_OIL, "circulating oil"),
+        Some(AnalysisLubricationMethod::GreaseOrBath) | None => {
             (DN_GREASE_OR_BATH, "grease or an oil bath")
         }
     };

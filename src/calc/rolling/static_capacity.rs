@@ -87,7 +87,7 @@ const ANGULAR_Y0: [(f64, f64); 7] = [
 /// How the bearing runs while the static load acts (for the guideline s0).
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
-pub enum StaticOperation {
+pub enum StaticCapacityOperation {
     /// Smooth, vibration-free.
     Smooth,
     /// Normal operation (default).
@@ -100,7 +100,7 @@ pub enum StaticOperation {
 /// Demands on quiet, vibration-free running.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, Serialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
-pub enum QuietRunning {
+pub enum StaticCapacityQuietRunning {
     Unimportant,
     #[default]
     Normal,
@@ -137,10 +137,10 @@ pub struct StaticCapacityInput {
     pub rotating: Option<bool>,
     /// `smooth`, `normal` (default) or `shock`.
     #[serde(default)]
-    pub operation: StaticOperation,
+    pub operation: StaticCapacityOperation,
     /// Demands on quiet running: `unimportant`, `normal` (default) or `high` (rotating bearings).
     #[serde(default)]
-    pub quiet_running: QuietRunning,
+    pub quiet_running: StaticCapacityQuietRunning,
 }
 
 /// The validated case.
@@ -159,8 +159,8 @@ pub struct StaticCapacityCase {
     y0: f64,
     catalogue_rating_n: Option<f64>,
     rotating: bool,
-    operation: StaticOperation,
-    quiet_running: QuietRunning,
+    operation: StaticCapacityOperation,
+    quiet_running: StaticCapacityQuietRunning,
     /// A cylindrical roller bearing: the effective roller length, m (ball_* then describe the
     /// rollers).
     roller_length_m: Option<f64>,
@@ -601,11 +601,11 @@ fn rating_roller_load(
 fn guideline_minimum(
     roller: bool,
     rotating: bool,
-    operation: StaticOperation,
-    quiet: QuietRunning,
+    operation: StaticCapacityOperation,
+    quiet: StaticCapacityQuietRunning,
 ) -> f64 {
-    use QuietRunning as Q;
-    use StaticOperation as O;
+    use StaticCapacityOperation as O;
+    use StaticCapacityQuietRunning as Q;
     if !rotating {
         return match (operation, roller) {
             (O::Smooth, false) => 0.4,
