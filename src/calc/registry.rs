@@ -30,6 +30,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::kinematics::Kinematics>(),
     Entry::of::<rolling::life::Life>(),
     Entry::of::<rolling::load_distribution::LoadDistribution>(),
+    Entry::of::<rolling::static_capacity::StaticCapacity>(),
     Entry::of::<rolling::analysis::Analysis>(),
     Entry::of::<rolling::friction::Friction>(),
     Entry::of::<rolling::grease_life::GreaseLife>(),

@@ -48,8 +48,11 @@ mod tests {
                     })
                     .sum();
                 let got = k[i * (faces.len() - 1) + j];
+                // The midpoint rule converges slowly across the logarithm's singularity.
+                let inside = faces[j] < x && x < faces[j + 1];
+                let tol = if inside { 1e-5 } else { 1e-8 };
                 assert!(
-                    (got - sum).abs() < 1e-6,
+                    (got - sum).abs() < tol,
                     "K[{i}][{j}] = {got}, quadrature {sum}"
                 );
             }

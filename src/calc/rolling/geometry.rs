@@ -48,6 +48,11 @@ pub struct MaterialSpec {
     /// Poisson's ratio ν, dimensionless, −1 < ν ≤ 0.5 (steel 0.3).
     #[schema(value_type = f64, exclusive_minimum = -1.0, maximum = 0.5, example = 0.3)]
     pub poisson_ratio: PoissonRatio,
+    /// Density ρ, kg/m³, 1 … 1e5 (bearing steel 7800, silicon nitride 3200); the balls' sets
+    /// their centrifugal force and gyroscopic moment at speed. Absent: bearing steel is assumed
+    /// (with a warning) for a steel-like modulus, else those effects are not applicable.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e5, example = 7800.0)]
+    pub density_kg_m3: Option<Positive>,
 }
 
 /// A single-row ball bearing: deep-groove (no `free_contact_angle_deg`: the contact angle
@@ -161,6 +166,16 @@ impl BallBearingSpec {
                 ));
             }
         }
+        for (material, field) in [(self.ball, "ball"), (self.rings, "rings")] {
+            if let Some(rho) = material.density_kg_m3 {
+                if rho.get() > 1e5 {
+                    errors.push(FieldError::new(
+                        format!("{at}/{field}/density_kg_m3"),
+                        format!("must be at most 1e5 kg/m³, got {}", rho.get()),
+                    ));
+                }
+            }
+        }
         let p_d = self.diametral_clearance_m;
         if !p_d.is_finite() {
             errors.push(FieldError::new(
@@ -259,6 +274,11 @@ impl BallBearing {
         ((bd - r0) * (bd + r0)).max(0.0).sqrt()
     }
 
+    /// The balls' material.
+    pub fn ball_material(&self) -> MaterialSpec {
+        self.ball
+    }
+
     /// End play 2a₀, m: the axial travel of one ring against the other, unloaded (RB-9).
     pub fn end_play_m(&self) -> f64 {
         2.0 * self.axial_centre_offset_m()
@@ -334,6 +354,21 @@ impl BallBearing {
                 )
             })?;
         Hertz::run(case, ctx)
+    }
+
+    /// Load–deflection constant K of one ball on `race` at contact angle α (rad), N/m^1.5:
+    /// Q = K δ^{3/2}, from the exact Hertz approach at 1 N.
+    pub fn raceway_stiffness(
+        &self,
+        race: Race,
+        contact_angle: f64,
+        ctx: &mut Context,
+    ) -> Result<f64, CalcError> {
+        let contact = self.raceway_contact(race, contact_angle, 1.0, ctx)?;
+        let approach = contact
+            .approach_m
+            .ok_or_else(|| CalcError::Internal("a point contact without an approach".to_owned()))?;
+        Ok(approach.powf(-1.5))
     }
 
     /// Load–deflection constant K_n of one ball between both raceways at contact angle α (rad),

@@ -1,7 +1,9 @@
 //! Rolling-element bearings: the kinematics of balls and rollers between two rings (cage and
-//! spin speeds, defect frequencies, entrainment speeds for EHL) and the fatigue life of a
-//! bearing (basic rating life L10, reliability factor a1, ISO 281's life modification factor
-//! a_ISO and the modified life).
+//! spin speeds, defect frequencies, entrainment speeds for EHL), the internal load distribution
+//! of ball bearings (with tilting moment and the centrifugal and gyroscopic ball loads at
+//! speed) and of cylindrical roller bearings, the static capacity (ISO 76 C0, P0, s0), and the
+//! fatigue life of a bearing (basic rating life L10, reliability factor a1, ISO 281's life
+//! modification factor a_ISO and the modified life).
 //!
 //! Sources: Hamrock's handbook chapter 21 (kinematics, eqs 21.93–21.98; fatigue life and the
 //! Weibull reliability relation), Khonsari & Booser chapters 13–14 (RB-3…RB-7, RI-7, Ex 13.1–13.4,
@@ -9,9 +11,12 @@
 //! the texts; each constant cites where it was checked).
 
 pub mod analysis;
+mod ball_equilibrium;
 pub mod friction;
 pub mod geometry;
 pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
+pub mod roller;
+pub mod static_capacity;

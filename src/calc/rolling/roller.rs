@@ -1,0 +1,409 @@
+//! Cylindrical roller bearings in the load distribution room: the `bearing` object's roller
+//! variant, its validation, and the radial equilibrium of the inner ring on line contacts.
+//!
+//! Model (Khonsari & Booser §14.2 RI-4 and §14.4 RI-6; Hamrock §21.3.6):
+//! - Straight (uncrowned) rollers of effective length L (the length less the corner radii or
+//!   undercuts, Hamrock A.1.8), each between two line contacts. Palmgren's load–deflection law
+//!   per contact, δ = 3.84·10⁻⁵ Q^0.9/L^0.8 (mm, N, mm; steel on steel, E′ = 219 000 N/mm²,
+//!   other materials by scaling Q with E′_steel/E′_pair, Khonsari RI-4), is independent of the
+//!   raceway curvature, so both contacts in series give Q = K_n δ^{10/9} with δ the total
+//!   approach and K_n = (2c)^{−10/9}, c the law's constant (Khonsari's n = 1/0.9 for rollers;
+//!   Hamrock's linear K₁ law is the cruder j = 1).
+//! - Rigid rings, radial load only: roller j at ψ_j = 2πj/Z (ψ = 0 on the load line) is
+//!   compressed by δ_j = δ_r cos ψ_j − P_d/2 (Hamrock eq. 21.105), loaded where positive;
+//!   Σ Q_j cos ψ_j = F_r, solved for δ_r by Brent's method (monotone). Zero clearance gives
+//!   Stribeck's roller constant Z F_r/Q_max → 4.08 (Khonsari T16: 4.077 for 8, 4.088 for 10
+//!   rollers).
+//! - Crowned rollers (`profile: {"crown_radius_m": R}`; Hamrock A.1.8: r_ay/D ≈ 10² for
+//!   cylindrical rollers) are sliced into 40 laminae of width w = L/40 across the length; at
+//!   lamina k, y_k from the roller's middle, the crown drop g_k = y_k²/(2R) lowers the approach
+//!   at each of the two contacts, and the lamina carries its share of Palmgren's law:
+//!   Q_k = (w/L) K_n (δ − 2g_k)₊^{10/9}, which sums back to the straight roller's Q = K_n δ^{10/9}
+//!   when R → ∞. Light loads touch only the middle laminae (the point-contact end of the range).
+//! - A cylindrical roller bearing of the N/NU kind carries no axial load and this model no
+//!   tilting moment (no edge loading, no misalignment along the rollers).
+//! - The raceway contacts of the most loaded roller are the Hertz room's line contacts (roller
+//!   radius D/2 against (d_m − D)/2 convex inside and −(d_m + D)/2 concave outside): maximum
+//!   pressure, half-width b (reported as the semi-minor axis; the semi-major axis is L/2) and
+//!   Hamrock's approach with its logarithms (eq. 21.51).
+
+use serde::Deserialize;
+use utoipa::ToSchema;
+
+use super::geometry::MaterialSpec;
+use crate::calc::contact::hertz::{
+    BodySpec, Hertz, HertzInput, HertzOutput, LineSpec, PoissonRatio, Radius,
+};
+use crate::calc::quantity::Positive;
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::numerics::roots::{brent, RootError, Stopping};
+
+/// Largest diameter or length accepted, m.
+const MAX_SIZE_M: f64 = 100.0;
+const ROLLER_COUNT: (u32, u32) = (3, 1000);
+/// Largest interference −P_d/2 accepted, as a fraction of the roller diameter.
+const MAX_INTERFERENCE: f64 = 0.01;
+/// Palmgren's constant, mm per N^0.9 mm^−0.8, and the steel E′ it holds for, Pa (Khonsari RI-4).
+const PALMGREN_MM: f64 = 3.84e-5;
+const PALMGREN_STEEL_E_PA: f64 = 2.19e11;
+const TOLERANCE: f64 = 1e-9;
+const MAX_BRENT_ITERATIONS: u32 = 200;
+/// ISO 76's contact pressure at C0 for roller bearings, Pa.
+pub const ROLLER_STATIC_LIMIT_PA: f64 = 4.0e9;
+
+/// A single-row cylindrical roller bearing (N, NU type) with straight rollers.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RollerBearingSpec {
+    /// Roller diameter D, m (> 0, at most 100, less than the pitch diameter).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.01)]
+    pub roller_diameter_m: Positive,
+    /// Effective roller length L, m: the length in contact, less corner radii or undercuts
+    /// (> 0, at most 100).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.009601)]
+    pub roller_effective_length_m: Positive,
+    /// Pitch diameter d_m = (d_i + d_o)/2 of the raceway diameters, m.
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.0650115)]
+    pub pitch_diameter_m: Positive,
+    /// Number of rollers Z, 3 … 1000; they must fit: D < d_m sin(π/Z).
+    #[schema(minimum = 3, maximum = 1000, example = 14)]
+    pub roller_count: u32,
+    /// Diametral clearance P_d = d_o − d_i − 2D, m (negative: preload, at most 1 % of D per
+    /// roller; positive at most D).
+    #[schema(minimum = -1.0, maximum = 1.0, example = 4.1e-5)]
+    pub diametral_clearance_m: f64,
+    /// The rollers' material.
+    pub rollers: MaterialSpec,
+    /// The rings' material.
+    pub rings: MaterialSpec,
+    /// The rollers' profile; absent: straight (uncrowned).
+    pub profile: Option<RollerProfile>,
+}
+
+/// A crowned roller profile: the crown's radius across the roller, along its axis.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct RollerProfile {
+    /// Crown radius R along the roller axis, m (≥ the effective length, at most 1e4 m; about
+    /// 100 D for cylindrical rollers, Hamrock A.1.8).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e4, example = 1.0)]
+    pub crown_radius_m: Positive,
+}
+
+/// Laminae of a crowned roller.
+const LAMINAE: usize = 40;
+
+/// A validated roller bearing.
+#[derive(Debug, Clone, Copy)]
+pub struct RollerBearing {
+    pub roller_diameter_m: f64,
+    pub length_m: f64,
+    pub pitch_diameter_m: f64,
+    pub roller_count: usize,
+    pub clearance_m: f64,
+    /// Crown radius, m (None: straight).
+    pub crown_radius_m: Option<f64>,
+    rollers: MaterialSpec,
+    rings: MaterialSpec,
+}
+
+impl RollerBearingSpec {
+    pub fn validate_at(self, at: &str) -> Result<RollerBearing, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let (d, l, dm) = (
+            self.roller_diameter_m.get(),
+            self.roller_effective_length_m.get(),
+            self.pitch_diameter_m.get(),
+        );
+        for (v, field) in [
+            (d, "roller_diameter_m"),
+            (l, "roller_effective_length_m"),
+            (dm, "pitch_diameter_m"),
+        ] {
+            if v > MAX_SIZE_M {
+                errors.push(FieldError::new(
+                    format!("{at}/{field}"),
+                    format!("must be at most {MAX_SIZE_M} m, got {v}"),
+                ));
+            }
+        }
+        let z = self.roller_count;
+        if !(ROLLER_COUNT.0..=ROLLER_COUNT.1).contains(&z) {
+            errors.push(FieldError::new(
+                format!("{at}/roller_count"),
+                format!(
+                    "must be within [{}, {}], got {z}",
+                    ROLLER_COUNT.0, ROLLER_COUNT.1
+                ),
+            ));
+        } else if d >= dm * (std::f64::consts::PI / z as f64).sin() {
+            errors.push(FieldError::new(
+                format!("{at}/roller_count"),
+                format!(
+                    "{z} rollers of diameter {d} m do not fit on a pitch circle of {dm} m: adjacent rollers overlap unless D < d_m sin(π/Z) = {:.6e} m",
+                    dm * (std::f64::consts::PI / z as f64).sin()
+                ),
+            ));
+        }
+        let p_d = self.diametral_clearance_m;
+        if !(p_d.is_finite() && -2.0 * MAX_INTERFERENCE * d <= p_d && p_d <= d) {
+            errors.push(FieldError::new(
+                format!("{at}/diametral_clearance_m"),
+                format!(
+                    "must be a finite clearance within [−{} D, D] = [{:.4e}, {d:.4e}] m (a preload beyond 1 % of D per roller is outside Palmgren's law), got {p_d}",
+                    2.0 * MAX_INTERFERENCE,
+                    -2.0 * MAX_INTERFERENCE * d
+                ),
+            ));
+        }
+        for (m, field) in [(self.rollers, "rollers"), (self.rings, "rings")] {
+            let e = m.elastic_modulus_pa.get();
+            if e > 1e13 {
+                errors.push(FieldError::new(
+                    format!("{at}/{field}/elastic_modulus_pa"),
+                    format!("must be at most 1e13 Pa, got {e}"),
+                ));
+            }
+            if m.density_kg_m3.is_some_and(|r| r.get() > 1e5) {
+                errors.push(FieldError::new(
+                    format!("{at}/{field}/density_kg_m3"),
+                    "must be at most 1e5 kg/m³",
+                ));
+            }
+        }
+        if let Some(p) = self.profile {
+            let r = p.crown_radius_m.get();
+            if !(l..=1e4).contains(&r) {
+                errors.push(FieldError::new(
+                    format!("{at}/profile/crown_radius_m"),
+                    format!("must be within [L, 1e4] m = [{l:.4e}, 1e4] m (a crown sharper than the roller's length is not a cylindrical roller), got {r}"),
+                ));
+            }
+        }
+        if errors.is_empty() {
+            Ok(RollerBearing {
+                roller_diameter_m: d,
+                length_m: l,
+                pitch_diameter_m: dm,
+                roller_count: z as usize,
+                clearance_m: p_d,
+                crown_radius_m: self.profile.map(|p| p.crown_radius_m.get()),
+                rollers: self.rollers,
+                rings: self.rings,
+            })
+        } else {
+            Err(errors)
+        }
+    }
+}
+
+/// The validated roller case.
+#[derive(Debug, Clone, Copy)]
+pub struct RollerCase {
+    pub bearing: RollerBearing,
+    pub radial_load_n: f64,
+}
+
+/// The roller equilibrium.
+pub struct RollerEquilibrium {
+    pub loads: Vec<f64>,
+    /// The most loaded roller's total approach δ, m.
+    pub max_approach_m: f64,
+    pub radial_displacement_m: f64,
+    pub stiffness: f64,
+    pub report: SolverReport,
+}
+
+impl RollerBearing {
+    /// E′ of the pair, Pa (Hamrock: 2/E′ = Σ (1 − ν²)/E).
+    fn effective_modulus(&self) -> f64 {
+        let c = |m: MaterialSpec| {
+            let nu = m.poisson_ratio.get();
+            (1.0 - nu * nu) / m.elastic_modulus_pa.get()
+        };
+        2.0 / (c(self.rollers) + c(self.rings))
+    }
+
+    /// Palmgren's per-contact constant c in SI: δ = c Q^0.9 (m, N).
+    fn palmgren(&self) -> f64 {
+        let l_mm = self.length_m * 1e3;
+        1e-3 * PALMGREN_MM * (PALMGREN_STEEL_E_PA / self.effective_modulus()).powf(0.9)
+            / l_mm.powf(0.8)
+    }
+
+    /// K_n of a roller between both raceways, N/m^(10/9): Q = K_n δ^{10/9}.
+    pub fn contact_stiffness(&self) -> f64 {
+        (2.0 * self.palmgren()).powf(-10.0 / 9.0)
+    }
+
+    /// The laminae: (offset from the middle y_k, crown drop g_k), m; one lamina of drop 0 for a
+    /// straight roller.
+    pub fn laminae(&self) -> Vec<(f64, f64)> {
+        match self.crown_radius_m {
+            None => vec![(0.0, 0.0)],
+            Some(r) => (0..LAMINAE)
+                .map(|k| {
+                    let y = ((k as f64 + 0.5) / LAMINAE as f64 - 0.5) * self.length_m;
+                    (y, y * y / (2.0 * r))
+                })
+                .collect(),
+        }
+    }
+
+    /// A roller's load at the total approach δ (both contacts), N, and its laminae's loads.
+    pub fn roller_load(&self, delta: f64, laminae: &[(f64, f64)]) -> (f64, Vec<f64>) {
+        let k = self.contact_stiffness() / laminae.len() as f64;
+        let loads: Vec<f64> = laminae
+            .iter()
+            .map(|&(_, g)| {
+                let d = delta - 2.0 * g;
+                if d > 0.0 {
+                    k * d.powf(10.0 / 9.0)
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        (loads.iter().sum(), loads)
+    }
+
+    /// The Hertz line contact of a roller on the inner or outer raceway under `load_n`.
+    pub fn raceway_contact(
+        &self,
+        inner: bool,
+        load_n: f64,
+        length_m: f64,
+        ctx: &mut Context,
+    ) -> Result<HertzOutput, CalcError> {
+        let d = self.roller_diameter_m;
+        let race = if inner {
+            0.5 * (self.pitch_diameter_m - d)
+        } else {
+            -0.5 * (self.pitch_diameter_m + d)
+        };
+        let body = |r: f64, m: MaterialSpec| -> Result<BodySpec, CalcError> {
+            Ok(BodySpec {
+                radius_x_m: Some(Radius::try_from(r).map_err(CalcError::Internal)?),
+                radius_y_m: None,
+                elastic_modulus_pa: m.elastic_modulus_pa,
+                poisson_ratio: PoissonRatio::try_from(m.poisson_ratio.get())
+                    .map_err(CalcError::Internal)?,
+            })
+        };
+        let input = HertzInput {
+            body1: body(0.5 * d, self.rollers)?,
+            body2: body(race, self.rings)?,
+            load_n: Positive::try_from(load_n).map_err(CalcError::Internal)?,
+            line: Some(LineSpec {
+                length_m: Positive::try_from(length_m).map_err(CalcError::Internal)?,
+            }),
+            fidelity: FidelityRequest::default(),
+            closed_form: None,
+        };
+        let case = input.validate().map_err(|errors| {
+            CalcError::impossible(
+                "/bearing",
+                format!(
+                    "a roller's raceway contact is not a Hertz line contact: {}",
+                    errors
+                        .into_iter()
+                        .map(|e| format!("{}: {}", e.pointer, e.message))
+                        .collect::<Vec<_>>()
+                        .join("; ")
+                ),
+            )
+        })?;
+        Hertz::run(case, ctx)
+    }
+}
+
+/// The radial equilibrium: Brent on δ_r (monotone force), or the preloaded bearing at rest.
+pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium, CalcError> {
+    let b = &case.bearing;
+    let z = b.roller_count;
+    let k = b.contact_stiffness();
+    let half = 0.5 * b.clearance_m;
+    // The crown drop at the roller's ends: the approach a crowned roller needs to touch all along.
+    let crown = b.laminae().iter().map(|l| 2.0 * l.1).fold(0.0, f64::max);
+    let cosines: Vec<f64> = (0..z)
+        .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).cos())
+        .collect();
+    let laminae = b.laminae();
+    let loads = |d_r: f64| -> Vec<f64> {
+        cosines
+            .iter()
+            .map(|&c| b.roller_load(d_r * c - half, &laminae).0)
+            .collect()
+    };
+    let force = |d_r: f64| -> f64 {
+        loads(d_r)
+            .iter()
+            .zip(&cosines)
+            .map(|(q, c)| q * c)
+            .sum::<f64>()
+            - case.radial_load_n
+    };
+    let preload = z as f64 * b.roller_load(-half, &laminae).0;
+    let scale = case.radial_load_n.max(preload);
+    let report = |iterations: u32, residual: f64| SolverReport {
+        method: "brent_roller_load_balance".to_owned(),
+        fidelity: Level::Standard,
+        grid: None,
+        iterations,
+        residual: Some(residual),
+        error_estimate: None,
+        elapsed_ms: 0.0,
+    };
+    if case.radial_load_n == 0.0 {
+        return Ok(RollerEquilibrium {
+            loads: loads(0.0),
+            max_approach_m: -half,
+            radial_displacement_m: 0.0,
+            stiffness: k,
+            report: report(0, 0.0),
+        });
+    }
+    // From the concentric position, past the clearance, doubled until the rollers carry F_r.
+    let delta_scale = (case.radial_load_n / (z as f64 * k)).powf(0.9);
+    // (At least a millionth of the roller diameter: a denormal load's δ scale underflows.)
+    let mut hi = (half.abs() + delta_scale + crown).max(1e-6 * b.roller_diameter_m);
+    let mut grown = 0;
+    while force(hi) <= 0.0 {
+        hi *= 2.0;
+        grown += 1;
+        if grown > 200 || !hi.is_finite() {
+            return Err(CalcError::Internal(
+                "no bracket for the roller equilibrium".to_owned(),
+            ));
+        }
+    }
+    ctx.check_deadline()?;
+    let stop = Stopping {
+        x_tolerance: 0.0,
+        max_iterations: MAX_BRENT_ITERATIONS,
+    };
+    let root = brent(force, 0.0, hi, stop).map_err(|e| match e {
+        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
+            method: "brent_roller_load_balance",
+            iterations,
+            residual: width,
+        },
+        other => CalcError::Internal(format!("roller load balance bracket: {other:?}")),
+    })?;
+    let residual = force(root.x).abs() / scale;
+    if residual > TOLERANCE {
+        return Err(CalcError::NotConverged {
+            method: "brent_roller_load_balance",
+            iterations: root.iterations,
+            residual,
+        });
+    }
+    Ok(RollerEquilibrium {
+        loads: loads(root.x),
+        max_approach_m: root.x - half,
+        radial_displacement_m: root.x,
+        stiffness: k,
+        report: report(root.iterations, residual),
+    })
+}
