@@ -71,6 +71,9 @@ const REFERENCE_CONFORMITY: (f64, f64) = (0.52, 0.53);
 const RATING_STEEL: (f64, f64) = (2.07e11, 0.3);
 /// Largest load accepted, N.
 const MAX_LOAD_N: f64 = 1e9;
+/// Smallest non-zero load and rating accepted, N: below a micronewton s0 = C0/P0 leaves the
+/// floating-point range for no engineering purpose.
+const MIN_LOAD_N: f64 = 1e-6;
 /// Smallest static equivalent load with a safety factor, N (keeps s0 finite for denormal loads).
 const MIN_EQUIVALENT_LOAD_N: f64 = 1e-6;
 /// Single-row angular-contact ball bearings: (nominal angle °, Y0), X0 = 0.5.
@@ -116,21 +119,22 @@ pub struct StaticCapacityInput {
     /// cylindrical roller bearing (rated on its effective length, crown ignored).
     #[schema(value_type = LoadDistributionBearing)]
     pub bearing: Value,
-    /// Static radial load F_r, N, 0 … 1e9 (the largest that acts, shocks included).
+    /// Static radial load F_r, N: 0 or 1e-6 … 1e9 (the largest that acts, shocks included).
     #[schema(value_type = f64, minimum = 0.0, maximum = 1e9, example = 3000.0)]
     pub radial_load_n: NonNegative,
-    /// Static axial load F_a, N, 0 … 1e9 (default 0).
+    /// Static axial load F_a, N: 0 or 1e-6 … 1e9 (default 0).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e9, example = 1000.0)]
     pub axial_load_n: Option<NonNegative>,
-    /// Radial factor X0 of P0 = X0 F_r + Y0 F_a, dimensionless, 0 … 10 (with `y0_factor`;
+    /// Radial factor X0 of P0 = X0 F_r + Y0 F_a, dimensionless, 0 or 1e-6 … 10 (with `y0_factor`;
     /// default by ISO 76 for the bearing's nominal angle).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 10.0, example = 0.6)]
     pub x0_factor: Option<NonNegative>,
-    /// Axial factor Y0, dimensionless, 0 … 10 (with `x0_factor`).
+    /// Axial factor Y0, dimensionless, 0 or 1e-6 … 10 (with `x0_factor`).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 10.0, example = 0.5)]
     pub y0_factor: Option<NonNegative>,
-    /// A catalogue C0r, N, to use for s0 instead of the computed rating (both are reported).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e10, example = 23200.0)]
+    /// A catalogue C0r, N (1e-6 … 1e10), to use for s0 instead of the computed rating (both are
+    /// reported).
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e10, example = 23200.0)]
     pub static_load_rating_n: Option<Positive>,
     /// Whether the bearing rotates under the load (default true).
     #[schema(example = true)]
@@ -196,10 +200,10 @@ impl Validate for StaticCapacityInput {
         let f_r = self.radial_load_n.get();
         let f_a = self.axial_load_n.map_or(0.0, NonNegative::get);
         for (f, pointer) in [(f_r, "/radial_load_n"), (f_a, "/axial_load_n")] {
-            if f > MAX_LOAD_N {
+            if f > MAX_LOAD_N || (f > 0.0 && f < MIN_LOAD_N) {
                 errors.push(FieldError::new(
                     pointer,
-                    format!("must be at most {MAX_LOAD_N:e} N, got {f}"),
+                    format!("must be 0 or within [{MIN_LOAD_N:e}, {MAX_LOAD_N:e}] N, got {f}"),
                 ));
             }
         }
@@ -210,20 +214,20 @@ impl Validate for StaticCapacityInput {
             ));
         }
         if let Some(c0) = self.static_load_rating_n {
-            if c0.get() > 1e10 {
+            if !(MIN_LOAD_N..=1e10).contains(&c0.get()) {
                 errors.push(FieldError::new(
                     "/static_load_rating_n",
-                    format!("must be at most 1e10 N, got {}", c0.get()),
+                    format!("must be within [{MIN_LOAD_N:e}, 1e10] N, got {}", c0.get()),
                 ));
             }
         }
         let factors = match (self.x0_factor, self.y0_factor) {
             (Some(x), Some(y)) => {
                 for (v, pointer) in [(x.get(), "/x0_factor"), (y.get(), "/y0_factor")] {
-                    if v > 10.0 {
+                    if v > 10.0 || (v > 0.0 && v < 1e-6) {
                         errors.push(FieldError::new(
                             pointer,
-                            format!("must be within [0, 10], got {v}"),
+                            format!("must be 0 or within [1e-6, 10], got {v}"),
                         ));
                     }
                 }
@@ -292,10 +296,10 @@ impl StaticCapacityInput {
             .and_then(|b| b.validate_at("/bearing"));
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
-        if f_r > MAX_LOAD_N {
+        if f_r > MAX_LOAD_N || (f_r > 0.0 && f_r < MIN_LOAD_N) {
             errors.push(FieldError::new(
                 "/radial_load_n",
-                format!("must be at most {MAX_LOAD_N:e} N, got {f_r}"),
+                format!("must be within [{MIN_LOAD_N:e}, {MAX_LOAD_N:e}] N, got {f_r}"),
             ));
         }
         if f_r == 0.0 {
@@ -322,10 +326,10 @@ impl StaticCapacityInput {
             }
         }
         if let Some(c0) = self.static_load_rating_n {
-            if c0.get() > 1e10 {
+            if !(MIN_LOAD_N..=1e10).contains(&c0.get()) {
                 errors.push(FieldError::new(
                     "/static_load_rating_n",
-                    format!("must be at most 1e10 N, got {}", c0.get()),
+                    format!("must be within [{MIN_LOAD_N:e}, 1e10] N, got {}", c0.get()),
                 ));
             }
         }
@@ -893,16 +897,26 @@ mod tests {
         let mut zero_y = request(b.clone(), 0.0, 100.0);
         zero_y["x0_factor"] = json!(1.0);
         zero_y["y0_factor"] = json!(0.0);
-        for (r, pointer) in [
-            (request(b, 5e-324, 0.0), "/radial_load_n"),
-            (zero_y, "/axial_load_n"),
-        ] {
-            match crate::calc::testing::post::<StaticCapacity>(&r) {
-                Err(crate::calc::Failure::Calc(CalcError::Impossible { pointer: p, .. })) => {
-                    assert_eq!(p, pointer)
-                }
-                other => panic!("{r}: {other:?}"),
+        // A denormal load or rating is refused with the field's range; a zero P0 by physics.
+        assert_eq!(
+            crate::calc::testing::invalid_pointers::<StaticCapacity>(&request(
+                b.clone(),
+                5e-324,
+                0.0
+            )),
+            ["/radial_load_n"]
+        );
+        let mut tiny_rating = request(b, 3000.0, 0.0);
+        tiny_rating["static_load_rating_n"] = json!(5e-324);
+        assert_eq!(
+            crate::calc::testing::invalid_pointers::<StaticCapacity>(&tiny_rating),
+            ["/static_load_rating_n"]
+        );
+        match crate::calc::testing::post::<StaticCapacity>(&zero_y) {
+            Err(crate::calc::Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+                assert_eq!(pointer, "/axial_load_n")
             }
+            other => panic!("{zero_y}: {other:?}"),
         }
     }
 
