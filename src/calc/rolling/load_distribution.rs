@@ -42,7 +42,7 @@ use crate::calc::quantity::NonNegative;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{Level, SolverReport};
-use crate::numerics::roots::{brent, RootError, Stopping};
+use crate::numerics::roots::{brent, Root, RootError, Stopping};
 
 pub struct LoadDistribution;
 
@@ -1222,30 +1222,8 @@ impl Rings {
             return Ok((at(0.0), report("brent_ball_load_balance", 0, at_rest)));
         }
         // Past the clearance (or the end play), then doubled until the balls carry the load.
-        let mut hi = self.a0 + self.bd + self.delta_scale;
-        let mut grown = 0;
-        while force(hi) <= 0.0 {
-            hi *= 2.0;
-            grown += 1;
-            if grown > 200 || !hi.is_finite() {
-                return Err(CalcError::Internal(
-                    "no bracket for the one-dimensional equilibrium".to_owned(),
-                ));
-            }
-        }
-        ctx.check_deadline()?;
-        let stop = Stopping {
-            x_tolerance: 0.0,
-            max_iterations: MAX_BRENT_ITERATIONS,
-        };
-        let root = brent(force, 0.0, hi, stop).map_err(|e| match e {
-            RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-                method: "brent_ball_load_balance",
-                iterations,
-                residual: width,
-            },
-            other => CalcError::Internal(format!("load balance bracket: {other:?}")),
-        })?;
+        let hi = self.a0 + self.bd + self.delta_scale;
+        let root = load_balance_root(force, hi, "brent_ball_load_balance", ctx)?;
         let u = at(root.x);
         let residual = self.residual(self.local(u).gradient);
         if residual > TOLERANCE {
@@ -1431,6 +1409,38 @@ fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
         error_estimate: None,
         elapsed_ms: 0.0,
     }
+}
+
+/// The one-dimensional load balance: `force` is negative (or zero) at 0 and turns positive as the
+/// ring is pushed in; `hi` is doubled (at most 200 times) until it does, then Brent's method
+/// finds the root. `method` names the solve in a not-converged answer.
+pub(super) fn load_balance_root(
+    mut force: impl FnMut(f64) -> f64,
+    mut hi: f64,
+    method: &'static str,
+    ctx: &Context,
+) -> Result<Root, CalcError> {
+    let mut grown = 0;
+    while force(hi) <= 0.0 {
+        hi *= 2.0;
+        grown += 1;
+        if grown > 200 || !hi.is_finite() {
+            return Err(CalcError::Internal(format!("{method}: no bracket")));
+        }
+    }
+    ctx.check_deadline()?;
+    let stop = Stopping {
+        x_tolerance: 0.0,
+        max_iterations: MAX_BRENT_ITERATIONS,
+    };
+    brent(force, 0.0, hi, stop).map_err(|e| match e {
+        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
+            method,
+            iterations,
+            residual: width,
+        },
+        other => CalcError::Internal(format!("{method} bracket: {other:?}")),
+    })
 }
 
 #[cfg(test)]

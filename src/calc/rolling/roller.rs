@@ -31,13 +31,13 @@ use serde::Deserialize;
 use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
+use super::load_distribution::load_balance_root;
 use crate::calc::contact::hertz::{
     BodySpec, Hertz, HertzInput, HertzOutput, LineSpec, PoissonRatio, Radius,
 };
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
-use crate::numerics::roots::{brent, RootError, Stopping};
 
 /// Largest diameter or length accepted, m.
 const MAX_SIZE_M: f64 = 100.0;
@@ -48,7 +48,6 @@ const MAX_INTERFERENCE: f64 = 0.01;
 const PALMGREN_MM: f64 = 3.84e-5;
 const PALMGREN_STEEL_E_PA: f64 = 2.19e11;
 const TOLERANCE: f64 = 1e-9;
-const MAX_BRENT_ITERATIONS: u32 = 200;
 /// ISO 76's contact pressure at C0 for roller bearings, Pa.
 pub const ROLLER_STATIC_LIMIT_PA: f64 = 4.0e9;
 
@@ -367,30 +366,8 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     // From the concentric position, past the clearance, doubled until the rollers carry F_r.
     let delta_scale = (case.radial_load_n / (z as f64 * k)).powf(0.9);
     // (At least a millionth of the roller diameter: a denormal load's δ scale underflows.)
-    let mut hi = (half.abs() + delta_scale + crown).max(1e-6 * b.roller_diameter_m);
-    let mut grown = 0;
-    while force(hi) <= 0.0 {
-        hi *= 2.0;
-        grown += 1;
-        if grown > 200 || !hi.is_finite() {
-            return Err(CalcError::Internal(
-                "no bracket for the roller equilibrium".to_owned(),
-            ));
-        }
-    }
-    ctx.check_deadline()?;
-    let stop = Stopping {
-        x_tolerance: 0.0,
-        max_iterations: MAX_BRENT_ITERATIONS,
-    };
-    let root = brent(force, 0.0, hi, stop).map_err(|e| match e {
-        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-            method: "brent_roller_load_balance",
-            iterations,
-            residual: width,
-        },
-        other => CalcError::Internal(format!("roller load balance bracket: {other:?}")),
-    })?;
+    let hi = (half.abs() + delta_scale + crown).max(1e-6 * b.roller_diameter_m);
+    let root = load_balance_root(&force, hi, "brent_roller_load_balance", ctx)?;
     let residual = force(root.x).abs() / scale;
     if residual > TOLERANCE {
         return Err(CalcError::NotConverged {

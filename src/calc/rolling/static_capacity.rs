@@ -532,23 +532,12 @@ fn rating_ball_load(
         fidelity: FidelityRequest::default(),
         closed_form: None,
     };
-    let hertz_case = input.validate().map_err(|errors| {
-        CalcError::impossible(
-            "/bearing",
-            format!(
-                "the {} raceway's rating contact is not a Hertz point contact: {}",
-                if inner { "inner" } else { "outer" },
-                errors
-                    .into_iter()
-                    .map(|e| format!("{}: {}", e.pointer, e.message))
-                    .collect::<Vec<_>>()
-                    .join("; ")
-            ),
-        )
-    })?;
-    let mut step = ctx.child();
-    let unit = Hertz::run(hertz_case, &mut step)?;
-    Ok((STATIC_RATING_PRESSURE_PA / unit.max_pressure_pa).powi(3))
+    let what = format!(
+        "the {} raceway's rating contact is not a Hertz point contact",
+        if inner { "inner" } else { "outer" }
+    );
+    let unit = pressure_at_one_newton(input, &what, ctx)?;
+    Ok((STATIC_RATING_PRESSURE_PA / unit).powi(3))
 }
 
 /// Q₀ of a roller's line contact on one raceway (rating steel, effective length): the load at
@@ -583,11 +572,22 @@ fn rating_roller_load(
         fidelity: FidelityRequest::default(),
         closed_form: None,
     };
+    let unit = pressure_at_one_newton(
+        input,
+        "a roller's rating contact is not a Hertz line contact",
+        ctx,
+    )?;
+    Ok((ROLLER_STATIC_LIMIT_PA / unit).powi(2))
+}
+
+/// The Hertz room's maximum pressure for `input` (loaded with 1 N), Pa; a contact the room
+/// refuses is a 422 on the bearing saying `what` and why.
+fn pressure_at_one_newton(input: HertzInput, what: &str, ctx: &Context) -> Result<f64, CalcError> {
     let hertz_case = input.validate().map_err(|errors| {
         CalcError::impossible(
             "/bearing",
             format!(
-                "a roller's rating contact is not a Hertz line contact: {}",
+                "{what}: {}",
                 errors
                     .into_iter()
                     .map(|e| format!("{}: {}", e.pointer, e.message))
@@ -597,8 +597,7 @@ fn rating_roller_load(
         )
     })?;
     let mut step = ctx.child();
-    let unit = Hertz::run(hertz_case, &mut step)?;
-    Ok((ROLLER_STATIC_LIMIT_PA / unit.max_pressure_pa).powi(2))
+    Ok(Hertz::run(hertz_case, &mut step)?.max_pressure_pa)
 }
 
 /// The guideline minimum s0 (SKF's table; see the module doc): ball or roller bearings.
