@@ -47,6 +47,9 @@ const CUSTOM_CELLS: (u32, u32) = (32, 2048);
 /// Relative central-film error estimate (of the fine grid, before extrapolation) above which
 /// the solve goes on to finer grids, per level: fast, standard, high.
 const REFINE_ABOVE: [f64; 3] = [0.05, 0.01, 0.002];
+/// αp_h above which a Barus law is warned about: e^15 ≈ 3 × 10⁶ in viscosity, where Barus and
+/// Roelands part by orders of magnitude.
+const BARUS_LIMIT: f64 = 15.0;
 /// Density rise ρ(p_h)/ρ₀ − 1 above which `auto` applies compressibility.
 const COMPRESSIBILITY_THRESHOLD: f64 = 0.01;
 /// αp_h above which `auto` applies piezoviscosity (below it η changes by < 10 % over the
@@ -128,10 +131,11 @@ pub struct NumericalEhlInput {
     /// explicit fine grid (32 … 2048 cells, the coarse grid half of it).
     #[serde(default)]
     pub fidelity: FidelityRequest,
-    /// Return the pressure and film profiles along x (default false).
+    /// Return the pressure and film profiles along x as `profiles` (default false; the name
+    /// the journal-bearing room uses for its field).
     #[serde(default)]
     #[schema(example = false)]
-    pub include_profiles: bool,
+    pub include_field: bool,
     #[serde(default)]
     pub effects: NumericalEhlEffects,
 }
@@ -148,7 +152,7 @@ pub struct NumericalEhlCase {
     slide_roll_ratio: f64,
     traction: Option<NumericalEhlTractionSpec>,
     cells: Cells,
-    include_profiles: bool,
+    include_field: bool,
     effects: NumericalEhlEffects,
 }
 
@@ -253,6 +257,13 @@ impl Validate for NumericalEhlInput {
                     tolerance,
                 })
             }
+            FidelityRequest::Custom(custom) if custom.tolerance.is_some() => {
+                errors.push(FieldError::new(
+                    "/fidelity/tolerance",
+                    "the Newton solve always converges to a scaled residual of 1e-10; give only a grid",
+                ));
+                None
+            }
             FidelityRequest::Custom(custom) => match custom.grid {
                 Some([n, 1]) if (CUSTOM_CELLS.0..=CUSTOM_CELLS.1).contains(&n) && n % 2 == 0 => {
                     Some(Cells {
@@ -285,7 +296,7 @@ impl Validate for NumericalEhlInput {
                 slide_roll_ratio,
                 traction: self.traction,
                 cells,
-                include_profiles: self.include_profiles,
+                include_field: self.include_field,
                 effects: self.effects,
             }),
             _ => Err(errors),
@@ -375,7 +386,7 @@ impl Calculation for Ehl {
     const DESCRIPTION: &'static str = "Isothermal elastohydrodynamic line contact solved numerically: Reynolds (finite volumes, second-order upwind Couette flux) with the lubricant's Barus or Roelands viscosity and Dowson–Higginson density, half-space elastic deformation (exact cell integrals, the Hertz part analytic), load balance ∫p dx = w, and cavitation by complementarity (p ≥ 0, primal–dual active set) — all coupled in one Newton solve with an exact dense Jacobian (Venner & Lubrecht 2000 ch. 8 scaling; Stachowiak §7.4; Khonsari §15.5). Grids cluster at the inlet edge and the outlet spike; each level solves two nested grids and Richardson-extrapolates the films, reporting the fine grid's estimated error (a conservative bound on the extrapolated film), and refines on its own while that exceeds the level's tolerance (fast 5 %, standard 1 %, high 0.2 %). Converges across the Moes map up to M = 1000 at L = 10; a Newton solve that stalls answers 422 with its residual. Traction (Newtonian or Eyring, optionally capped by a limiting shear stress γp) from the converged field. Conventions: E′ = 2/Σ(1 − ν²)/E, ū the mean speed, x the entrainment direction, M = W′(2U)^−½, L = G(2U)^¼.";
     const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
     const EFFECTS: &'static [&'static str] = &["compressibility", "piezoviscosity"];
-    const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "pressure_viscosity_coefficient_1_pa": 2e-8}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
+    const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "roelands_pressure_viscosity_index": 0.6}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
 
     type Input = NumericalEhlInput;
     type Output = NumericalEhlOutput;
@@ -397,6 +408,14 @@ impl Calculation for Ehl {
         let b = hertz.half_width_m.unwrap_or(f64::NAN);
         let ph = hertz.max_pressure_pa;
         let law = pressure_law(&case, eta0, ph, ctx)?;
+        if let Some(PressureLaw::Barus { alpha_1_pa }) = law {
+            if alpha_1_pa * ph > BARUS_LIMIT {
+                ctx.warn(
+                    "barus_beyond_its_range",
+                    format!("αp_h = {:.1}: Barus' exponential overstates the viscosity at {:.2} GPa by orders of magnitude (Khonsari §2.6 limits it to about 0.07 GPa, Roelands to moderate pressures); the film, set in the inlet, is little affected, but the pressure spike and the traction are — prefer a Roelands Z", alpha_1_pa * ph, ph * 1e-9),
+                );
+            }
+        }
         let alpha = law.map_or(0.0, |l| l.alpha_1_pa(eta0));
         let line_load = case.load_n / case.length_m;
         let groups = Groups {
@@ -488,7 +507,7 @@ impl Calculation for Ehl {
                 format!("the traction coefficient {:.3e} exceeds 1: the {:?} shear law with the pressure–viscosity law overflows in the Hertz zone (Stachowiak §7.7); use the Eyring model and/or a limiting shear stress", t.traction_coefficient, t.model),
             );
         }
-        let profiles = case.include_profiles.then(|| NumericalEhlProfiles {
+        let profiles = case.include_field.then(|| NumericalEhlProfiles {
             x_m: fine.x.iter().map(|x| x * b).collect(),
             pressure_pa: fine.pressure.iter().map(|p| p * ph).collect(),
             film_m: fine.film.iter().map(|h| h * scale).collect(),
@@ -610,10 +629,22 @@ fn solve_nested(
             .map_err(|f| failure(f, start_cells))?;
         iterations += coarse.iterations;
     }
+    // The last resolved pair: what a stalled or late refinement falls back to.
+    let mut last: Option<(Nested, usize, f64)> = None;
     loop {
-        let fine = problem
-            .solve(fine_cells, Some(&coarse), &budget)
-            .map_err(|f| failure(f, fine_cells))?;
+        let fine = match problem.solve(fine_cells, Some(&coarse), &budget) {
+            Ok(fine) => fine,
+            Err(f) => match last.take() {
+                Some((nested, cells_used, error)) => {
+                    ctx.warn(
+                        "grid_limited",
+                        format!("refining to {fine_cells} cells failed ({}); the result is the {cells_used}-cell solution, whose estimated error is {:.2} %", failure(f, fine_cells), error * 100.0),
+                    );
+                    return Ok(nested);
+                }
+                None => return Err(failure(f, fine_cells)),
+            },
+        };
         iterations += fine.iterations;
         let (c0, m0) = films(&coarse);
         let (c1, m1) = films(&fine);
@@ -621,19 +652,14 @@ fn solve_nested(
         let min = m1 + (m1 - m0) / 3.0;
         let error = ((c1 - c0) / 3.0 / central).abs();
         let resolved = central > 0.0 && min > 0.0 && m1 > 0.0;
-        if (resolved && error <= cells.tolerance) || fine_cells * 2 > cells.finest {
-            if !resolved {
-                return Err(CalcError::impossible(
-                    "/load_n",
-                    format!("the film is not resolved on {fine_cells} cells (central {c1:.3e}, minimum {m1:.3e} in units of b²/R_x): the load is too heavy for this grid; give a finer fidelity"),
-                ));
-            }
-            if error > cells.tolerance {
-                ctx.warn(
-                    "grid_limited",
-                    format!("the central film's estimated error {:.2} % exceeds the level's {:.1} % on the finest grid tried ({fine_cells} cells)", error * 100.0, cells.tolerance * 100.0),
-                );
-            }
+        let last_grid = fine_cells * 2 > cells.finest;
+        if !resolved && last_grid {
+            return Err(CalcError::impossible(
+                "/load_n",
+                format!("the film is not resolved on {fine_cells} cells (central {c1:.3e}, minimum {m1:.3e} in units of b²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+            ));
+        }
+        if resolved {
             ctx.report(SolverReport {
                 method: "newton_finite_volume_richardson".to_owned(),
                 fidelity: cells.level,
@@ -643,7 +669,24 @@ fn solve_nested(
                 error_estimate: Some(error),
                 elapsed_ms: 0.0,
             });
-            return Ok(Nested { fine, central, min });
+            if error <= cells.tolerance || last_grid {
+                if error > cells.tolerance {
+                    ctx.warn(
+                        "grid_limited",
+                        format!("the central film's estimated error {:.2} % exceeds the level's {:.1} % on the finest grid tried ({fine_cells} cells)", error * 100.0, cells.tolerance * 100.0),
+                    );
+                }
+                return Ok(Nested { fine, central, min });
+            }
+            last = Some((
+                Nested {
+                    fine: fine.clone(),
+                    central,
+                    min,
+                },
+                fine_cells,
+                error,
+            ));
         }
         coarse = fine;
         fine_cells *= 2;
@@ -812,7 +855,7 @@ mod tests {
     fn heavy_load_converges_with_a_spike_and_a_flat_hertz_zone() {
         // M = 1000, L = 10: αp_h ≈ 126, the edge of the Moes map the issue names.
         let mut request = at(1000.0, 10.0);
-        request["include_profiles"] = json!(true);
+        request["include_field"] = json!(true);
         let v = ok::<Ehl>(&request);
         let r = &v["result"];
         assert!(v["solver"]["error_estimate"].as_f64().unwrap() <= REFINE_ABOVE[1]);
