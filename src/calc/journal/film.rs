@@ -669,25 +669,31 @@ fn integrate(
             }
             // Couette shear carried by the liquid only: θ_f G_f/h̄ (streamers in the cavitated
             // zone, Stachowiak & Batchelor §5.3: τ* = h_cav/h² there), by the nodes' volumes.
+            // The edge rows held at p = 0 and the outlet column of an arc are boundary values
+            // the solve never visits: they take the content of their interior neighbour.
+            let last_row = g.ny - usize::from(!g.symmetric);
+            let content = |i: usize, j: usize| {
+                let i = if !g.periodic && i == g.nx() { i - 1 } else { i };
+                theta[at(g, i, j.clamp(1, last_row))]
+            };
             let re = film.physics.turbulence_reynolds;
             let (mut shear, mut cavitated, mut area) = (0.0, 0.0, 0.0);
             for j in 0..=g.ny {
                 for i in 0..=g.nx() {
                     let w = g.cv_x(i) * g.cv_y(j) * halves;
-                    let k = at(g, i, j);
                     let hh = h(g.x[i], g.y(j));
+                    let theta_k = content(i, j);
                     shear +=
-                        w * theta[k] * re.map_or(1.0, |re| turbulent_shear_factor(re * hh)) / hh;
+                        w * theta_k * re.map_or(1.0, |re| turbulent_shear_factor(re * hh)) / hh;
                     area += w;
-                    if theta[k] < 1.0 {
+                    if theta_k < 1.0 {
                         cavitated += w;
                     }
                 }
             }
             solution.couette_shear = shear;
             solution.cavitated_fraction = Some(cavitated / area);
-            solution.midplane_content =
-                Some((0..=g.nx()).map(|i| theta[at(g, i, mid_row)]).collect());
+            solution.midplane_content = Some((0..=g.nx()).map(|i| content(i, mid_row)).collect());
         }
     }
     solution

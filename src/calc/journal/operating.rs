@@ -257,8 +257,14 @@ impl Case {
             * g.radial_clearance_m
     }
 
-    /// Martin's flows when the request gives a feed (the supply at the inlet temperature).
+    /// Martin's flows when the request gives a feed (the supply at the inlet temperature). None
+    /// for a JFO film fed through ports: its ports already hold the supply pressure, so its side
+    /// leakage is the whole supply (reported as `inlet_flow_m3_s`), and adding Martin's
+    /// pressure-fed flow to it would count that flow twice.
     fn flows(&self, op: &Operating) -> Option<Flows> {
+        if self.ported() {
+            return None;
+        }
         let t_in = self.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
         self.feed.map(|feed| {
             let g = self.geometry;
@@ -279,7 +285,8 @@ impl Case {
     }
 
     /// ΔT = E_p/(ρ c_p Q) (Eq. 8.44), Q the total flow with a feed (Martin, as in Ex 8.4), else
-    /// the side leakage (Table 8.6); None without flow (the long-bearing closed form).
+    /// the side leakage (Table 8.6; with JFO ports the leakage is the whole supply); None
+    /// without flow (the long-bearing closed form).
     fn temperature_rise(&self, op: &Operating) -> Option<f64> {
         let q = self
             .flows(op)

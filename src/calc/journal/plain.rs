@@ -599,10 +599,12 @@ pub struct PlainOutput {
     /// Shaft temperature by the same fits (about the mean film temperature), °C.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub shaft_temperature_c: Option<f64>,
-    /// Pressure-fed flow through the feed Q_p, m³/s (Martin, Eq. 8.53–8.57); with a feed.
+    /// Pressure-fed flow through the feed Q_p, m³/s (Martin, Eq. 8.53–8.57); with a feed, except
+    /// a JFO film fed through ports, whose supply is `inlet_flow_m3_s`.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub supply_flow_m3_s: Option<f64>,
-    /// Total flow drawn from the supply, m³/s (Martin, Eq. 8.58–8.60); with a feed.
+    /// Total flow drawn from the supply, m³/s (Martin, Eq. 8.58–8.60); with a feed, except a
+    /// JFO film fed through ports (its supply is `inlet_flow_m3_s`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub total_flow_m3_s: Option<f64>,
     /// Temperature at which the viscosity was taken, °C (the inlet temperature, or the effective
