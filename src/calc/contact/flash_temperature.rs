@@ -605,7 +605,7 @@ the same temperature (1/T_f = 1/T_fA + 1/T_fB). Models: Tian–Kennedy for circu
 (Khonsari & Booser eq. 3.49–3.51, 4aK for a stationary body) and the Blok–Jaeger–Archard slow (L ≤ 0.1) and fast (L ≥ 5) forms \
 (Stachowiak & Batchelor Tables 7.5–7.7); in between (0.1 < L < 5), where the texts have only charts, Jaeger's moving-source \
 solution for a uniform flux integrated numerically (3D for circles and squares, the 2D band for lines).";
-    const FIDELITY: &'static [Level] = &[Level::ClosedForm, Level::Standard];
+    const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"geometry": {"shape": "circular", "radius_m": 0.01}, "load_n": 3000, "friction_coefficient": 0.1, "body_a": {"speed_m_s": 0.5, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "body_b": {"speed_m_s": 0, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "bulk_temperature_c": 40}"#;
 
@@ -675,11 +675,11 @@ solution for a uniform flux integrated numerically (3D for circles and squares, 
             });
         ctx.report(match case.model {
             FlashModel::TianKennedy => SolverReport::closed_form("tian_kennedy"),
-            FlashModel::Jaeger if integrated => SolverReport {
-                method: "jaeger_archard_with_moving_source_quadrature".to_owned(),
-                fidelity: Level::Standard,
-                ..SolverReport::closed_form("")
-            },
+            // The request has no fidelity to choose: the quadrature is fixed (720 directions,
+            // 24² Gauss points; 0.3 % against the exact slow limits).
+            FlashModel::Jaeger if integrated => {
+                SolverReport::closed_form("jaeger_archard_with_moving_source_quadrature")
+            }
             FlashModel::Jaeger => SolverReport::closed_form("jaeger_archard"),
         });
         Ok(FlashTemperatureOutput {

@@ -48,8 +48,8 @@ pub struct MaterialSpec {
     /// Poisson's ratio ν, dimensionless, −1 < ν ≤ 0.5 (steel 0.3).
     #[schema(value_type = f64, exclusive_minimum = -1.0, maximum = 0.5, example = 0.3)]
     pub poisson_ratio: PoissonRatio,
-    /// Density ρ, kg/m³, 1 … 1e5 (bearing steel 7800, silicon nitride 3200); the balls' sets
-    /// their centrifugal force and gyroscopic moment at speed. Absent: bearing steel is assumed
+    /// Density ρ, kg/m³, 1 … 1e5 (bearing steel 7800, silicon nitride 3200); the balls' density
+    /// sets their centrifugal force and gyroscopic moment at speed (the rings' is not used). Absent: bearing steel is assumed
     /// (with a warning) for a steel-like modulus, else those effects are not applicable.
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e5, example = 7800.0)]
     pub density_kg_m3: Option<Positive>,

@@ -465,7 +465,9 @@ pub struct LoadDistributionOutput {
     /// Static safety factor against the 4200 MPa contact-pressure criterion of the static load
     /// rating (Khonsari & Booser RB-8: permanent deformation 1e-4 D): the factor by which the load
     /// could grow before the more loaded raceway reaches it, (4200 MPa/p_max)³ (p ∝ Q^⅓); for a
-    /// roller bearing ISO 76's 4000 MPa and line contact, (4000 MPa/p_max)² (p ∝ Q^½).
+    /// roller bearing ISO 76's 4000 MPa and line contact, (4000 MPa/p_max)² (p ∝ Q^½). At the
+    /// solved loads, so it differs from the static-capacity room's ISO s0 = C0/P0 (P0 from X0,
+    /// Y0 and the rule Q_max = 5F_r/Z).
     #[schema(example = 2.5)]
     pub static_safety_factor: f64,
     /// Tilt θ of the inner ring, rad (0 when the ring is held square: no `moment_n_m`).
@@ -851,10 +853,12 @@ fn speed_model(
         alpha_g.to_degrees()
     );
     let mut gyroscopic = Decision::decide(g_mode, g_criterion, &g_what);
-    if g_mode == Mode::On && !centrifugal.applied && !fixed {
+    // A gyroscopic effect that applies (on, or auto past its own criterion) brings the ball
+    // model it acts in, unless centrifugal is explicitly off.
+    if gyroscopic.applied && !centrifugal.applied && !fixed && c_mode != Mode::Off {
         centrifugal.applied = true;
         centrifugal.reason = format!(
-            "{}; applied because effects.gyroscopic is on (one ball model)",
+            "{}; applied because the gyroscopic effect applies (one ball model)",
             centrifugal.reason
         );
     }

@@ -1,14 +1,14 @@
 //! `POST /v1/rolling-bearings/static-capacity`: the basic static load rating C0 of a radial
-//! ball bearing from its internal geometry (ISO 76), the static equivalent load P0 and the
-//! static safety factor s0 = C0/P0 against the usual guideline values.
+//! ball or cylindrical roller bearing from its internal geometry (ISO 76), the static equivalent
+//! load P0 and the static safety factor s0 = C0/P0 against the usual guideline values.
 //!
 //! Model.
 //! - C0 is the static radial load that puts a Hertz contact pressure of 4200 MPa at the centre
 //!   of the most heavily loaded ball–raceway contact of a radial ball bearing, where the total
 //!   permanent deformation of ball and raceway is about 1e-4 of the ball diameter (Khonsari &
 //!   Booser §13.10, RB-8; ISO 76:2006 §3.1, the same 4200 MPa quoted by Koyo's and Minebea's
-//!   catalogues and UMBRA's ISO 76 summary — 4600 MPa for self-aligning ball bearings,
-//!   4000 MPa for roller bearings, which this room does not rate).
+//!   catalogues and UMBRA's ISO 76 summary — 4600 MPa for self-aligning ball bearings, which
+//!   this room does not rate; 4000 MPa for roller bearings, below).
 //! - The most loaded ball carries Q_max = 5 F_r/(Z cos α), the practical Stribeck rule with
 //!   nominal clearance (Khonsari & Booser RI-6; ISO/TR 10657 derives ISO 76's f0 from it), so
 //!   C0 = Z Q₀ cos α / 5 = f0 Z D² cos α with f0 = Q₀/(5 D²) and Q₀ the ball load at which the
@@ -364,8 +364,9 @@ pub struct StaticCapacityOutput {
     /// γ = D cos α/d_m, dimensionless.
     #[schema(example = 0.1814)]
     pub gamma: f64,
-    /// ISO 76's factor f0 = Q₀/(5 D²) for this γ and the conformities used, N/mm² (as the
-    /// standard states it; about 12–17 for groove ball bearings).
+    /// ISO 76's factor for this γ, N/mm² (as the standard states it): for a ball bearing
+    /// f0 = Q₀/(5 D²) at the conformities used (about 12–17 for groove ball bearings); for a
+    /// roller bearing f0′ = Q₀/[5 L D (1 − γ)] (about 44).
     #[schema(example = 14.4)]
     pub static_rating_factor_f0: f64,
     /// Inner and outer groove conformities r/D the rating is evaluated at: ISO's 0.52 and 0.53,
@@ -374,13 +375,15 @@ pub struct StaticCapacityOutput {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[schema(example = json!([0.52, 0.53]))]
     pub rating_conformities: Option<[f64; 2]>,
-    /// Ball load Q₀ that brings the more stressed raceway contact to 4200 MPa, N.
+    /// Ball (roller) load Q₀ that brings the more stressed raceway contact to 4200 MPa
+    /// (4000 MPa for a roller), N.
     #[schema(example = 11600.0)]
     pub ball_load_at_rating_pressure_n: f64,
-    /// Which raceway reaches 4200 MPa first: `inner` or `outer`.
+    /// Which raceway reaches the rating pressure first: `inner` or `outer`.
     #[schema(example = "inner")]
     pub governing_raceway: &'static str,
-    /// Basic static radial load rating C0r = f0 Z D² cos α, N (ISO 76, bearing steel).
+    /// Basic static radial load rating, N (ISO 76, bearing steel): C0r = f0 Z D² cos α for a
+    /// ball bearing, f0′ (1 − γ) Z L D for a cylindrical roller bearing.
     #[schema(example = 23200.0)]
     pub basic_static_load_rating_n: f64,
     /// The rating s0 is computed with: the catalogue's `static_load_rating_n` when given, else
@@ -396,10 +399,11 @@ pub struct StaticCapacityOutput {
     /// Static equivalent radial load P0 = max(X0 F_r + Y0 F_a, F_r), N.
     #[schema(example = 3000.0)]
     pub equivalent_static_load_n: f64,
-    /// Static safety factor s0 = C0/P0, dimensionless.
+    /// Static safety factor s0 = C0/P0, dimensionless (ISO 76's; the load-distribution room's
+    /// `static_safety_factor` is the different (4200 MPa/p_max)³ at the solved ball loads).
     #[schema(example = 7.7)]
     pub static_safety_factor: f64,
-    /// Guideline minimum s0 for the stated operation (ball bearings), dimensionless.
+    /// Guideline minimum s0 for the stated operation and bearing kind, dimensionless.
     #[schema(example = 1.0)]
     pub recommended_min_static_safety_factor: f64,
     /// Contact pressure at the centre of the most loaded contact under P0, 4200 MPa·(P0/C0)^⅓
@@ -664,7 +668,7 @@ fn warn_on(ctx: &mut Context, s0: f64, minimum: f64) {
         ctx.warn(
             "static_safety_below_guideline",
             format!(
-                "s0 = {s0:.3} is below the guideline minimum {minimum} for ball bearings in this operation (ISO 76 / SKF guideline values)"
+                "s0 = {s0:.3} is below the guideline minimum {minimum} for this bearing kind in this operation (ISO 76 / SKF guideline values)"
             ),
         );
     }
