@@ -3,5 +3,6 @@
 pub mod elliptic;
 pub mod half_space;
 pub mod optimise;
+pub mod quadrature;
 pub mod reynolds;
 pub mod roots;

@@ -15,6 +15,9 @@
 
 use std::f64::consts::PI;
 
+use crate::numerics::optimise::brent_minimise;
+use crate::numerics::quadrature::gauss_legendre;
+
 /// The source shapes, in units of ℓ.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Shape {
@@ -31,31 +34,6 @@ pub enum Shape {
 pub struct Temperatures {
     pub mean: f64,
     pub max: f64,
-}
-
-/// Gauss–Legendre nodes and weights on [−1, 1] (Newton on P_n from Tricomi's guesses).
-fn gauss_legendre(n: usize) -> Vec<(f64, f64)> {
-    (0..n)
-        .map(|i| {
-            let mut x = (PI * (i as f64 + 0.75) / (n as f64 + 0.5)).cos();
-            let mut derivative = 1.0;
-            for _ in 0..100 {
-                let (mut p0, mut p1) = (1.0, x);
-                for k in 2..=n {
-                    let p2 = ((2 * k - 1) as f64 * x * p1 - (k - 1) as f64 * p0) / k as f64;
-                    p0 = p1;
-                    p1 = p2;
-                }
-                derivative = n as f64 * (x * p1 - p0) / (x * x - 1.0);
-                let step = p1 / derivative;
-                x -= step;
-                if step.abs() < 1e-15 {
-                    break;
-                }
-            }
-            (x, 2.0 / ((1.0 - x * x) * derivative * derivative))
-        })
-        .collect()
 }
 
 /// Distance from (x, y) inside the shape to its edge along direction φ.
@@ -201,7 +179,8 @@ pub fn temperatures(shape: Shape, peclet: f64) -> Temperatures {
     }
 }
 
-/// The largest value of `field` on [−1, 1]: the best Gauss node, refined by golden section.
+/// The largest value of `field` on [−1, 1]: the best Gauss node, refined by Brent's method on
+/// the intervals either side of it.
 fn maximum(field: &dyn Fn(f64) -> f64, nodes: &[(f64, f64)]) -> f64 {
     let (mut best_x, mut best) = (0.0, field(0.0));
     for &(x, _) in nodes {
@@ -210,18 +189,13 @@ fn maximum(field: &dyn Fn(f64) -> f64, nodes: &[(f64, f64)]) -> f64 {
             (best_x, best) = (x, v);
         }
     }
-    let (mut a, mut b) = ((best_x - 0.15).max(-1.0), (best_x + 0.15).min(1.0));
-    let ratio = 0.5 * (5f64.sqrt() - 1.0);
-    for _ in 0..40 {
-        let c = b - ratio * (b - a);
-        let d = a + ratio * (b - a);
-        if field(c) > field(d) {
-            b = d;
-        } else {
-            a = c;
-        }
-    }
-    best.max(field(0.5 * (a + b)))
+    let (_, minus) = brent_minimise(
+        |x| -field(x),
+        (best_x - 0.15).max(-1.0),
+        (best_x + 0.15).min(1.0),
+        1e-9,
+    );
+    best.max(-minus)
 }
 
 #[cfg(test)]

@@ -48,6 +48,7 @@
 
 use crate::calc::{CalcError, Context};
 use crate::fidelity::{Level, SolverReport};
+use crate::numerics::optimise::brent_minimise;
 
 const TOLERANCE: f64 = 1e-9;
 const MAX_ITERATIONS: u32 = 300;
@@ -237,17 +238,8 @@ impl Problem {
         if f(1.0) <= 0.0 {
             return 0.0;
         }
-        // The minimiser of the convex approach over [−1, 1], by golden-section search.
-        let (mut lo, mut hi) = (-1.0f64, 1.0f64);
-        for _ in 0..100 {
-            let (m1, m2) = (lo + 0.382 * (hi - lo), lo + 0.618 * (hi - lo));
-            if f(m1) < f(m2) {
-                hi = m2;
-            } else {
-                lo = m1;
-            }
-        }
-        let c_min = 0.5 * (lo + hi);
+        // The minimiser of the convex approach over [−1, 1].
+        let (c_min, _) = brent_minimise(f, -1.0, 1.0, 1e-12);
         if f(c_min) > 0.0 && f(-1.0) > 0.0 {
             return std::f64::consts::PI;
         }
