@@ -5,7 +5,7 @@
 //! - `stribeck openapi`: the OpenAPI document (what `openapi/openapi.json` holds).
 
 use std::future::IntoFuture;
-use std::io::Read;
+use std::io::{Read, Write};
 use std::process::ExitCode;
 use std::sync::atomic::Ordering;
 use std::time::{Duration, Instant};
@@ -60,12 +60,12 @@ fn main() -> ExitCode {
         Command::Serve => serve(config),
         Command::Run { path } => run_one(&path, &config),
         Command::Openapi => {
-            print!("{}", http::openapi::document_json());
+            emit(&http::openapi::document_json());
             ExitCode::SUCCESS
         }
         Command::Validation { dir } => match stribeck::validation::report(&dir) {
             Ok((text, failures)) => {
-                print!("{text}");
+                emit(&text);
                 if failures == 0 {
                     ExitCode::SUCCESS
                 } else {
@@ -79,9 +79,20 @@ fn main() -> ExitCode {
         },
         Command::List => {
             for e in calc::REGISTRY {
-                println!("POST {:40} {}", e.path, e.summary);
+                emit(&format!("POST {:40} {}\n", e.path, e.summary));
             }
             ExitCode::SUCCESS
+        }
+    }
+}
+
+/// Write to stdout. A reader that closes the pipe early (`stribeck openapi | head`) is not an
+/// error; any other write failure is reported on stderr.
+fn emit(text: &str) {
+    let mut out = std::io::stdout().lock();
+    if let Err(e) = out.write_all(text.as_bytes()).and_then(|()| out.flush()) {
+        if e.kind() != std::io::ErrorKind::BrokenPipe {
+            eprintln!("stribeck: writing stdout: {e}");
         }
     }
 }
@@ -99,7 +110,7 @@ fn run_one(path: &str, config: &Config) -> ExitCode {
     }
     match (entry.execute)(&body, Instant::now() + config.deadline, Default::default()) {
         Ok(done) => {
-            println!("{}", String::from_utf8_lossy(&done.body));
+            emit(&format!("{}\n", String::from_utf8_lossy(&done.body)));
             ExitCode::SUCCESS
         }
         Err(failure) => {
@@ -112,7 +123,10 @@ fn run_one(path: &str, config: &Config) -> ExitCode {
             if let Some(cause) = cause {
                 eprintln!("stribeck: internal error: {cause}");
             }
-            println!("{}", serde_json::to_string(&problem).unwrap_or_default());
+            emit(&format!(
+                "{}\n",
+                serde_json::to_string(&problem).unwrap_or_default()
+            ));
             ExitCode::from(code)
         }
     }
