@@ -39,6 +39,11 @@ pub struct Decision {
     pub reason: String,
     #[serde(skip_serializing_if = "Option::is_none")]
     pub criterion: Option<Criterion>,
+    /// Which model was applied, where the effect offers several (cavitation: `reynolds` or
+    /// `jfo`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    #[schema(example = "reynolds")]
+    pub model: Option<&'static str>,
 }
 
 impl Decision {
@@ -69,6 +74,7 @@ impl Decision {
             mode,
             reason,
             criterion: Some(criterion),
+            model: None,
         }
     }
 
@@ -79,6 +85,7 @@ impl Decision {
             mode,
             reason: reason.into(),
             criterion: None,
+            model: None,
         }
     }
 }

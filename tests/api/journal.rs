@@ -452,6 +452,7 @@ fn jfo_cavitation_through_the_room() {
     body.as_object_mut().unwrap().remove("eccentricity_ratio");
     body["load_n"] = json!(2000.0);
     let reynolds = run(&body).unwrap();
+    assert_eq!(reynolds["effects"]["cavitation"]["model"], "reynolds");
     body["effects"] = json!({"cavitation": "jfo"});
     let flooded = run(&body).unwrap();
     body["feed"] = json!({"kind": "hole", "supply_pressure_pa": 1e5, "hole_diameter_m": 0.01});
@@ -462,6 +463,7 @@ fn jfo_cavitation_through_the_room() {
         let res = &r["result"];
         assert!((scale / num(res, "sommerfeld_number") / 2000.0 - 1.0).abs() < 1e-6);
         assert_eq!(r["effects"]["cavitation"]["applied"], true);
+        assert_eq!(r["effects"]["cavitation"]["model"], "jfo");
         assert!(r["effects"]["cavitation"]["reason"]
             .as_str()
             .unwrap()

@@ -1148,6 +1148,7 @@ fn mixed_lubrication(case: &EhlCase, lambda: Option<f64>, ctx: &mut Context) {
                     value: lambda,
                     threshold: FULL_FILM_LAMBDA,
                 }),
+                model: None,
             }
         }
     };

@@ -413,6 +413,9 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             ),
         },
         criterion: None,
+        model: case
+            .cavitation()
+            .then_some(if case.mass_conserving() { "jfo" } else { "reynolds" }),
     };
     if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
         ctx.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
@@ -431,6 +434,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
                     if from_centres { "line of centres" } else { "load line" }
                 ),
                 criterion: None,
+                model: None,
             },
         },
     );

@@ -695,6 +695,7 @@ fn merge_films(ctx: &mut Context, inner: &Context, outer: &Context) {
                 mode: a.mode,
                 reason: format!("inner raceway: {}; outer raceway: {}", a.reason, b.reason),
                 criterion: a.criterion.clone(),
+                model: a.model,
             },
             None => a.clone(),
         };
