@@ -426,7 +426,9 @@ pub struct LoadDistributionOutput {
     #[schema(minimum = 0.0, example = 0.44)]
     pub load_zone_factor: Option<f64>,
     /// Load-zone half angle ψ_l, degrees, 0 … 180: the azimuth at which δ(ψ) = 0 on the
-    /// continuous pitch circle (180: every ball loaded).
+    /// continuous pitch circle (180: every ball loaded). It is the arc around ψ = 0; a ring
+    /// under a tilting moment can also load a second arc about ψ = 180°, which
+    /// `loaded_ball_count` and `ball_loads` include and this angle does not.
     #[schema(minimum = 0.0, maximum = 180.0, example = 83.0)]
     pub load_zone_half_angle_deg: f64,
     /// Balls carrying load (Q_j > 0).
