@@ -184,13 +184,7 @@ impl Validate for EhlFilmInput {
         .validate()
         .map_err(|mut e| errors.append(&mut e))
         .ok();
-        let speed = self.entrainment_speed_m_s.get();
-        if speed > MAX_SPEED_M_S {
-            errors.push(FieldError::new(
-                "/entrainment_speed_m_s",
-                format!("must be at most {MAX_SPEED_M_S} m/s, got {speed}"),
-            ));
-        }
+        let speed = entrainment_speed(self.entrainment_speed_m_s, &mut errors);
         let lubricant = self
             .lubricant
             .parse("/lubricant")
@@ -206,13 +200,7 @@ impl Validate for EhlFilmInput {
         let composite_roughness_m = self
             .roughness
             .and_then(|r| composite_roughness(r, &mut errors));
-        let slide_roll_ratio = self.slide_roll_ratio.map_or(0.0, NonNegative::get);
-        if slide_roll_ratio > MAX_SLIDE_ROLL {
-            errors.push(FieldError::new(
-                "/slide_roll_ratio",
-                format!("must be within [0, {MAX_SLIDE_ROLL}] (2 is pure sliding), got {slide_roll_ratio}"),
-            ));
-        }
+        let slide_roll_ratio = slide_roll_ratio(self.slide_roll_ratio, &mut errors);
         let meniscus_m = self.inlet_meniscus_distance_m.map(Positive::get);
         if self.effects.starvation == Mode::On && meniscus_m.is_none() {
             errors.push(FieldError::new(
@@ -248,6 +236,44 @@ impl Validate for EhlFilmInput {
             }),
             _ => Err(errors),
         }
+    }
+}
+
+/// The mean entrainment speed ū, checked against [`MAX_SPEED_M_S`] (shared with the numerical
+/// EHL room).
+pub(super) fn entrainment_speed(speed: Positive, errors: &mut Vec<FieldError>) -> f64 {
+    let speed = speed.get();
+    if speed > MAX_SPEED_M_S {
+        errors.push(FieldError::new(
+            "/entrainment_speed_m_s",
+            format!("must be at most {MAX_SPEED_M_S} m/s, got {speed}"),
+        ));
+    }
+    speed
+}
+
+/// The slide-to-roll ratio (default 0, pure rolling), checked against [`MAX_SLIDE_ROLL`].
+pub(super) fn slide_roll_ratio(ratio: Option<NonNegative>, errors: &mut Vec<FieldError>) -> f64 {
+    let ratio = ratio.map_or(0.0, NonNegative::get);
+    if ratio > MAX_SLIDE_ROLL {
+        errors.push(FieldError::new(
+            "/slide_roll_ratio",
+            format!("must be within [0, {MAX_SLIDE_ROLL}] (2 is pure sliding), got {ratio}"),
+        ));
+    }
+    ratio
+}
+
+/// η₀ at the inlet temperature, or a 422 where the lubricant's law has no value there.
+pub(super) fn inlet_viscosity(lubricant: &Lubricant, t: f64) -> Result<f64, CalcError> {
+    let eta0 = lubricant.viscosity_pa_s(t);
+    if eta0.is_finite() && eta0 > 0.0 {
+        Ok(eta0)
+    } else {
+        Err(CalcError::impossible(
+            "/temperature_c",
+            format!("the lubricant's viscosity law has no finite positive value at {t} °C"),
+        ))
     }
 }
 
@@ -550,14 +576,7 @@ Effects: inlet shear heating by the Gupta et al. (1992) factor with L = (−∂�
         // The dry contact's approach is not part of a film calculation.
         ctx.warnings
             .retain(|w| w.code != "approach_undefined_for_flat");
-        let t = case.temperature_c;
-        let eta0 = case.lubricant.viscosity_pa_s(t);
-        if !(eta0.is_finite() && eta0 > 0.0) {
-            return Err(CalcError::impossible(
-                "/temperature_c",
-                format!("the lubricant's viscosity law has no finite positive value at {t} °C"),
-            ));
-        }
+        let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
         let alpha = case.pressure_law.alpha_1_pa(eta0);
         if !(alpha.is_finite() && alpha > 0.0) {
             return Err(CalcError::impossible(

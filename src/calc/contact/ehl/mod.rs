@@ -16,7 +16,10 @@ use utoipa::ToSchema;
 
 use self::fluid::Fluid;
 use self::line::{interpolate, LineFailure, LineProblem, LineSolution};
-use super::ehl_film::{dowson_higginson, pan_hamrock, Groups, MoesAsymptotes};
+use super::ehl_film::{
+    dowson_higginson, entrainment_speed, inlet_viscosity, pan_hamrock, slide_roll_ratio, Groups,
+    MoesAsymptotes,
+};
 use super::hertz::{BodySpec, Hertz, HertzCase, HertzInput, LineSpec};
 use crate::calc::lubricant::model::PressureLaw;
 use crate::calc::lubricant::{Lubricant, LubricantSpec};
@@ -27,10 +30,6 @@ use crate::fidelity::{FidelityRequest, Level, SolverReport};
 
 pub struct Ehl;
 
-/// Highest entrainment speed accepted, m/s.
-const MAX_SPEED_M_S: f64 = 1e3;
-/// Largest slide-to-roll ratio |u₁ − u₂|/ū: 2 is pure sliding.
-const MAX_SLIDE_ROLL: f64 = 2.0;
 /// Moes' load parameter range the solver accepts: below 0.1 the contact is a rigid
 /// hydrodynamic one (no EHL), above 10⁴ the Hertz zone is beyond any affordable grid.
 const MOES_M_RANGE: (f64, f64) = (0.1, 1e4);
@@ -183,13 +182,7 @@ impl Validate for NumericalEhlInput {
         .validate()
         .map_err(|mut e| errors.append(&mut e))
         .ok();
-        let speed = self.entrainment_speed_m_s.get();
-        if speed > MAX_SPEED_M_S {
-            errors.push(FieldError::new(
-                "/entrainment_speed_m_s",
-                format!("must be at most {MAX_SPEED_M_S} m/s, got {speed}"),
-            ));
-        }
+        let speed = entrainment_speed(self.entrainment_speed_m_s, &mut errors);
         let lubricant = self
             .lubricant
             .parse("/lubricant")
@@ -203,13 +196,7 @@ impl Validate for NumericalEhlInput {
                 ));
             }
         }
-        let slide_roll_ratio = self.slide_roll_ratio.map_or(0.0, NonNegative::get);
-        if slide_roll_ratio > MAX_SLIDE_ROLL {
-            errors.push(FieldError::new(
-                "/slide_roll_ratio",
-                format!("must be within [0, {MAX_SLIDE_ROLL}] (2 is pure sliding), got {slide_roll_ratio}"),
-            ));
-        }
+        let slide_roll_ratio = slide_roll_ratio(self.slide_roll_ratio, &mut errors);
         if let Some(t) = self.traction {
             if slide_roll_ratio == 0.0 {
                 errors.push(FieldError::new(
@@ -395,14 +382,7 @@ impl Calculation for Ehl {
         let hertz = Hertz::run(case.hertz, ctx)?;
         ctx.warnings
             .retain(|w| w.code != "approach_undefined_for_flat");
-        let t = case.temperature_c;
-        let eta0 = case.lubricant.viscosity_pa_s(t);
-        if !(eta0.is_finite() && eta0 > 0.0) {
-            return Err(CalcError::impossible(
-                "/temperature_c",
-                format!("the lubricant's viscosity law has no finite positive value at {t} °C"),
-            ));
-        }
+        let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
         let e = hertz.effective_modulus_pa;
         let rx = hertz.reduced_radius_x_m;
         let b = hertz.half_width_m.unwrap_or(f64::NAN);
