@@ -319,22 +319,35 @@ pub fn solve(
             return Err(SolveError::Diverged { sweeps });
         }
         let relative = if size > 0.0 { change / size } else { change };
-        if relative <= stop.tolerance {
-            return Ok(Solved {
+        if let Some(end) = after_sweep(sweeps, relative, stop, keep_going) {
+            return end.map(|()| Solved {
                 sweeps,
                 change: relative,
                 residual: stencil.residual(p, cavitation),
             });
         }
-        if sweeps >= stop.max_sweeps {
-            return Err(SolveError::NotConverged {
-                sweeps,
-                change: relative,
-            });
-        }
-        if sweeps % 16 == 0 && !keep_going() {
-            return Err(SolveError::Cancelled);
-        }
+    }
+}
+
+/// The verdict after a sweep with this relative change: converged (`Ok`), out of sweeps or
+/// cancelled (`Err`), or go on (`None`). The cancel check runs every 16 sweeps.
+fn after_sweep(
+    sweeps: u32,
+    relative: f64,
+    stop: Stopping,
+    keep_going: &mut dyn FnMut() -> bool,
+) -> Option<Result<(), SolveError>> {
+    if relative <= stop.tolerance {
+        Some(Ok(()))
+    } else if sweeps >= stop.max_sweeps {
+        Some(Err(SolveError::NotConverged {
+            sweeps,
+            change: relative,
+        }))
+    } else if sweeps % 16 == 0 && !keep_going() {
+        Some(Err(SolveError::Cancelled))
+    } else {
+        None
     }
 }
 
@@ -421,21 +434,12 @@ pub fn solve_mass_conserving(
             return Err(SolveError::Diverged { sweeps });
         }
         let relative = (if size > 0.0 { change / size } else { change }).max(content_change);
-        if relative <= stop.tolerance {
-            return Ok(Solved {
+        if let Some(end) = after_sweep(sweeps, relative, stop, keep_going) {
+            return end.map(|()| Solved {
                 sweeps,
                 change: relative,
                 residual: stencil.mass_residual(p, content),
             });
-        }
-        if sweeps >= stop.max_sweeps {
-            return Err(SolveError::NotConverged {
-                sweeps,
-                change: relative,
-            });
-        }
-        if sweeps % 16 == 0 && !keep_going() {
-            return Err(SolveError::Cancelled);
         }
     }
 }
