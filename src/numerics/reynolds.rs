@@ -344,7 +344,7 @@ fn after_sweep(
             sweeps,
             change: relative,
         }))
-    } else if sweeps % 16 == 0 && !keep_going() {
+    } else if sweeps.is_multiple_of(16) && !keep_going() {
         Some(Err(SolveError::Cancelled))
     } else {
         None
