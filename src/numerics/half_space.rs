@@ -27,6 +27,30 @@ pub fn line_log_influence(points: &[f64], faces: &[f64]) -> Vec<f64> {
     k
 }
 
+/// Point contact. The integral of 1/r over the rectangle [x − hx/2, x + hx/2] × [y − hy/2,
+/// y + hy/2] seen from the origin (Love 1929; Venner & Lubrecht 2000 eq. 8.8): with
+/// G(s, t) = |s| asinh(t/s) + |t| asinh(s/t) (G = 0 on the axes), the integral is
+/// G(x₊, y₊) − G(x₋, y₊) − G(x₊, y₋) + G(x₋, y₋), x± = x ± hx/2, y± = y ± hy/2. Times
+/// 2/(πE′) it is the normal surface displacement under unit pressure on that cell.
+#[must_use]
+pub fn rectangle_inverse_distance(x: f64, y: f64, hx: f64, hy: f64) -> f64 {
+    let g = |s: f64, t: f64| {
+        let a = if s == 0.0 {
+            0.0
+        } else {
+            s.abs() * (t / s).asinh()
+        };
+        let b = if t == 0.0 {
+            0.0
+        } else {
+            t.abs() * (s / t).asinh()
+        };
+        a + b
+    };
+    let (xp, xm, yp, ym) = (x + 0.5 * hx, x - 0.5 * hx, y + 0.5 * hy, y - 0.5 * hy);
+    g(xp, yp) - g(xm, yp) - g(xp, ym) + g(xm, ym)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -57,5 +81,31 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn rectangle_influence_integrates_the_inverse_distance() {
+        // Midpoint rule on 800 × 800 sub-cells away from the singularity; at the cell's own
+        // centre the closed form 4·(h/2)·2·asinh(1) for a square.
+        for &(x, y, hx, hy) in &[
+            (1.3, -0.4, 0.5, 0.25),
+            (-2.0, 3.0, 0.1, 0.3),
+            (0.6, 0.0, 0.2, 0.2),
+        ] {
+            let n = 800;
+            let mut sum = 0.0;
+            for a in 0..n {
+                for b in 0..n {
+                    let s = x - 0.5 * hx + (a as f64 + 0.5) * hx / n as f64;
+                    let t = y - 0.5 * hy + (b as f64 + 0.5) * hy / n as f64;
+                    sum += hx * hy / (n * n) as f64 / (s * s + t * t).sqrt();
+                }
+            }
+            let got = rectangle_inverse_distance(x, y, hx, hy);
+            assert!((got - sum).abs() < 1e-6 * sum, "({x}, {y}): {got} vs {sum}");
+        }
+        let h = 0.3;
+        let own = rectangle_inverse_distance(0.0, 0.0, h, h);
+        assert!((own - 4.0 * h * 1f64.asinh()).abs() < 1e-14, "{own}");
     }
 }
