@@ -82,6 +82,23 @@ fn contact(c: &mut Criterion) {
             })
         },
     );
+    // The point contact on 128² cells (129² nodes): a steel ball (R = 10 mm) on a flat at
+    // M = 100, L = 10, W = M(2U)^¾.
+    let load = 100.0 * two_u.powf(0.75) * e_prime * 0.01 * 0.01;
+    let point = format!(
+        r#"{{"body1": {{"radius_x_m": 0.01, "radius_y_m": 0.01, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}}, "body2": {{"elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}}, "load_n": {load}, "entrainment_speed_m_s": 2.0, "lubricant": {{"viscosity_pa_s": 0.05, "pressure_viscosity_coefficient_1_pa": {alpha}}}, "temperature_c": 40}}"#
+    );
+    group.sample_size(10);
+    group.bench_function(
+        "numerical EHL point contact, 129 x 129 nodes, M = 100, L = 10 (standard)",
+        |b| {
+            b.iter(|| {
+                let far = Instant::now() + Duration::from_secs(30);
+                (entry.execute)(black_box(point.as_bytes()), far, Default::default())
+                    .expect("computes")
+            })
+        },
+    );
     group.finish();
 }
 

@@ -7,21 +7,23 @@
 //! - Reynolds: ∂/∂X(ε ∂P/∂X) + κ⁻² ∂/∂Y(ε ∂P/∂Y) − ∂(ρ̄H)/∂X = 0, ε = ρ̄H³/(η̄λ),
 //!   λ = 12ūη₀R_x²/(a³p_h); P = 0 on the boundary of the domain and P ≥ 0 everywhere
 //!   (cavitation by complementarity: a node the relaxation would pull below zero is set to 0).
-//! - Film: H = H₀₀ + X²/2 + c_y Y²/2 + c_e ∫∫ P(X′, Y′)/√((X − X′)² + κ²(Y − Y′)²) dX′dY′,
+//! - Film: H = H₀₀ + X²/2 + c_y Y²/2 + c_e ∫∫ P(X′, Y′)/√((X − X′)² + κ²(Y − Y′)²) dX′ d(κY′),
 //!   c_y = (R_x/R_y)κ², c_e = 2p_hR_x/(πE′a) (2/π² for a circle), the integral exact for
 //!   pressure constant over each cell ([`rectangle_inverse_distance`]) and summed by FFT.
 //! - Load: ∫∫ P dX dY = 2π/3.
 //!
 //! Scheme (Venner & Lubrecht 2000 §8.3–8.5): finite differences with ε at the faces as the
-//! mean of the nodes and the Couette term by second-order upwind differences; relaxation along
-//! x, Gauss–Seidel where the Poiseuille terms dominate the diagonal (the inlet and the
+//! mean of the nodes and the Couette term by second-order upwind differences; point relaxation
+//! sweeping along x (the film is recomputed after each sweep), Gauss–Seidel where the Poiseuille terms dominate the diagonal (the inlet and the
 //! cavitation zone) and Jacobi *distributive* where the elastic wedge does (the Hertz zone,
 //! where ε → 0 and the equation degenerates to an integral equation: the change δ at a node is
 //! spread as −δ/4 on its four neighbours so that it acts on the film like a local Laplacian);
 //! full approximation scheme with injection of P, full weighting of the residuals and bilinear
 //! correction; the film constant H₀₀ relaxed on the coarsest grid from the load balance and
 //! carried up by the coarse-grid correction. Full multigrid from a 16-cell grid started from
-//! the Hertz pressure; each level is converged, so its films serve Richardson's extrapolation.
+//! the Hertz pressure; the coarsest and the intermediate levels only start the next (a capped
+//! number of sweeps or cycles), the last two are converged, so their films serve Richardson's
+//! extrapolation.
 
 use super::fluid::Fluid;
 use crate::calc::Budget;
@@ -99,7 +101,6 @@ pub struct PointSolution {
     pub y: Vec<f64>,
     pub pressure: Vec<f64>,
     pub film: Vec<f64>,
-    pub h00: f64,
     /// Multigrid cycles spent on this grid.
     pub cycles: u32,
     /// Mean |residual| of the Reynolds equation over the interior, relative to the central film.
@@ -154,8 +155,8 @@ struct Grid {
     /// X²/2 + c_yY²/2 at the nodes.
     gap: Vec<f64>,
     deformation: Convolution2d,
-    /// K(di, dj) for di < 5, dj < 3: the local influence coefficients the relaxation uses.
-    local: [[f64; 3]; 5],
+    /// K(di, dj) for di < 4, dj < 2: the local influence coefficients the relaxation uses.
+    local: [[f64; 2]; 4],
     pressure: Vec<f64>,
     film: Vec<f64>,
     h00: f64,
@@ -187,7 +188,7 @@ impl Grid {
             problem.elastic
                 * rectangle_inverse_distance(di as f64 * hx, dj as f64 * kappa * hy, hx, kappa * hy)
         };
-        let mut local = [[0.0; 3]; 5];
+        let mut local = [[0.0; 2]; 4];
         for (di, row) in local.iter_mut().enumerate() {
             for (dj, k) in row.iter_mut().enumerate() {
                 *k = kernel(di as i64, dj as i64);
@@ -360,7 +361,6 @@ impl Grid {
             y: self.y.clone(),
             pressure: self.pressure.clone(),
             film: self.film.clone(),
-            h00: self.h00,
             cycles,
             residual,
         }
@@ -369,10 +369,11 @@ impl Grid {
 
 impl PointProblem {
     /// Full multigrid from [`COARSEST_CELLS`] up to `cells` per direction (a power of two ≥
-    /// 32), converging every level. Returns the converged solutions of every level from the
-    /// second-finest up (the last is the finest), for Richardson's extrapolation.
+    /// 4 × [`COARSEST_CELLS`], so that the two converged levels lie above the coarsest).
+    /// Returns the converged solutions of the second-finest and the finest level, for
+    /// Richardson's extrapolation.
     pub fn solve(&self, cells: usize, budget: &Budget) -> Result<Vec<PointSolution>, PointFailure> {
-        assert!(cells.is_power_of_two() && cells >= 2 * COARSEST_CELLS);
+        assert!(cells.is_power_of_two() && cells >= 4 * COARSEST_CELLS);
         let kappa2 = self.aspect * self.aspect;
         let mut grids: Vec<Grid> =
             std::iter::successors(Some(COARSEST_CELLS), |c| (*c < cells).then_some(c * 2))
@@ -406,7 +407,7 @@ impl PointProblem {
             sweeps += COARSEST_SWEEPS as u32;
             let film = grids[0].central_film();
             let load_error = (grids[0].load() / grids[0].load_target - 1.0).abs();
-            if !film.is_finite() {
+            if !film.is_finite() || !grids[0].pressure.iter().all(|p| p.is_finite()) {
                 return Err(not_converged(&grids[0], kappa2, sweeps));
             }
             // The coarsest grid only starts the next: a heavily loaded contact may close its
@@ -437,7 +438,7 @@ impl PointProblem {
                 let g = &grids[level];
                 let film = g.central_film();
                 let load_error = (g.load() / g.load_target - 1.0).abs();
-                if !film.is_finite() {
+                if !film.is_finite() || !g.pressure.iter().all(|p| p.is_finite()) {
                     return Err(not_converged(g, kappa2, cycles));
                 }
                 if ((film - last_film) / film_scale(film)).abs() < FILM_TOLERANCE
@@ -460,7 +461,7 @@ impl PointProblem {
             }
             let g = &grids[level];
             if level + 2 >= grids.len() {
-                let residual = g.residual_norm(kappa2) / g.central_film();
+                let residual = g.residual_norm(kappa2) / film_scale(g.central_film());
                 solved.push(g.solution(cycles, residual));
             }
         }
