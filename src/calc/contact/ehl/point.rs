@@ -57,6 +57,8 @@ const START_CYCLES: u32 = 8;
 /// and the load balance holds to [`LOAD_TOLERANCE`].
 const FILM_TOLERANCE: f64 = 1e-4;
 const LOAD_TOLERANCE: f64 = 1e-4;
+/// Cycles over which a limit cycle of the film is judged.
+const STALL_WINDOW: usize = 8;
 
 /// The domain (X_a, X_b, Y_e) for a central-film guess H_c: the inlet at twice the
 /// fully-flooded meniscus distance m* = 1 + 3.06 H_c^0.58 (Hamrock & Dowson 1977's starvation
@@ -432,6 +434,7 @@ impl PointProblem {
             fine.update(self);
             let mut last_film = fine.central_film();
             let mut cycles = 0;
+            let mut recent: Vec<f64> = Vec::new();
             loop {
                 v_cycle(&mut grids[..=level], self);
                 cycles += 1;
@@ -441,7 +444,16 @@ impl PointProblem {
                 if !film.is_finite() || !g.pressure.iter().all(|p| p.is_finite()) {
                     return Err(not_converged(g, kappa2, cycles));
                 }
-                if ((film - last_film) / film_scale(film)).abs() < FILM_TOLERANCE
+                // Converged when a cycle changes the film by less than the tolerance, or when
+                // the last cycles wander within ten times it (the cavitation boundary's nodes
+                // may flip back and forth: a limit cycle far below the grid's error).
+                recent.push(film);
+                let window = &recent[recent.len().saturating_sub(STALL_WINDOW)..];
+                let spread = window.iter().copied().fold(f64::NEG_INFINITY, f64::max)
+                    - window.iter().copied().fold(f64::INFINITY, f64::min);
+                let wandering = window.len() == STALL_WINDOW
+                    && spread / film_scale(film) < 10.0 * FILM_TOLERANCE;
+                if (((film - last_film) / film_scale(film)).abs() < FILM_TOLERANCE || wandering)
                     && load_error < LOAD_TOLERANCE
                 {
                     break;
