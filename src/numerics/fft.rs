@@ -107,11 +107,22 @@ impl Convolution2d {
     /// 2-D transform: rows first (only the first `rows` rows can be non-zero going forward),
     /// then columns.
     fn transform(&self, re: &mut [f64], im: &mut [f64], inverse: bool, rows: usize) {
-        let (px, py) = (self.px, self.py);
+        self.rows(re, im, inverse, rows);
+        self.columns(re, im, inverse, self.py);
+    }
+
+    /// 1-D transforms of the first `rows` rows.
+    fn rows(&self, re: &mut [f64], im: &mut [f64], inverse: bool, rows: usize) {
+        let px = self.px;
         for j in 0..rows {
             let r = j * px..(j + 1) * px;
             fft(&mut re[r.clone()], &mut im[r], &self.twiddles_x, inverse);
         }
+    }
+
+    /// 1-D transforms of every column, writing back only its first `keep` entries.
+    fn columns(&self, re: &mut [f64], im: &mut [f64], inverse: bool, keep: usize) {
+        let (px, py) = (self.px, self.py);
         let (mut cr, mut ci) = (vec![0.0; py], vec![0.0; py]);
         for i in 0..px {
             for j in 0..py {
@@ -119,7 +130,7 @@ impl Convolution2d {
                 ci[j] = im[j * px + i];
             }
             fft(&mut cr, &mut ci, &self.twiddles_y, inverse);
-            for j in 0..py {
+            for j in 0..keep {
                 re[j * px + i] = cr[j];
                 im[j * px + i] = ci[j];
             }
@@ -143,21 +154,9 @@ impl Convolution2d {
             im[k] = a * d + b * c;
         }
         // Inverse: columns first, then only the rows that are wanted.
-        let (mut cr, mut ci) = (vec![0.0; py], vec![0.0; py]);
-        for i in 0..px {
-            for j in 0..py {
-                cr[j] = re[j * px + i];
-                ci[j] = im[j * px + i];
-            }
-            fft(&mut cr, &mut ci, &self.twiddles_y, true);
-            for j in 0..ny {
-                re[j * px + i] = cr[j];
-                im[j * px + i] = ci[j];
-            }
-        }
+        self.columns(&mut re, &mut im, true, ny);
+        self.rows(&mut re, &mut im, true, ny);
         for j in 0..ny {
-            let r = j * px..(j + 1) * px;
-            fft(&mut re[r.clone()], &mut im[r], &self.twiddles_x, true);
             out[j * nx..(j + 1) * nx].copy_from_slice(&re[j * px..j * px + nx]);
         }
     }

@@ -286,10 +286,7 @@ impl Validate for NumericalEhlInput {
 fn line_cells(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option<Cells> {
     match fidelity {
         FidelityRequest::Level(Level::ClosedForm) => {
-            errors.push(FieldError::new(
-                "/fidelity",
-                "the numerical EHL solver has fast, standard and high levels; the closed-form films are at /v1/contacts/ehl-film",
-            ));
+            refuse_closed_form(errors);
             None
         }
         FidelityRequest::Level(level) => {
@@ -335,6 +332,13 @@ fn line_cells(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option
     }
 }
 
+fn refuse_closed_form(errors: &mut Vec<FieldError>) {
+    errors.push(FieldError::new(
+        "/fidelity",
+        "the numerical EHL solver has fast, standard and high levels; the closed-form films are at /v1/contacts/ehl-film",
+    ));
+}
+
 /// The point solver's grid for a fidelity request.
 fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option<Grids> {
     let level = |level: Level, i: usize| {
@@ -349,10 +353,7 @@ fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Optio
         FidelityRequest::Level(Level::Standard) => level(Level::Standard, 1),
         FidelityRequest::Level(Level::High) => level(Level::High, 2),
         FidelityRequest::Level(Level::ClosedForm) => {
-            errors.push(FieldError::new(
-                "/fidelity",
-                "the numerical EHL solver has fast, standard and high levels; the closed-form films are at /v1/contacts/ehl-film",
-            ));
+            refuse_closed_form(errors);
             None
         }
         FidelityRequest::Custom(custom) if custom.tolerance.is_some() => {
@@ -592,19 +593,8 @@ fn line_contact(
     let solved = solve_nested(&problem, cells, ctx)?;
     let scale = b * b / rx;
     let fine = &solved.fine;
-    let (p_index, &p_max) = fine
-        .pressure
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .expect("non-empty grid");
-    let cavitation = fine
-        .pressure
-        .iter()
-        .rposition(|&p| p > 0.0)
-        .map_or(fine.x[fine.x.len() - 1], |i| {
-            fine.x[(i + 1).min(fine.x.len() - 1)]
-        });
+    let (p_index, p_max) = peak(&fine.pressure);
+    let cavitation = cavitation_point(&fine.x, &fine.pressure);
     let central = solved.central * scale;
     let min = solved.min * scale;
     let (ph_central, ph_min) = pan_hamrock(&groups, groups.w);
@@ -772,12 +762,7 @@ fn point_contact(
         );
     }
     let nx = fine.x.len();
-    let (p_index, &p_max) = fine
-        .pressure
-        .iter()
-        .enumerate()
-        .max_by(|a, b| a.1.total_cmp(b.1))
-        .expect("non-empty grid");
+    let (p_index, p_max) = peak(&fine.pressure);
     let min_index = fine
         .film
         .iter()
@@ -788,10 +773,7 @@ fn point_contact(
     let centre_row = fine.y.len() / 2;
     let row = |field: &[f64]| field[centre_row * nx..(centre_row + 1) * nx].to_vec();
     let centre_pressure = row(&fine.pressure);
-    let cavitation = centre_pressure
-        .iter()
-        .rposition(|&p| p > 0.0)
-        .map_or(fine.x[nx - 1], |i| fine.x[(i + 1).min(nx - 1)]);
+    let cavitation = cavitation_point(&fine.x, &centre_pressure);
     let film_m = |h: f64| h * unit;
     let formulas = if alpha > 0.0 {
         vec![
@@ -860,6 +842,26 @@ fn point_contact(
         traction,
         profiles,
     })
+}
+
+/// The index and value of the highest pressure.
+fn peak(pressure: &[f64]) -> (usize, f64) {
+    pressure
+        .iter()
+        .copied()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap_or((0, 0.0))
+}
+
+/// Where a pressure profile along `x` ends: the node after its last pressurised one (the
+/// outlet meniscus), or the domain's end.
+fn cavitation_point(x: &[f64], pressure: &[f64]) -> f64 {
+    let last = x.len() - 1;
+    pressure
+        .iter()
+        .rposition(|&p| p > 0.0)
+        .map_or(x[last], |i| x[(i + 1).min(last)])
 }
 
 fn warn_traction(traction: &Option<NumericalEhlTraction>, ctx: &mut Context) {

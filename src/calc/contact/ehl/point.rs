@@ -109,24 +109,24 @@ pub struct PointSolution {
     pub residual: f64,
 }
 
-impl PointSolution {
-    /// Bilinear value of a nodal field at (X, Y).
-    pub fn at(&self, field: &[f64], x: f64, y: f64) -> f64 {
-        let locate = |nodes: &[f64], v: f64| {
-            let h = nodes[1] - nodes[0];
-            let k = (((v - nodes[0]) / h).floor().max(0.0) as usize).min(nodes.len() - 2);
-            (k, ((v - nodes[k]) / h).clamp(0.0, 1.0))
-        };
-        let ((i, s), (j, t)) = (locate(&self.x, x), locate(&self.y, y));
-        let nx = self.x.len();
-        let v = |i: usize, j: usize| field[j * nx + i];
-        (1.0 - t) * ((1.0 - s) * v(i, j) + s * v(i + 1, j))
-            + t * ((1.0 - s) * v(i, j + 1) + s * v(i + 1, j + 1))
-    }
+/// Bilinear value at (X, Y) of a nodal field on the uniform grid with nodes `xs` × `ys`.
+fn bilinear_at(xs: &[f64], ys: &[f64], field: &[f64], x: f64, y: f64) -> f64 {
+    let locate = |nodes: &[f64], v: f64| {
+        let h = nodes[1] - nodes[0];
+        let k = (((v - nodes[0]) / h).floor().max(0.0) as usize).min(nodes.len() - 2);
+        (k, ((v - nodes[k]) / h).clamp(0.0, 1.0))
+    };
+    let ((i, s), (j, t)) = (locate(xs, x), locate(ys, y));
+    let nx = xs.len();
+    let v = |i: usize, j: usize| field[j * nx + i];
+    (1.0 - t) * ((1.0 - s) * v(i, j) + s * v(i + 1, j))
+        + t * ((1.0 - s) * v(i, j + 1) + s * v(i + 1, j + 1))
+}
 
+impl PointSolution {
     /// H at the contact centre.
     pub fn central_film(&self) -> f64 {
-        self.at(&self.film, 0.0, 0.0)
+        bilinear_at(&self.x, &self.y, &self.film, 0.0, 0.0)
     }
 
     /// The smallest H over the grid (in the horseshoe's side lobes under load).
@@ -354,7 +354,7 @@ impl Grid {
     }
 
     fn central_film(&self) -> f64 {
-        self.solution(0, 0.0).central_film()
+        bilinear_at(&self.x, &self.y, &self.film, 0.0, 0.0)
     }
 
     fn solution(&self, cycles: u32, residual: f64) -> PointSolution {
