@@ -137,7 +137,7 @@ fn ehl_point(out: &mut String) {
         .collect();
     out.push_str("\n# Accuracy against time: numerical EHL point contact\n\n");
     out.push_str("Cases: a circular contact at Moes' L = 10 with M ∈ {20, 100, 1000} (Barus, Dowson–Higginson density). Errors in\n");
-    out.push_str("the central film (Richardson-extrapolated) and the minimum film (the finest grid's) against the same solver on\n");
+    out.push_str("the central and the minimum film (a parabola's vertex between nodes), both Richardson-extrapolated, against the same solver on\n");
     out.push_str("512² cells; `grid` is cells per direction; time is the median of 5 solves; `reported` is the service's estimate\n");
     out.push_str("of the central film's error (Richardson's plus what the multigrid cycles left). A 422 is the service's refusal:\n");
     out.push_str(

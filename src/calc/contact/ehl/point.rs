@@ -147,9 +147,38 @@ impl PointSolution {
         bilinear_at(&self.x, &self.y, &self.film, 0.0, 0.0)
     }
 
-    /// The smallest H over the grid (in the horseshoe's side lobes under load).
-    pub fn min_film(&self) -> f64 {
-        self.film.iter().copied().fold(f64::INFINITY, f64::min)
+    /// The smallest H (in the horseshoe's side lobes under load) and its (X, Y): the least node
+    /// refined by a parabola through it and its neighbours along each axis, so that the minimum
+    /// converges with the grid like the film and not with where the nodes fall.
+    pub fn min_film(&self) -> (f64, f64, f64) {
+        let nx = self.x.len();
+        let k = (0..self.film.len())
+            .min_by(|&a, &b| self.film[a].total_cmp(&self.film[b]))
+            .unwrap_or(0);
+        let (i, j) = (k % nx, k / nx);
+        let f = &self.film;
+        // Along one axis with stride `step`: the drop below the node and the offset in cells.
+        let vertex = |inside: bool, step: usize| {
+            if !inside {
+                return (0.0, 0.0);
+            }
+            let (before, after) = (f[k - step], f[k + step]);
+            let slope = 0.5 * (after - before);
+            let curvature = after - 2.0 * f[k] + before;
+            if curvature > 0.0 {
+                (0.5 * slope * slope / curvature, -slope / curvature)
+            } else {
+                (0.0, 0.0)
+            }
+        };
+        let (drop_x, sx) = vertex(i > 0 && i + 1 < nx, 1);
+        let (drop_y, sy) = vertex(j > 0 && j + 1 < self.y.len(), nx);
+        let (hx, hy) = (self.x[1] - self.x[0], self.y[1] - self.y[0]);
+        (
+            f[k] - drop_x - drop_y,
+            self.x[i] + sx * hx,
+            self.y[j] + sy * hy,
+        )
     }
 }
 
