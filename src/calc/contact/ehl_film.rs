@@ -44,7 +44,7 @@ const MAX_SPEED_M_S: f64 = 1e3;
 /// Largest slide-to-roll ratio |u₁ − u₂|/ū: 2 is pure sliding (one surface still).
 const MAX_SLIDE_ROLL: f64 = 2.0;
 /// Ellipticities the hard-EHL fit was made over (34 cases, k = 1 … 8: Hamrock §21.3.3).
-const HARD_FIT_ELLIPTICITY: (f64, f64) = (1.0, 8.0);
+pub(crate) const HARD_FIT_ELLIPTICITY: (f64, f64) = (1.0, 8.0);
 /// Ellipticities of the soft-EHL fit (17 cases, k = 1 … 12: Hamrock §21.3.4).
 const SOFT_FIT_ELLIPTICITY: (f64, f64) = (1.0, 12.0);
 /// U and W of the hard-EHL fit: the texts say "U over about 2 decades, W over 1 decade" from

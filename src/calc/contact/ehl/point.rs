@@ -111,6 +111,53 @@ pub struct PointProblem {
     pub film_guess: f64,
 }
 
+/// The dry contact the problem is scaled by, SI units.
+#[derive(Debug, Clone, Copy)]
+pub struct HertzEllipse {
+    /// Hertz semi-axes along (a) and across (b) the entrainment direction x, m.
+    pub a: f64,
+    pub b: f64,
+    /// Reduced radii of curvature in x and y (R_y infinite for a flat in y), m.
+    pub rx: f64,
+    pub ry: f64,
+    /// E′, Pa.
+    pub e_prime: f64,
+}
+
+impl PointProblem {
+    /// The dimensionless problem of the contact `ellipse` under the Hertz pressure
+    /// `fluid.hertz_pressure_pa`, rolling at the mean speed ū, with the first central-film guess
+    /// H_c (sets H₀₀ and the [`domain`]).
+    #[must_use]
+    pub fn new(fluid: Fluid, ellipse: &HertzEllipse, speed: f64, film_guess: f64) -> Self {
+        let HertzEllipse {
+            a,
+            b,
+            rx,
+            ry,
+            e_prime,
+        } = *ellipse;
+        let ph = fluid.hertz_pressure_pa;
+        let aspect = b / a;
+        let (inlet, outlet, half_width) = domain(film_guess);
+        PointProblem {
+            fluid,
+            lambda: 12.0 * speed * fluid.eta0_pa_s * rx * rx / (a.powi(3) * ph),
+            aspect,
+            curvature_y: if ry.is_finite() {
+                rx / ry * aspect * aspect
+            } else {
+                0.0
+            },
+            elastic: 2.0 * ph * rx / (std::f64::consts::PI * e_prime * a),
+            inlet,
+            outlet,
+            half_width,
+            film_guess,
+        }
+    }
+}
+
 /// A converged field on one grid: nodes row-major, x fastest.
 #[derive(Debug, Clone)]
 pub struct PointSolution {
@@ -732,22 +779,20 @@ mod tests {
                 (minor, major)
             };
             let (ph, e) = (get("max_pressure_pa"), get("effective_modulus_pa"));
-            let problem = PointProblem {
-                fluid: Fluid {
-                    law: PressureLaw::Barus { alpha_1_pa: 0.0 },
-                    eta0_pa_s: 0.01,
-                    hertz_pressure_pa: ph,
-                    compressible: false,
-                },
-                lambda: 1.0,
-                aspect: b / a,
-                curvature_y: rx / ry * (b / a).powi(2),
-                elastic: 2.0 * ph * rx / (PI * e * a),
-                inlet: -2.0,
-                outlet: 2.0,
-                half_width: 2.0,
-                film_guess: 0.0,
+            let fluid = Fluid {
+                law: PressureLaw::Barus { alpha_1_pa: 0.0 },
+                eta0_pa_s: 0.01,
+                hertz_pressure_pa: ph,
+                compressible: false,
             };
+            let ellipse = HertzEllipse {
+                a,
+                b,
+                rx,
+                ry,
+                e_prime: e,
+            };
+            let problem = PointProblem::new(fluid, &ellipse, 1.0, 0.0);
             let mut g = Grid::new(&problem, 128);
             for j in 0..g.ny {
                 for i in 0..g.nx {
