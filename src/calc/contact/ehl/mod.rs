@@ -1206,6 +1206,13 @@ mod tests {
                "effects": effects})
     }
 
+    /// The answer to `request` at the fidelity `level`.
+    fn at_level(request: &Value, level: &str) -> Value {
+        let mut request = request.clone();
+        request["fidelity"] = json!(level);
+        ok::<Ehl>(&request)
+    }
+
     /// Central and minimum films against Hamrock–Dowson's hard-EHL fits (Stachowiak eq. 7.26,
     /// Hamrock eq. 21.57), by their deviations in `formulas`.
     fn hamrock_dowson_deviations(v: &Value) -> (f64, f64) {
@@ -1278,22 +1285,31 @@ mod tests {
 
     #[test]
     fn point_refinement_agrees_within_the_error_estimate() {
-        // Source: a convergence study — fast (64² cells) against standard (128²).
-        let request = at_point(20.0, 10.0, 1.0);
-        let standard = ok::<Ehl>(&request);
-        let mut fast = request.clone();
-        fast["fidelity"] = json!("fast");
-        let fast = ok::<Ehl>(&fast);
-        let estimate = fast["solver"]["error_estimate"].as_f64().unwrap();
-        let (f, s) = (
-            result_field(&fast, "central_film_thickness_m"),
-            result_field(&standard, "central_film_thickness_m"),
-        );
-        assert!(
-            ((f - s) / s).abs() <= estimate,
-            "fast {f}, standard {s}, estimate {estimate}"
-        );
-        assert!(standard["solver"]["error_estimate"].as_f64().unwrap() < estimate);
+        // Source: a convergence study — fast (64² cells) against standard (128²), for a circle
+        // and an ellipse long in the rolling direction (R_y = R_x/4, k ≈ 0.4, outside the
+        // Hamrock–Dowson fits, which the answer flags).
+        for (m, ratio) in [(20.0, 1.0), (100.0, 0.25)] {
+            let request = at_point(m, 10.0, ratio);
+            let (fast, standard) = (at_level(&request, "fast"), ok::<Ehl>(&request));
+            let estimate = fast["solver"]["error_estimate"].as_f64().unwrap();
+            let (f, s) = (
+                result_field(&fast, "central_film_thickness_m"),
+                result_field(&standard, "central_film_thickness_m"),
+            );
+            assert!(
+                ((f - s) / s).abs() <= estimate,
+                "k {ratio}: fast {f}, standard {s}, estimate {estimate}"
+            );
+            assert!(standard["solver"]["error_estimate"].as_f64().unwrap() < estimate);
+            let s_min = result_field(&standard, "min_film_thickness_m");
+            assert!(s_min > 0.0 && s_min < s);
+            let flagged = standard["warnings"]
+                .as_array()
+                .unwrap()
+                .iter()
+                .any(|w| w["code"] == "outside_fitted_range");
+            assert_eq!(flagged, ratio < 1.0, "R_y/R_x = {ratio}");
+        }
     }
 
     #[test]
@@ -1302,10 +1318,7 @@ mod tests {
         // (L = 10) and at the map's heavy end M = 1000, where 128² is not yet asymptotic.
         for m in [100.0, 1000.0] {
             let request = at_point(m, 10.0, 1.0);
-            let standard = ok::<Ehl>(&request);
-            let mut high = request.clone();
-            high["fidelity"] = json!("high");
-            let high = ok::<Ehl>(&high);
+            let (standard, high) = (ok::<Ehl>(&request), at_level(&request, "high"));
             assert_eq!(high["solver"]["grid"], json!([256, 256]), "M {m}");
             let estimate = |v: &Value| v["solver"]["error_estimate"].as_f64().unwrap();
             let (s, h) = (
@@ -1370,35 +1383,6 @@ mod tests {
             }
             n => panic!("grid {n}"),
         }
-    }
-
-    #[test]
-    fn an_ellipse_long_in_the_rolling_direction_converges_under_refinement() {
-        // Source: a convergence study at k ≈ 0.4 (R_y = R_x/4, entrainment along the major
-        // axis): fast against standard within fast's estimate; the fits' range is flagged.
-        let request = at_point(100.0, 10.0, 0.25);
-        let standard = ok::<Ehl>(&request);
-        let mut fast = request.clone();
-        fast["fidelity"] = json!("fast");
-        let fast = ok::<Ehl>(&fast);
-        let estimate = fast["solver"]["error_estimate"].as_f64().unwrap();
-        let films = |v: &Value| {
-            (
-                result_field(v, "central_film_thickness_m"),
-                result_field(v, "min_film_thickness_m"),
-            )
-        };
-        let ((f, _), (s, s_min)) = (films(&fast), films(&standard));
-        assert!(
-            ((f - s) / s).abs() <= estimate,
-            "fast {f}, standard {s}, estimate {estimate}"
-        );
-        assert!(s_min > 0.0 && s_min < s);
-        assert!(standard["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w["code"] == "outside_fitted_range"));
     }
 
     #[test]
@@ -1535,10 +1519,7 @@ mod tests {
     fn refinement_agrees_within_the_error_estimate() {
         // Source: a convergence study — standard's extrapolated film against the high level's.
         let request = at(50.0, 10.0);
-        let standard = ok::<Ehl>(&request);
-        let mut high = request.clone();
-        high["fidelity"] = json!("high");
-        let high = ok::<Ehl>(&high);
+        let (standard, high) = (ok::<Ehl>(&request), at_level(&request, "high"));
         let estimate = standard["solver"]["error_estimate"].as_f64().unwrap();
         let (s, h) = (
             result_field(&standard, "central_film_thickness_m"),
