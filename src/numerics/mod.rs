@@ -7,4 +7,5 @@ pub mod multigrid;
 pub mod optimise;
 pub mod quadrature;
 pub mod reynolds;
+pub mod richardson;
 pub mod roots;

@@ -1063,6 +1063,13 @@ fn thermal_factor(
     Ok(if applied { phi } else { 1.0 })
 }
 
+/// Hamrock & Dowson's (1977) fully-flooded inlet distance m̄*_c = 1 + 3.06 H^0.58 over the
+/// semi-axis a along the rolling direction, for the central film in the units H = h R_x/a²
+/// (see [`starvation_factors`]).
+pub(crate) fn fully_flooded_meniscus(film: f64) -> f64 {
+    1.0 + 3.06 * film.powf(0.58)
+}
+
 /// Hamrock & Dowson (1977, J. Lubr. Technol. 99:15, point contacts; not in the texts: verify):
 /// with m̄ = m/b the meniscus distance over the Hertz semi-axis along the rolling direction,
 /// the film is starved below m̄*_c = 1 + 3.06 [(R_x/b)² H_c]^0.58 and
@@ -1114,7 +1121,7 @@ fn starvation_factors(
         ));
     }
     let scale = (hertz.reduced_radius_x_m / b).powi(2);
-    let critical_c = 1.0 + 3.06 * (scale * films.central_h).powf(0.58);
+    let critical_c = fully_flooded_meniscus(scale * films.central_h);
     let critical_min = 1.0 + 3.34 * (scale * films.min_h).powf(0.56);
     let decision = Decision::decide(
         mode,

@@ -8,6 +8,7 @@ use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::CalcError;
 use crate::fidelity::Level;
 use crate::numerics::reynolds::{SolveError, Stopping};
+use crate::numerics::richardson;
 use crate::numerics::roots::{self, brent, RootError};
 
 /// Highest eccentricity ratio the service solves for: beyond it the minimum film is below 0.1 %
@@ -391,7 +392,7 @@ fn at_eccentricity_from(
             // (the `high` mesh is one) are extrapolated.
             debug_assert!(!richardson || mesh.halves_exactly(), "{mesh:?}");
             if richardson && mesh.halves_exactly() {
-                let extrapolate = |f: f64, c: f64| f + (f - c) / 3.0;
+                let extrapolate = |f: f64, c: f64| richardson::extrapolate(c, f);
                 let film = FilmSolution {
                     load_radial: extrapolate(fine.load_radial, coarse.load_radial),
                     load_tangential: extrapolate(fine.load_tangential, coarse.load_tangential),

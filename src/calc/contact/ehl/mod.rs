@@ -32,6 +32,7 @@ use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::numerics::richardson;
 
 pub struct Ehl;
 
@@ -774,7 +775,7 @@ fn point_contact(
     let (coarse, fine) = (&solved[0], &solved[1]);
     let (c0, c1) = (coarse.central_film(), fine.central_film());
     let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
-    let central = c1 + (c1 - c0) / 3.0;
+    let central = richardson::extrapolate(c0, c1);
     if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
         return Err(CalcError::impossible(
             "/load_n",
@@ -783,7 +784,7 @@ fn point_contact(
     }
     // The minimum (a parabola's vertex between nodes) converges like the film, so it is
     // extrapolated too — unless the coarser grid closes it.
-    let extrapolated = m1 + (m1 - m0) / 3.0;
+    let extrapolated = richardson::extrapolate(m0, m1);
     let min = if m0 > 0.0 && extrapolated > 0.0 {
         extrapolated
     } else {
@@ -795,7 +796,7 @@ fn point_contact(
     };
     // Richardson's estimate plus what the cycles left (a limit cycle's spread, or the last
     // cycle's change), weighted as in (4c₁ − c₀)/3.
-    let discretisation = ((c1 - c0) / 3.0 / central).abs();
+    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
     let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
     let error = discretisation + cycles_left;
     ctx.report(SolverReport {
@@ -1038,9 +1039,9 @@ fn solve_nested(
         iterations += fine.iterations;
         let (c0, m0) = films(&coarse);
         let (c1, m1) = films(&fine);
-        let central = c1 + (c1 - c0) / 3.0;
-        let min = m1 + (m1 - m0) / 3.0;
-        let error = ((c1 - c0) / 3.0 / central).abs();
+        let central = richardson::extrapolate(c0, c1);
+        let min = richardson::extrapolate(m0, m1);
+        let error = (richardson::fine_error(c0, c1) / central).abs();
         let resolved = central > 0.0 && min > 0.0 && m1 > 0.0;
         let last_grid = fine_cells * 2 > cells.finest;
         if !resolved && last_grid {

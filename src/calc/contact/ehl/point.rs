@@ -14,18 +14,20 @@
 //!
 //! Scheme (Venner & Lubrecht 2000 §8.3–8.5): finite differences with ε at the faces as the
 //! mean of the nodes and the Couette term by second-order upwind differences; point relaxation
-//! sweeping along x (the film is recomputed after each sweep), Gauss–Seidel where the Poiseuille terms dominate the diagonal (the inlet and the
-//! cavitation zone) and Jacobi *distributive* where the elastic wedge does (the Hertz zone,
-//! where ε → 0 and the equation degenerates to an integral equation: the change δ at a node is
-//! spread as −δ/4 on its four neighbours so that it acts on the film like a local Laplacian);
-//! full approximation scheme in W-cycles with injection of P, full weighting of the residuals
-//! and bilinear correction; the film constant H₀₀ relaxed on the coarsest grid from the load
-//! balance and carried up by the coarse-grid correction. Full multigrid from a 16-cell grid started from
-//! the Hertz pressure; the coarsest and the intermediate levels only start the next (a capped
-//! number of sweeps or cycles), the last two are converged, so their films serve Richardson's
+//! sweeping along x (the film is recomputed after each sweep), Gauss–Seidel where the
+//! Poiseuille terms dominate the diagonal (the inlet and the cavitation zone) and Jacobi
+//! *distributive* where the elastic wedge does (the Hertz zone, where ε → 0 and the equation
+//! degenerates to an integral equation: the change δ at a node is spread as −δ/4 on its four
+//! neighbours so that it acts on the film like a local Laplacian); full approximation scheme
+//! in W-cycles with injection of P, full weighting of the residuals and bilinear correction;
+//! the film constant H₀₀ relaxed on the coarsest grid from the load balance and carried up by
+//! the coarse-grid correction. Full multigrid from a 16-cell grid started from the Hertz
+//! pressure; the coarsest and the intermediate levels only start the next (a capped number of
+//! sweeps or cycles), the last two are converged, so their films serve Richardson's
 //! extrapolation.
 
 use super::fluid::Fluid;
+use crate::calc::contact::ehl_film::fully_flooded_meniscus;
 use crate::calc::Budget;
 use crate::numerics::fft::Convolution2d;
 use crate::numerics::half_space::rectangle_inverse_distance;
@@ -76,14 +78,13 @@ const WANDER_SHARE: f64 = 0.2;
 const DIVERGED_LOAD_ERROR: f64 = 0.5;
 
 /// The domain (X_a, X_b, Y_e) for a central-film guess H_c: the inlet at twice the
-/// fully-flooded meniscus distance m* = 1 + 3.06 H_c^0.58 (Hamrock & Dowson 1977's starvation
-/// boundary, as the film room's starvation effect uses it, in these units) but at least 2.5, the outlet at √(3H_c) but at
-/// least 1.5 (past the cavitation boundary), the sides at ±1.2m* but at least ±2 — heavily
-/// loaded contacts get small domains and so fine cells in the Hertz zone, light ones room for
-/// their wide pressure.
+/// fully-flooded meniscus distance m* = 1 + 3.06 H_c^0.58 ([`fully_flooded_meniscus`], the film
+/// room's starvation boundary) but at least 2.5, the outlet at √(3H_c) but at least 1.5 (past
+/// the cavitation boundary), the sides at ±1.2m* but at least ±2 — heavily loaded contacts get
+/// small domains and so fine cells in the Hertz zone, light ones room for their wide pressure.
 #[must_use]
 pub fn domain(film_guess: f64) -> (f64, f64, f64) {
-    let meniscus = 1.0 + 3.06 * film_guess.max(0.0).powf(0.58);
+    let meniscus = fully_flooded_meniscus(film_guess.max(0.0));
     (
         -(2.0 * meniscus).max(2.5),
         (3.0 * film_guess.max(0.0)).sqrt().max(1.5),
@@ -541,6 +542,8 @@ impl PointProblem {
                 coarser_film: coarse.central_film(),
                 accuracy,
             };
+            // Levels below the last two only start the next one.
+            let resolved = level + 2 >= grids.len();
             let mut cycles = 0;
             let iteration_error = loop {
                 cycle(&mut grids[..=level], self);
@@ -551,8 +554,6 @@ impl PointProblem {
                     return Err(not_converged(g, kappa2, cycles));
                 }
                 let load_error = (g.load() / g.load_target - 1.0).abs();
-                // Levels below the last two only start the next one.
-                let resolved = level + 2 >= grids.len();
                 if resolved && load_error > DIVERGED_LOAD_ERROR {
                     return Err(not_converged(g, kappa2, cycles));
                 }
@@ -572,7 +573,7 @@ impl PointProblem {
                 }
             };
             let g = &grids[level];
-            if level + 2 >= grids.len() {
+            if resolved {
                 let residual = g.residual_norm(kappa2) / film_scale(g.central_film());
                 solved.push(g.solution(cycles, residual, iteration_error));
             }
@@ -594,11 +595,12 @@ struct History {
 impl History {
     /// The relative iteration error of the film once the cycles have settled: the last cycle
     /// changed it by less than [`FILM_TOLERANCE`] with the load balanced to [`LOAD_TOLERANCE`];
-    /// or, after twice [`STALL_WINDOW`] cycles, the last [`STALL_WINDOW`] wander (the cavitation boundary's nodes flip, or a
-    /// coarse grid's unresolved film drifts) within [`WANDER_SHARE`] of the change from the
-    /// coarser level (a proxy of this level's discretisation error) or of the accuracy asked,
-    /// but at least within 10 [`FILM_TOLERANCE`], with the load balanced to 10
-    /// [`LOAD_TOLERANCE`]. Then the spread is the error.
+    /// or, after twice [`STALL_WINDOW`] cycles, the last [`STALL_WINDOW`] wander (the
+    /// cavitation boundary's nodes flip, or a coarse grid's unresolved film drifts) within
+    /// [`WANDER_SHARE`] of the change from the coarser level (a proxy of this level's
+    /// discretisation error) or of the accuracy asked, but at least within 10
+    /// [`FILM_TOLERANCE`], with the load balanced to 10 [`LOAD_TOLERANCE`]. Then the spread is
+    /// the error.
     fn settled(&self) -> Option<f64> {
         let n = self.films.len();
         let film = self.films[n - 1];
@@ -627,7 +629,7 @@ impl History {
 }
 
 /// The scale a film change is measured against: coarse grids of a heavily loaded contact may
-/// close the film (their discretisation error exceeds it), so not below the first guess.
+/// close the film (their discretisation error exceeds it), so not below 1e-3.
 fn film_scale(film: f64) -> f64 {
     film.abs().max(1e-3)
 }
