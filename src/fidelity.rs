@@ -14,7 +14,45 @@ pub enum Level {
     High,
 }
 
-/// What the solver did: the response's `solver` block.
+/// Why an iterative solve stopped. Only `converged` (or `direct`, where nothing iterates) comes
+/// with a result; the others answer 422 (504 for `deadline`) with this report's numbers.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum StopReason {
+    /// A closed form or a direct evaluation: nothing iterated.
+    Direct,
+    /// The convergence criterion of the method was met.
+    Converged,
+    /// The iteration cap was reached first.
+    IterationCap,
+    /// The request's deadline passed, or the client went away.
+    Deadline,
+    /// The iterate blew up (non-finite or growing residual).
+    Diverged,
+    /// The iteration could make no further progress (no descent, a step out of the domain).
+    Stalled,
+}
+
+/// What one of the report's `iterations` is, so that rooms can be compared.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum IterationUnit {
+    /// Nothing iterated (a closed form).
+    None,
+    /// Relaxation sweeps over a grid (SOR, projected SOR, Gauss–Seidel).
+    Sweeps,
+    /// Newton steps (each a linear solve, with its line search).
+    NewtonSteps,
+    /// Multigrid cycles on the finest grid.
+    MultigridCycles,
+    /// Steps of a bracketed root search (Brent: one evaluation each).
+    RootSearchSteps,
+    /// Evaluations of the inner model (for example whole film solves of an outer search).
+    Evaluations,
+}
+
+/// What the solver did: the response's `solver` block. Filled by the solver driver
+/// ([`crate::numerics::driver`]); a room adds only the fidelity, grid and error estimate.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct SolverReport {
     /// The scheme, e.g. `closed_form` or `finite_volume_psor`.
@@ -24,8 +62,16 @@ pub struct SolverReport {
     /// Grid size where the method has one.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub grid: Option<Vec<u32>>,
-    /// Iterations of the outer loop (0 for a closed form).
+    /// Iterations of the outer loop (0 for a closed form), in `iterations_unit`.
     pub iterations: u32,
+    /// What one iteration is.
+    pub iterations_unit: IterationUnit,
+    /// Evaluations of the inner model, where they differ from the iterations (trial points of
+    /// a line search, film solves of an outer search).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub evaluations: Option<u32>,
+    /// Why the solve stopped.
+    pub stop_reason: StopReason,
     /// Final residual, where the method iterates.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub residual: Option<f64>,
@@ -44,10 +90,34 @@ impl SolverReport {
             fidelity: Level::ClosedForm,
             grid: None,
             iterations: 0,
+            iterations_unit: IterationUnit::None,
+            evaluations: None,
+            stop_reason: StopReason::Direct,
             residual: None,
             error_estimate: None,
             elapsed_ms: 0.0,
         }
+    }
+
+    /// The same report at fidelity `level`.
+    #[must_use]
+    pub fn at(mut self, level: Level) -> Self {
+        self.fidelity = level;
+        self
+    }
+
+    /// The same report on `grid`.
+    #[must_use]
+    pub fn on_grid(mut self, grid: Vec<u32>) -> Self {
+        self.grid = Some(grid);
+        self
+    }
+
+    /// The same report with an estimated relative error.
+    #[must_use]
+    pub fn with_error_estimate(mut self, error: Option<f64>) -> Self {
+        self.error_estimate = error;
+        self
     }
 }
 

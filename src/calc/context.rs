@@ -2,7 +2,7 @@
 //! report and the warnings; and the ways it can fail.
 
 use std::collections::BTreeMap;
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::AtomicBool;
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -10,7 +10,9 @@ use serde::Serialize;
 use utoipa::ToSchema;
 
 use crate::effects::Decision;
-use crate::fidelity::SolverReport;
+use crate::fidelity::{SolverReport, StopReason};
+use crate::numerics::driver::{Budget, Stopped};
+use crate::numerics::roots::RootError;
 
 /// A note on a result that is valid but deserves the user's attention (a model used outside
 /// the range its source gives, an assumed property).
@@ -37,6 +39,10 @@ pub enum CalcError {
         iterations: u32,
         residual: f64,
     },
+    /// An iterative solve stopped without converging (422, with its report: stop reason,
+    /// iterations, residual). A deadline stop is [`CalcError::DeadlineExceeded`] instead.
+    #[error("{} did not converge in {} iterations (residual {:e})", .0.method, .0.iterations, .0.residual.unwrap_or(f64::NAN))]
+    Stopped(Box<SolverReport>),
     /// The deadline passed or the request was cancelled (504).
     #[error("deadline exceeded")]
     DeadlineExceeded,
@@ -52,13 +58,39 @@ impl CalcError {
             message: message.into(),
         }
     }
+
+    /// A bracketed root search that found no root, as the answer to the request: a capped
+    /// search is a 422 with its last bracket width as the residual; a bracket without a sign
+    /// change or a non-finite function value is a bug of the caller (500), since rooms bracket
+    /// their roots by construction. A room for which a missing sign change means something
+    /// physical (a load the film cannot carry) matches that case itself before calling this.
+    pub fn from_root(method: &'static str, error: RootError) -> Self {
+        match error {
+            RootError::NotConverged { iterations, width } => CalcError::NotConverged {
+                method,
+                iterations,
+                residual: width,
+            },
+            other => CalcError::Internal(format!("{method}: {other:?}")),
+        }
+    }
+}
+
+impl From<Stopped> for CalcError {
+    /// The one mapping of a driver stop: the deadline is a 504, every other stop a 422 that
+    /// carries the report.
+    fn from(stopped: Stopped) -> Self {
+        match stopped.reason() {
+            StopReason::Deadline => CalcError::DeadlineExceeded,
+            _ => CalcError::Stopped(Box::new(stopped.report)),
+        }
+    }
 }
 
 /// The running calculation's surroundings.
 #[derive(Debug)]
 pub struct Context {
-    deadline: Instant,
-    cancelled: Arc<AtomicBool>,
+    budget: Budget,
     pub(crate) effects: BTreeMap<&'static str, Decision>,
     pub(crate) warnings: Vec<Warning>,
     pub(crate) report: Option<SolverReport>,
@@ -68,8 +100,7 @@ impl Context {
     /// A context that stops at `deadline` or when `cancelled` is set by the caller.
     pub fn new(deadline: Instant, cancelled: Arc<AtomicBool>) -> Self {
         Context {
-            deadline,
-            cancelled,
+            budget: Budget::new(deadline, cancelled),
             effects: BTreeMap::new(),
             warnings: Vec::new(),
             report: None,
@@ -78,26 +109,28 @@ impl Context {
 
     /// Long loops call this every few iterations so a late or cancelled request stops computing.
     pub fn check_deadline(&self) -> Result<(), CalcError> {
-        if self.cancelled.load(Ordering::Relaxed) || Instant::now() >= self.deadline {
-            Err(CalcError::DeadlineExceeded)
-        } else {
+        if self.budget.alive() {
             Ok(())
+        } else {
+            Err(CalcError::DeadlineExceeded)
         }
     }
 
-    /// A cheap handle numerics can poll without borrowing the context: true while the request
-    /// is neither late nor cancelled.
+    /// The request's deadline carrier, for numerics and models: the one handle every loop
+    /// polls (through the solver driver).
     pub fn budget(&self) -> Budget {
-        Budget {
-            deadline: self.deadline,
-            cancelled: self.cancelled.clone(),
-        }
+        self.budget.clone()
     }
 
     /// A context for one step of a composed calculation: the same deadline, its own decisions,
     /// warnings and report.
     pub fn child(&self) -> Context {
-        Context::new(self.deadline, self.cancelled.clone())
+        Context {
+            budget: self.budget.clone(),
+            effects: BTreeMap::new(),
+            warnings: Vec::new(),
+            report: None,
+        }
     }
 
     /// Record the decision on one effect.
@@ -117,18 +150,5 @@ impl Context {
     /// Set the solver report (its `elapsed_ms` is filled in by the caller).
     pub fn report(&mut self, report: SolverReport) {
         self.report = Some(report);
-    }
-}
-
-/// See [`Context::budget`].
-#[derive(Debug, Clone)]
-pub struct Budget {
-    deadline: Instant,
-    cancelled: Arc<AtomicBool>,
-}
-
-impl Budget {
-    pub fn alive(&self) -> bool {
-        !self.cancelled.load(Ordering::Relaxed) && Instant::now() < self.deadline
     }
 }

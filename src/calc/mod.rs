@@ -12,7 +12,8 @@ mod registry;
 #[cfg(test)]
 pub(crate) mod testing;
 
-pub use context::{Budget, CalcError, Context, Warning};
+pub use crate::numerics::driver::Budget;
+pub use context::{CalcError, Context, Warning};
 pub use registry::{
     execute, find, validate_value, Entry, Envelope, Executed, Failure, FieldError, REGISTRY,
 };

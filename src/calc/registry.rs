@@ -311,4 +311,75 @@ mod tests {
             assert!(out.is_ok(), "{}: {:?}", e.path, out.err());
         }
     }
+
+    /// The effect names agree in every room: the `EFFECTS` list, the fields of the request's
+    /// `effects` object (its schema) and the decisions the room reports when it runs its example
+    /// with every effect `on` where the request takes an `effects` object (so each is decided).
+    #[test]
+    fn every_room_names_its_effects_once() {
+        for e in REGISTRY {
+            let listed: std::collections::BTreeSet<&str> = e.effects.iter().copied().collect();
+            let mut schemas = Vec::new();
+            (e.schemas)(&mut schemas);
+            let schemas: BTreeMap<String, serde_json::Value> = schemas
+                .into_iter()
+                .map(|(name, s)| (name, serde_json::to_value(s).unwrap()))
+                .collect();
+            let input = &schemas[&*(e.schema_names)().0];
+            let fields: std::collections::BTreeSet<String> = match input.pointer("/properties/effects") {
+                None => Default::default(),
+                Some(effects) => {
+                    let effects = resolve(effects, &schemas);
+                    let props = effects["properties"].as_object().unwrap_or_else(|| {
+                        panic!("{}: the effects schema has no properties: {effects}", e.path)
+                    });
+                    props.keys().cloned().collect()
+                }
+            };
+            if !fields.is_empty() {
+                let fields: std::collections::BTreeSet<&str> =
+                    fields.iter().map(String::as_str).collect();
+                assert_eq!(fields, listed, "{}: effects fields vs EFFECTS", e.path);
+            }
+            let far = Instant::now() + std::time::Duration::from_secs(30);
+            let out = (e.execute)(e.example.as_bytes(), far, Arc::default())
+                .unwrap_or_else(|f| panic!("{}: {f:?}", e.path));
+            let envelope: serde_json::Value = serde_json::from_slice(&out.body).unwrap();
+            let decided: std::collections::BTreeSet<&str> = envelope["effects"]
+                .as_object()
+                .unwrap()
+                .keys()
+                .map(String::as_str)
+                .collect();
+            assert_eq!(decided, listed, "{}: decided effects vs EFFECTS", e.path);
+            // Every response's solver block says why it stopped and what an iteration is.
+            for key in ["stop_reason", "iterations_unit", "iterations", "method"] {
+                assert!(
+                    envelope["solver"].get(key).is_some(),
+                    "{}: solver.{key} missing in {}",
+                    e.path,
+                    envelope["solver"]
+                );
+            }
+        }
+    }
+
+    /// A schema with its `$ref` (or a one-element `allOf`/`oneOf` around one) followed.
+    fn resolve<'a>(
+        schema: &'a serde_json::Value,
+        all: &'a BTreeMap<String, serde_json::Value>,
+    ) -> &'a serde_json::Value {
+        if let Some(r) = schema.get("$ref").and_then(|r| r.as_str()) {
+            let name = r.rsplit('/').next().unwrap();
+            return resolve(&all[name], all);
+        }
+        for key in ["allOf", "oneOf"] {
+            if let Some(inner) = schema.get(key).and_then(|v| v.as_array()) {
+                if let Some(r) = inner.iter().find(|s| s.get("$ref").is_some()) {
+                    return resolve(r, all);
+                }
+            }
+        }
+        schema
+    }
 }

@@ -7,6 +7,7 @@ use serde::Serialize;
 use utoipa::ToSchema;
 
 use crate::calc::{CalcError, Failure, FieldError};
+use crate::fidelity::{IterationUnit, StopReason};
 
 /// A problem report (RFC 9457).
 #[derive(Debug, Clone, Serialize, ToSchema)]
@@ -26,6 +27,15 @@ pub struct Problem {
     /// For a solver that did not converge: its final residual.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub residual: Option<f64>,
+    /// For a solver that did not converge: why it stopped (`iteration_cap`, `stalled`,
+    /// `diverged`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub stop_reason: Option<StopReason>,
+    /// For a solver that did not converge: its iterations, and what one iteration is.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub iterations: Option<u32>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub iterations_unit: Option<IterationUnit>,
     /// For 503: seconds to wait before retrying.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub retry_after_s: Option<u32>,
@@ -44,6 +54,9 @@ impl Problem {
             detail: detail.into(),
             errors: Vec::new(),
             residual: None,
+            stop_reason: None,
+            iterations: None,
+            iterations_unit: None,
             retry_after_s: None,
         }
     }
@@ -132,6 +145,21 @@ impl Problem {
                     e.to_string(),
                 );
                 p.residual = Some(residual).filter(|r| r.is_finite());
+                (p, None)
+            }
+            Failure::Calc(e @ CalcError::Stopped(_)) => {
+                let mut p = Problem::new(
+                    StatusCode::UNPROCESSABLE_ENTITY,
+                    "not-converged",
+                    "Solver did not converge",
+                    e.to_string(),
+                );
+                if let CalcError::Stopped(report) = e {
+                    p.residual = report.residual.filter(|r| r.is_finite());
+                    p.stop_reason = Some(report.stop_reason);
+                    p.iterations = Some(report.iterations);
+                    p.iterations_unit = Some(report.iterations_unit);
+                }
                 (p, None)
             }
             Failure::Calc(CalcError::DeadlineExceeded) => (Problem::deadline(), None),

@@ -1,11 +1,16 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
+pub mod dense;
+pub mod driver;
 pub mod elliptic;
 pub mod fft;
 pub mod half_space;
+pub mod interpolate;
 pub mod multigrid;
+pub mod newton;
 pub mod optimise;
 pub mod quadrature;
+pub mod refine;
 pub mod reynolds;
 pub mod richardson;
 pub mod roots;

@@ -1,6 +1,9 @@
 //! Bracketed root finding. Brent's method (inverse quadratic interpolation with bisection as a
 //! safeguard): it never leaves the bracket, so it converges whenever f changes sign on [a, b].
 
+use super::driver::{Budget, Driver, Verdict};
+use crate::fidelity::IterationUnit;
+
 /// When to stop: `x_tolerance` on the root (absolute), with an iteration cap that is never
 /// unbounded.
 #[derive(Debug, Clone, Copy)]
@@ -61,7 +64,17 @@ pub fn brent(
     let (mut c, mut fc) = (a, fa);
     let mut d = b - a;
     let mut e = d;
-    for iteration in 1..=stop.max_iterations {
+    let mut failure = None;
+    // One driver iteration: test the bracket, then (if open) one interpolation or bisection
+    // step with its evaluation. The driver's cap is the search's; there is no deadline here
+    // (each step is one evaluation of f, which polls its own).
+    let run = Driver::new(
+        "brent",
+        IterationUnit::RootSearchSteps,
+        stop.max_iterations,
+        &Budget::unlimited(),
+    )
+    .run(|_| {
         if fb.signum() == fc.signum() {
             c = a;
             fc = fa;
@@ -75,10 +88,7 @@ pub fn brent(
         let tol = 2.0 * f64::EPSILON * b.abs() + 0.5 * stop.x_tolerance;
         let m = 0.5 * (c - b);
         if m.abs() <= tol || fb == 0.0 {
-            return Ok(Root {
-                x: b,
-                iterations: iteration,
-            });
+            return Verdict::Converged(b, (c - b).abs());
         }
         if e.abs() >= tol && fa.abs() > fb.abs() {
             let s = fb / fa;
@@ -113,13 +123,21 @@ pub fn brent(
         b += if d.abs() > tol { d } else { tol.copysign(m) };
         fb = f(b);
         if !fb.is_finite() {
-            return Err(RootError::NonFinite { x: b });
+            failure = Some(RootError::NonFinite { x: b });
+            return Verdict::Diverged(f64::NAN);
         }
+        Verdict::Continue((c - b).abs())
+    });
+    match run {
+        Ok(done) => Ok(Root {
+            x: done.value,
+            iterations: done.report.iterations,
+        }),
+        Err(stopped) => Err(failure.unwrap_or(RootError::NotConverged {
+            iterations: stopped.report.iterations,
+            width: stopped.report.residual.unwrap_or(f64::NAN),
+        })),
     }
-    Err(RootError::NotConverged {
-        iterations: stop.max_iterations,
-        width: (c - b).abs(),
-    })
 }
 
 #[cfg(test)]

@@ -26,7 +26,7 @@ use utoipa::ToSchema;
 
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::fidelity::{FidelityRequest, Level, IterationUnit, SolverReport, StopReason};
 use crate::numerics::elliptic::{carlson_rd, complete_from_complement};
 use crate::numerics::optimise::brent_minimise;
 use crate::numerics::roots::{brent, RootError, Stopping};
@@ -624,6 +624,9 @@ fn exact_ellipse(radius_ratio: f64) -> Result<(Ellipse, SolverReport), CalcError
         fidelity: Level::Standard,
         grid: None,
         iterations: root.iterations,
+        iterations_unit: IterationUnit::RootSearchSteps,
+        evaluations: None,
+        stop_reason: StopReason::Converged,
         residual: Some((achieved / radius_ratio - 1.0).abs()),
         error_estimate: None,
         elapsed_ms: 0.0,

@@ -17,7 +17,7 @@ use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{Budget, CalcError, Context};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::SolverReport;
+use crate::fidelity::{IterationUnit, SolverReport, StopReason};
 use crate::numerics::roots::{brent, RootError, Stopping};
 
 /// Standard gravity, m/s² (the default rotor mass is W/g).
@@ -784,6 +784,9 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
                 approximation_name(case).unwrap_or_default()
             ),
             iterations: evaluations,
+            iterations_unit: IterationUnit::RootSearchSteps,
+            evaluations: None,
+            stop_reason: StopReason::Converged,
             ..SolverReport::closed_form("closed_form")
         },
         Method::Numerical { level, mesh, .. } => SolverReport {
@@ -796,6 +799,9 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
             fidelity: level,
             grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
             iterations: point.sweeps,
+            iterations_unit: IterationUnit::Sweeps,
+            evaluations: None,
+            stop_reason: StopReason::Converged,
             residual: point.residual,
             error_estimate: point.error_estimate,
             elapsed_ms: 0.0,

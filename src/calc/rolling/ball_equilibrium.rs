@@ -47,7 +47,7 @@
 //! Not checked against a worked example: the texts have none.
 
 use crate::calc::{CalcError, Context};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::{Level, IterationUnit, SolverReport, StopReason};
 use crate::numerics::optimise::brent_minimise;
 
 const TOLERANCE: f64 = 1e-9;
@@ -768,6 +768,9 @@ impl Problem {
                 fidelity: Level::Standard,
                 grid: None,
                 iterations,
+                iterations_unit: IterationUnit::NewtonSteps,
+                evaluations: None,
+                stop_reason: StopReason::Converged,
                 residual: Some(residual),
                 error_estimate: None,
                 elapsed_ms: 0.0,

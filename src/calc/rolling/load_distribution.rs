@@ -41,7 +41,7 @@ use crate::calc::contact::hertz::HertzOutput;
 use crate::calc::quantity::NonNegative;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::{Level, IterationUnit, SolverReport, StopReason};
 use crate::numerics::roots::{brent, Root, RootError, Stopping};
 
 pub struct LoadDistribution;
@@ -1411,6 +1411,9 @@ fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
         fidelity: Level::Standard,
         grid: None,
         iterations,
+        iterations_unit: if method.starts_with("newton") { IterationUnit::NewtonSteps } else { IterationUnit::RootSearchSteps },
+        evaluations: None,
+        stop_reason: StopReason::Converged,
         residual: Some(residual),
         error_estimate: None,
         elapsed_ms: 0.0,

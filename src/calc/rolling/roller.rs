@@ -37,7 +37,7 @@ use crate::calc::contact::hertz::{
 };
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::fidelity::{FidelityRequest, Level, IterationUnit, SolverReport, StopReason};
 
 /// Largest diameter or length accepted, m.
 const MAX_SIZE_M: f64 = 100.0;
@@ -350,6 +350,9 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
         fidelity: Level::Standard,
         grid: None,
         iterations,
+        iterations_unit: IterationUnit::RootSearchSteps,
+        evaluations: None,
+        stop_reason: StopReason::Converged,
         residual: Some(residual),
         error_estimate: None,
         elapsed_ms: 0.0,

@@ -31,7 +31,7 @@ use crate::calc::lubricant::{Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::fidelity::{FidelityRequest, Level, IterationUnit, SolverReport, StopReason};
 use crate::numerics::richardson;
 
 pub struct Ehl;
@@ -804,6 +804,9 @@ fn point_contact(
         fidelity: level,
         grid: Some(vec![cells as u32, cells as u32]),
         iterations: fine.cycles,
+        iterations_unit: IterationUnit::MultigridCycles,
+        evaluations: None,
+        stop_reason: StopReason::Converged,
         residual: Some(fine.residual),
         error_estimate: Some(error),
         elapsed_ms: 0.0,
@@ -1056,6 +1059,9 @@ fn solve_nested(
                 fidelity: cells.level,
                 grid: Some(vec![fine_cells as u32, 1]),
                 iterations,
+                iterations_unit: IterationUnit::NewtonSteps,
+                evaluations: None,
+                stop_reason: StopReason::Converged,
                 residual: Some(fine.residual),
                 error_estimate: Some(error),
                 elapsed_ms: 0.0,
