@@ -2,8 +2,17 @@
 //! interpolation where it is safe), which converges superlinearly on smooth functions and never
 //! leaves the bracket (Brent 1973, *Algorithms for Minimization without Derivatives*, ch. 5).
 
-/// The minimum of f on [a, b] to an absolute tolerance `x_tolerance` in x (at most 100
-/// evaluations): (x, f(x)).
+use super::driver::{Budget, Driver, Verdict};
+use crate::fidelity::IterationUnit;
+
+/// Iterations of [`brent_minimise`]: each shrinks the bracket, at worst every other one by the
+/// golden ratio, so 100 take any bracket far below a double's resolution of its ends.
+const MAX_ITERATIONS: u32 = 100;
+
+/// The minimum of f on [a, b] to an absolute tolerance `x_tolerance` in x: (x, f(x)). Runs
+/// under the solver driver with a cap of 100 iterations; a capped run (a tolerance below the
+/// bracket's round-off) still returns the best point found, which is then as good as the
+/// doubles allow.
 pub fn brent_minimise(
     mut f: impl FnMut(f64) -> f64,
     a: f64,
@@ -18,12 +27,19 @@ pub fn brent_minimise(
     let mut fx = f(x);
     let (mut fw, mut fv) = (fx, fx);
     let (mut d, mut e) = (0.0f64, 0.0f64);
-    for _ in 0..100 {
+    let driver = Driver::new(
+        "brent_minimise",
+        IterationUnit::RootSearchSteps,
+        MAX_ITERATIONS,
+        &Budget::unlimited(),
+    );
+    // The verdict carries no value: the minimum is the state (x, fx) the loop leaves.
+    let _capped_or_converged = driver.run(|_| {
         let middle = 0.5 * (a + b);
         let tol1 = x_tolerance;
         let tol2 = 2.0 * tol1;
         if (x - middle).abs() <= tol2 - 0.5 * (b - a) {
-            break;
+            return Verdict::Converged((), b - a);
         }
         let mut golden = true;
         if e.abs() > tol1 {
@@ -77,7 +93,9 @@ pub fn brent_minimise(
                 (v, fv) = (u, fu);
             }
         }
-    }
+        // The bracket's width is the residual; a NaN from f leaves the bracket unchanged.
+        Verdict::Continue((b - a).abs().min(f64::MAX))
+    });
     (x, fx)
 }
 
