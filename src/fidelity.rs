@@ -99,6 +99,13 @@ impl SolverReport {
         }
     }
 
+    /// The same report under the room's name for its method.
+    #[must_use]
+    pub fn named(mut self, method: impl Into<String>) -> Self {
+        self.method = method.into();
+        self
+    }
+
     /// The same report at fidelity `level`.
     #[must_use]
     pub fn at(mut self, level: Level) -> Self {

@@ -2,7 +2,7 @@
 //! safeguard): it never leaves the bracket, so it converges whenever f changes sign on [a, b].
 
 use super::driver::{Budget, Driver, Verdict};
-use crate::fidelity::IterationUnit;
+use crate::fidelity::{IterationUnit, SolverReport};
 
 /// When to stop: `x_tolerance` on the root (absolute), with an iteration cap that is never
 /// unbounded.
@@ -23,12 +23,14 @@ pub enum RootError {
     NotConverged { iterations: u32, width: f64 },
 }
 
-/// A root and the work it took.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A root and the work it took: the driver's report (method `brent`; rename it with
+/// [`SolverReport::named`] where the search is the room's headline solve).
+#[derive(Debug, Clone, PartialEq)]
 #[must_use]
 pub struct Root {
     pub x: f64,
     pub iterations: u32,
+    pub report: SolverReport,
 }
 
 /// Find x in [a, b] with f(x) = 0, given f(a)·f(b) ≤ 0 (Brent 1973, *Algorithms for
@@ -46,17 +48,21 @@ pub fn brent(
             return Err(RootError::NonFinite { x });
         }
     }
-    if fa == 0.0 {
-        return Ok(Root {
-            x: a,
-            iterations: 0,
-        });
-    }
-    if fb == 0.0 {
-        return Ok(Root {
-            x: b,
-            iterations: 0,
-        });
+    let driver = Driver::new(
+        "brent",
+        IterationUnit::RootSearchSteps,
+        stop.max_iterations,
+        &Budget::unlimited(),
+    );
+    for (x, fx) in [(a, fa), (b, fb)] {
+        if fx == 0.0 {
+            let done = driver.converged_at_start(x, 0.0);
+            return Ok(Root {
+                x,
+                iterations: 0,
+                report: done.report,
+            });
+        }
     }
     if fa.signum() == fb.signum() {
         return Err(RootError::NoSignChange { a, fa, b, fb });
@@ -68,13 +74,7 @@ pub fn brent(
     // One driver iteration: test the bracket, then (if open) one interpolation or bisection
     // step with its evaluation. The driver's cap is the search's; there is no deadline here
     // (each step is one evaluation of f, which polls its own).
-    let run = Driver::new(
-        "brent",
-        IterationUnit::RootSearchSteps,
-        stop.max_iterations,
-        &Budget::unlimited(),
-    )
-    .run(|_| {
+    let run = driver.run(|_| {
         if fb.signum() == fc.signum() {
             c = a;
             fc = fa;
@@ -132,6 +132,7 @@ pub fn brent(
         Ok(done) => Ok(Root {
             x: done.value,
             iterations: done.report.iterations,
+            report: done.report,
         }),
         Err(stopped) => Err(failure.unwrap_or(RootError::NotConverged {
             iterations: stopped.report.iterations,
