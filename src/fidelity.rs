@@ -51,8 +51,9 @@ pub enum IterationUnit {
     Evaluations,
 }
 
-/// What the solver did: the response's `solver` block. Filled by the solver driver
-/// ([`crate::numerics::driver`]); a room adds only the fidelity, grid and error estimate.
+// Filled by the solver driver (`numerics::driver`); a room adds only the fidelity, the grid and
+// the error estimate.
+/// What the solver did: the response's `solver` block.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct SolverReport {
     /// The scheme, e.g. `closed_form` or `finite_volume_psor`.
