@@ -46,8 +46,8 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::moving_heat_source::{self, Shape};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::surface::moving_heat_source::{self, Shape};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{Level, SolverReport};
 
