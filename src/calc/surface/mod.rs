@@ -15,5 +15,6 @@
 //! asperities share in mixed lubrication). Each is a model file: plain types and functions, no
 //! serde, no `Context`; the rooms that expose them on a URL hold the wire.
 
+pub mod flash;
 pub mod moving_heat_source;
 pub mod roughness;

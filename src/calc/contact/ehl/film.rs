@@ -457,21 +457,7 @@ pub struct EhlFilmOutput {
 impl Calculation for EhlFilm {
     const PATH: &'static str = "/v1/contacts/ehl-film";
     const SUMMARY: &'static str = "EHL film thickness (Hamrock–Dowson, soft EHL, regimes, line-contact fits), film parameter Λ, inlet heating and starvation";
-    const DESCRIPTION: &'static str = "Closed-form elastohydrodynamic film thickness of two lubricated bodies (the Hertz room's body objects: signed principal radii, \
-E and ν). Conventions: x is the entrainment (rolling) direction; R_x = (1/r₁ₓ + 1/r₂ₓ)⁻¹ along it (Hamrock's R_x and Stachowiak's Hamrock–Dowson R′ — not \
-Stachowiak's Hertz R′ = (1/R_x + 1/R_y)⁻¹); E′ = 2/[(1 − ν₁²)/E₁ + (1 − ν₂²)/E₂] (1/E′ = ½Σ(1 − ν²)/E, Hamrock, Stachowiak ch. 7, Khonsari; twice Johnson's E*); \
-ū = (u₁ + u₂)/2 is the MEAN entrainment speed; k = D_y/D_x from the exact Hertz ellipticity (`standard`) or its fits (`closed_form`). \
-Groups (Hamrock eqs 21.52–21.56): U = η₀ū/(E′R_x), G = αE′, W = F/(E′R_x²), H = h/R_x; α from Barus or from Roelands' Z as α = Z·5.1e-9(ln η₀ + 9.67). \
-Point contact: hard EHL H_min = 3.63 U^0.68 G^0.49 W^−0.073 (1 − e^−0.68k) (Hamrock eq. 21.57, Stachowiak eq. 7.27, Khonsari eq. 15.14), \
-H_c = 2.69 U^0.67 G^0.53 W^−0.067 (1 − 0.61e^−0.73k) (Stachowiak eq. 7.26); soft EHL H_min = 7.43 U^0.65 W^−0.21 (1 − 0.85e^−0.31k) (Hamrock eq. 21.58). \
-Regimes in Ĥ = H(W/U)², g_v = GW³/U², g_e = W^(8/3)/U² (Hamrock eqs 21.59–21.67, Stachowiak §7.4): isoviscous–rigid, piezoviscous–rigid, \
-isoviscous–elastic, piezoviscous–elastic; the texts draw the map without a numeric rule, so here a contact is elastic when Ĥ_ie > Ĥ_ir, and then piezoviscous \
-when Ĥ_pve > Ĥ_ie, or for a rigid one when Ĥ_pvr > Ĥ_ir (boundaries where adjacent regime formulas are equal). Line contact (`line`): Pan–Hamrock (1989) H_min = 1.714 W′^−0.128 U^0.694 G^0.568, H_c = 2.922 W′^−0.166 U^0.692 G^0.470 (primary \
-paper, verify); Dowson–Higginson H_min = 2.65 G^0.54 U^0.7 W′^−0.13 (Khonsari eq. 15.10); the texts' k → ∞ limit of the point formulas with W = F/(E′R_x²) \
-(Hamrock's roller example, Stachowiak Problems 7.4, 7.13, 7.15); Moes (1992) central film over all regimes (primary paper, verify); W′ = F/(L E′ R_x). \
-Film parameter Λ = h_min/√(σ₁² + σ₂²): full film Λ > 3, mixed 1–3, boundary < 1 (Hamrock §21.3.6, Khonsari §15.6, Stachowiak §7.5). \
-Effects: inlet shear heating by the Gupta et al. (1992) factor with L = (−∂η/∂T)ū²/k_f (verify), starvation from the inlet meniscus distance \
-(Hamrock & Dowson 1977, verify), mixed lubrication judged from Λ. Warnings outside the fitted ranges (hard k 1–8, soft k 1–12, U and W decades).";
+    const DESCRIPTION: &'static str = include_str!("film.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm, Level::Standard];
     const EFFECTS: &'static [&'static str] = &["thermal", "starvation", "mixed_lubrication"];
     const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.00635, "radius_y_m": 0.00635, "elastic_modulus_pa": 2e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.0261455, "radius_y_m": -0.006604, "elastic_modulus_pa": 2e11, "poisson_ratio": 0.3}, "load_n": 4513, "entrainment_speed_m_s": 6.252, "lubricant": {"viscosity_pa_s": 0.04, "pressure_viscosity_coefficient_1_pa": 2.3e-8}, "temperature_c": 40, "roughness": {"body1_rms_m": 6.25e-8, "body2_rms_m": 1.75e-7}}"#;

@@ -6,7 +6,8 @@
 //!   which composed rooms call typed.
 //! - [`numerical`]: wire of `POST /v1/contacts/ehl` and its driver over the solvers:
 //!   [`line`] (coupled Newton on nested grids), [`point`] (FAS multigrid), [`fluid`]
-//!   (viscosity and density in the solvers' units).
+//!   (viscosity and density in the solvers' units), [`traction`] (sliding traction of the
+//!   converged film).
 //! - [`formulas`]: Hamrock–Dowson (hard, soft, the four regimes and the regime rule),
 //!   Pan–Hamrock, Dowson–Higginson, Moes; [`corrections`]: the inlet-heating (Gupta) and
 //!   starvation (Hamrock–Dowson meniscus) factors. The film parameter Λ is surface physics
@@ -20,5 +21,6 @@ pub mod formulas;
 pub mod line;
 pub mod numerical;
 pub mod point;
+pub mod traction;
 
 pub use numerical::Ehl;

@@ -23,6 +23,7 @@ use super::formulas::{
 use super::line::{interpolate, LineFailure, LineProblem, LineSolution};
 use super::point;
 use super::point::{HertzEllipse, PointFailure, PointProblem, PointSolution};
+use super::traction::{self, ShearLaw, TractionLaw};
 use crate::calc::contact::hertz::{
     contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
     APPROACH_UNDEFINED_FOR_FLAT,
@@ -486,7 +487,7 @@ impl Calculation for Ehl {
     const PATH: &'static str = "/v1/contacts/ehl";
     const SUMMARY: &'static str =
         "Numerical EHL of a line or point contact: film, pressure spike, horseshoe, traction";
-    const DESCRIPTION: &'static str = "Isothermal elastohydrodynamic contact solved numerically — a line contact when `line` is given, else a point (circular or elliptical) contact. Line: Reynolds (finite volumes, second-order upwind Couette flux) with the lubricant's Barus or Roelands viscosity and Dowson–Higginson density, half-space elastic deformation (exact cell integrals, the Hertz part analytic), load balance ∫p dx = w, and cavitation by complementarity (p ≥ 0, primal–dual active set) — all coupled in one Newton solve with an exact dense Jacobian (Venner & Lubrecht 2000 ch. 8 scaling; Stachowiak §7.4; Khonsari §15.5). Grids cluster at the inlet edge and the outlet spike; each level solves two nested grids and Richardson-extrapolates the films, reporting the fine grid's estimated error (a conservative bound on the extrapolated film), and refines on its own while that exceeds the level's tolerance (fast 5 %, standard 1 %, high 0.2 %). Converges across the Moes map up to M = 1000 at L = 10; a Newton solve that stalls answers 422 with its residual. Point: the same physics in two dimensions (Y scaled by the transverse Hertz semi-axis, the deformation integral exact per cell and summed by FFT) by FAS multigrid — Gauss–Seidel relaxation in the inlet, distributive Jacobi in the Hertz zone, the film constant from the load balance on the coarsest grid, full multigrid from 16² cells (Venner & Lubrecht 2000 ch. 8) — on 64², 128² or 256² cells (fast, standard, high) with Richardson extrapolation against the grid of half as many cells and a warning when the estimated error exceeds 10 %, 3 % or 1 %; Moes point map M = W(2U)^−¾ from 1 to 2000, L ≤ 50. A grid whose cycles stall or diverge gives way to the next coarser one with a `grid_fallback` warning; a film that closes on the grid, or cycles that stall with no coarser grid to give way to, answer 422 with the reason. Profiles follow the centre line y = 0; h_min is in the horseshoe's side lobes. Traction (Newtonian or Eyring, optionally capped by a limiting shear stress γp) from the converged field. Conventions: E′ = 2/Σ(1 − ν²)/E, ū the mean speed, x the entrainment direction, line M = W′(2U)^−½, point M = W(2U)^−¾, L = G(2U)^¼.";
+    const DESCRIPTION: &'static str = include_str!("numerical.md");
     const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
     const EFFECTS: &'static [&'static str] = &["compressibility", "piezoviscosity"];
     const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "roelands_pressure_viscosity_index": 0.6}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
@@ -1087,47 +1088,30 @@ fn solve_nested(
     }
 }
 
-/// Sliding traction ∫τ dA over the pressurised film, with the shear rate γ̇ = sū/h and the
-/// local viscosity η(p). `cells` yields (P, film in m, area in m²) per node.
+/// The traction of the converged film for the request's traction law.
 fn traction(
     spec: &NumericalEhlTractionSpec,
     fluid: &Fluid,
     cells: impl Iterator<Item = (f64, f64, f64)>,
     case: &NumericalEhlCase,
 ) -> NumericalEhlTraction {
+    let shear = match (spec.model, spec.eyring_stress_pa) {
+        (TractionModel::Eyring, Some(t0)) => ShearLaw::Eyring {
+            stress_pa: t0.get(),
+        },
+        _ => ShearLaw::Newtonian,
+    };
+    let law = TractionLaw {
+        shear,
+        limiting_shear_coefficient: spec.limiting_shear_coefficient.map(|g| g.get()),
+    };
     let sliding = case.slide_roll_ratio * case.speed_m_s;
-    let ph = fluid.hertz_pressure_pa;
-    let mut force = 0.0;
-    let (mut limited, mut pressurised) = (0.0, 0.0);
-    for (p, h, area) in cells {
-        if p <= 0.0 {
-            continue;
-        }
-        let eta = fluid.eta0_pa_s * fluid.ln_viscosity(p).0.exp();
-        let newtonian = eta * sliding / h.max(1e-12);
-        let mut tau = match (spec.model, spec.eyring_stress_pa) {
-            (TractionModel::Eyring, Some(t0)) => t0.get() * (newtonian / t0.get()).asinh(),
-            _ => newtonian,
-        };
-        pressurised += p * area;
-        if let Some(gamma) = spec.limiting_shear_coefficient {
-            let cap = gamma.get() * p * ph;
-            if tau > cap {
-                tau = cap;
-                limited += p * area;
-            }
-        }
-        force += tau * area;
-    }
+    let t = traction::traction(&law, fluid, sliding, case.load_n, cells);
     NumericalEhlTraction {
         model: spec.model,
-        traction_force_n: force,
-        traction_coefficient: force / case.load_n,
-        limited_load_fraction: if pressurised > 0.0 {
-            limited / pressurised
-        } else {
-            0.0
-        },
+        traction_force_n: t.force_n,
+        traction_coefficient: t.coefficient,
+        limited_load_fraction: t.limited_load_fraction,
     }
 }
 
