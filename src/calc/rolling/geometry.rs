@@ -354,12 +354,10 @@ impl BallBearing {
         load_n: f64,
         ctx: &mut Context,
     ) -> Result<HertzOutput, CalcError> {
-        let solution = self.raceway_solution(race, contact_angle, load_n)?;
-        for w in &solution.warnings {
-            ctx.warn(w.code, w.message.clone());
-        }
-        ctx.report(solution.report.clone());
-        Ok(HertzOutput::from_solution(&solution))
+        Ok(HertzOutput::reported(
+            &self.raceway_solution(race, contact_angle, load_n)?,
+            ctx,
+        ))
     }
 
     /// Load–deflection constant K of one ball on `race` at contact angle α (rad), N/m^1.5:

@@ -317,12 +317,10 @@ impl RollerBearing {
         length_m: f64,
         ctx: &mut Context,
     ) -> Result<HertzOutput, CalcError> {
-        let solution = self.raceway_solution(inner, load_n, length_m)?;
-        for w in &solution.warnings {
-            ctx.warn(w.code, w.message.clone());
-        }
-        ctx.report(solution.report.clone());
-        Ok(HertzOutput::from_solution(&solution))
+        Ok(HertzOutput::reported(
+            &self.raceway_solution(inner, load_n, length_m)?,
+            ctx,
+        ))
     }
 }
 

@@ -15,7 +15,7 @@ use super::formulas::{
     dowson_higginson, hard_central_film, hard_min_film, outside_fit, pan_hamrock, point_regime,
     regime_films, soft_min_film, Groups, MoesAsymptotes, Regime,
 };
-use crate::calc::contact::hertz::{Contact, MajorAxis, Solution, APPROACH_UNDEFINED_FOR_FLAT};
+use crate::calc::contact::hertz::{Contact, MajorAxis, Solution};
 use crate::calc::lubricant::model::{PressureLaw, TemperatureLaw};
 use crate::calc::lubricant::Lubricant;
 use crate::calc::surface::roughness::{film_parameter, LubricationRegime, FULL_FILM_LAMBDA};
@@ -180,11 +180,9 @@ pub fn solve(case: &FilmCase) -> Result<FilmSolution, CalcError> {
     let mut notes = Notes::default();
     // The dry contact's approach is not part of a film calculation: its warning is not passed
     // on (the film room never reported it); the others are.
-    for w in &hertz.warnings {
-        if w.code != APPROACH_UNDEFINED_FOR_FLAT {
-            notes.warnings.push(w.clone());
-        }
-    }
+    notes
+        .warnings
+        .extend(hertz.warnings_but_approach().cloned());
     let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
     let alpha = case.pressure_law.alpha_1_pa(eta0);
     if !(alpha.is_finite() && alpha > 0.0) {
@@ -507,8 +505,8 @@ fn starvation_factors(
         );
         return Ok((1.0, 1.0));
     }
-    let m_bar = meniscus / b;
-    if m_bar <= 1.0 {
+    let meniscus_ratio = meniscus / b;
+    if meniscus_ratio <= 1.0 {
         return Err(CalcError::impossible(
             "/inlet_meniscus_distance_m",
             format!("the meniscus must lie upstream of the Hertz zone: {meniscus:.3e} m is within the semi-axis b = {b:.3e} m along x"),
@@ -521,7 +519,7 @@ fn starvation_factors(
         mode,
         Criterion {
             name: "critical_to_actual_meniscus_ratio",
-            value: critical_c.max(critical_min) / m_bar,
+            value: critical_c.max(critical_min) / meniscus_ratio,
             threshold: 1.0,
         },
         what,
@@ -532,8 +530,8 @@ fn starvation_factors(
         return Ok((1.0, 1.0));
     }
     Ok((
-        starvation_factor(m_bar, critical_c, 0.29),
-        starvation_factor(m_bar, critical_min, 0.25),
+        starvation_factor(meniscus_ratio, critical_c, 0.29),
+        starvation_factor(meniscus_ratio, critical_min, 0.25),
     ))
 }
 

@@ -26,7 +26,6 @@ use super::point::{HertzEllipse, PointFailure, PointProblem, PointSolution};
 use super::traction::{self, ShearLaw, TractionLaw};
 use crate::calc::contact::hertz::{
     contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
-    APPROACH_UNDEFINED_FOR_FLAT,
 };
 use crate::calc::lubricant::model::PressureLaw;
 use crate::calc::lubricant::{Lubricant, LubricantSpec};
@@ -499,10 +498,8 @@ impl Calculation for Ehl {
         let hertz = case.hertz.solve()?;
         // The dry contact's approach is not part of an EHL solution: its warning is not passed
         // on; the others are, with the dry contact's report until the solver's replaces it.
-        for w in &hertz.warnings {
-            if w.code != APPROACH_UNDEFINED_FOR_FLAT {
-                ctx.warn(w.code, w.message.clone());
-            }
+        for w in hertz.warnings_but_approach() {
+            ctx.warn(w.code, w.message.clone());
         }
         ctx.report(hertz.report.clone());
         let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;

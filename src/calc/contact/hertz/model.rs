@@ -311,6 +311,10 @@ impl Contact {
         self.shape
     }
 
+    fn poisson_ratios(&self) -> [f64; 2] {
+        self.bodies.map(|b| b.poisson_ratio)
+    }
+
     /// Solve the contact: the exact or fitted ellipse, or the line; the subsurface maxima; the
     /// warnings (fit outside its range, contact not small against a radius, no approach against
     /// a flat) as data, in the order the room has always given them.
@@ -401,6 +405,14 @@ pub struct Solution {
 }
 
 impl Solution {
+    /// The warnings but the one about a line contact's approach against a flat: what rooms
+    /// that do not report the approach pass on (the EHL rooms never reported it).
+    pub fn warnings_but_approach(&self) -> impl Iterator<Item = &Warning> {
+        self.warnings
+            .iter()
+            .filter(|w| w.code != APPROACH_UNDEFINED_FOR_FLAT)
+    }
+
     /// `point` or `line`.
     pub fn contact_name(&self) -> &'static str {
         match self.footprint {
@@ -683,7 +695,7 @@ fn point_contact(case: &Contact) -> Result<Solution, CalcError> {
     };
     warnings.extend(warn_if_large(&case.bodies, minor, b));
     warnings.extend(warn_if_large(&case.bodies, major.unwrap_or(Axis::Y), a));
-    let stresses = subsurface(&case.bodies, p_max, b, |zeta, nu| {
+    let stresses = subsurface(case.poisson_ratios(), p_max, b, |zeta, nu| {
         ellipse_axis_stresses(a / b, zeta, nu)
     });
     Ok(Solution {
@@ -740,7 +752,7 @@ fn line_contact(case: &Contact, length_m: f64) -> Solution {
         }
     };
     warnings.extend(warn_if_large(&case.bodies, Axis::X, b));
-    let stresses = subsurface(&case.bodies, p_max, b, line_axis_stresses);
+    let stresses = subsurface(case.poisson_ratios(), p_max, b, line_axis_stresses);
     Solution {
         footprint: Footprint::Line {
             half_width_m: b,

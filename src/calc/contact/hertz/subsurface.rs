@@ -2,7 +2,6 @@
 //! axis below an ellipse (Boussinesq potentials in closed form) and below a line (McEwen), and
 //! their maxima in depth for the principal shear and the von Mises stress in each body.
 
-use super::model::Body;
 use crate::numerics::elliptic::carlson_rd;
 use crate::numerics::optimise::brent_minimise;
 
@@ -83,20 +82,19 @@ pub struct BodyStresses {
     pub max_von_mises_depth_m: f64,
 }
 
-/// The maxima of τ₁ and von Mises along the axis in each body, scaled by p_max and the depth
+/// The maxima of τ₁ and von Mises along the axis in each body (of Poisson's ratios ν₁, ν₂), scaled by p_max and the depth
 /// scale b (the semi-minor axis or the half-width). Bodies of equal ν share one search.
 pub(super) fn subsurface(
-    bodies: &[Body; 2],
+    poisson_ratios: [f64; 2],
     p_max: f64,
     b: f64,
     stresses: impl Fn(f64, f64) -> [f64; 3],
 ) -> Subsurface {
     let mut searched: Vec<(f64, [(f64, f64); 2])> = Vec::with_capacity(2);
-    let per_body: Vec<BodyStresses> = bodies
+    let per_body: Vec<BodyStresses> = poisson_ratios
         .iter()
         .zip(1u8..)
-        .map(|(body, index)| {
-            let nu = body.poisson_ratio;
+        .map(|(&nu, index)| {
             let maxima = match searched.iter().find(|(n, _)| *n == nu) {
                 Some((_, m)) => *m,
                 None => {

@@ -257,12 +257,7 @@ impl Calculation for Hertz {
     type Output = HertzOutput;
 
     fn run(case: Contact, ctx: &mut Context) -> Result<HertzOutput, CalcError> {
-        let solution = case.solve()?;
-        for warning in &solution.warnings {
-            ctx.warn(warning.code, warning.message.clone());
-        }
-        ctx.report(solution.report.clone());
-        Ok(HertzOutput::from_solution(&solution))
+        Ok(HertzOutput::reported(&case.solve()?, ctx))
     }
 }
 
@@ -368,6 +363,15 @@ impl SubsurfaceStress {
 }
 
 impl HertzOutput {
+    /// The response for a solved contact, its warnings and solver report passed to `ctx`.
+    pub fn reported(solution: &Solution, ctx: &mut Context) -> HertzOutput {
+        for warning in &solution.warnings {
+            ctx.warn(warning.code, warning.message.clone());
+        }
+        ctx.report(solution.report.clone());
+        HertzOutput::from_solution(solution)
+    }
+
     /// The response for a solved contact.
     pub fn from_solution(s: &Solution) -> HertzOutput {
         let (ellipse, line) = match s.footprint {
