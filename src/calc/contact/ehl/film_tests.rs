@@ -586,3 +586,25 @@ proptest! {
         prop_assert!(get(&ok(&roller(w, 1.5 * u, eta)), "/result/formulas/moes/central_film_thickness_m") > moes);
     }
 }
+
+/// The film calculation from Rust gives what the room gives.
+#[test]
+fn the_closed_form_model_is_the_room() {
+    use crate::calc::Validate;
+    let request: Value = serde_json::from_str(EhlFilm::EXAMPLE).unwrap();
+    let case = serde_json::from_value::<EhlFilmInput>(request.clone())
+        .unwrap()
+        .validate()
+        .unwrap();
+    let film = super::super::closed_form::solve(&case).unwrap();
+    let room = ok(&request);
+    assert_eq!(
+        get(&room, "/result/central_film_thickness_m"),
+        film.central_film_m
+    );
+    assert_eq!(get(&room, "/result/min_film_thickness_m"), film.min_film_m);
+    assert_eq!(
+        room["warnings"].as_array().unwrap().len(),
+        film.warnings.len()
+    );
+}

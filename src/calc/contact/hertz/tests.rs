@@ -592,3 +592,62 @@ proptest! {
         prop_assert!(get(&v, "approach_m") > 0.0);
     }
 }
+
+/// The model from Rust: a cylinder on a flat has no approach, and says so as data (the room
+/// passes it on; the EHL rooms do not).
+#[test]
+fn the_model_returns_its_warnings_as_data() {
+    use super::{Body, Contact, Method, Shape, APPROACH_UNDEFINED_FOR_FLAT};
+    let cylinder = |r: Option<f64>| Body {
+        radius_x_m: r,
+        radius_y_m: None,
+        modulus_pa: 2.1e11,
+        poisson_ratio: 0.3,
+    };
+    let contact = Contact::new(
+        [cylinder(Some(0.01)), cylinder(None)],
+        1000.0,
+        Shape::Line { length_m: 0.01 },
+        Method::Exact,
+    )
+    .unwrap();
+    let s = contact.solve().unwrap();
+    assert!(s.approach_m.is_none() && s.half_width_m().is_some());
+    assert!(s
+        .warnings
+        .iter()
+        .any(|w| w.code == APPROACH_UNDEFINED_FOR_FLAT));
+    assert_eq!(s.warnings_but_approach().count(), s.warnings.len() - 1);
+    let room = ok(
+        &json!({"body1": steel(Some(0.01), None), "body2": steel(None, None), "load_n": 1000.0, "line": {"length_m": 0.01}}),
+    );
+    assert_eq!(get(&room, "max_pressure_pa"), s.max_pressure_pa);
+}
+
+/// The model's refusals name typed fields; the room turns them into the request's pointers.
+#[test]
+fn the_model_refuses_with_typed_fields() {
+    use super::{Axis, Body, Contact, Field, Method, Shape};
+    let body = |rx: Option<f64>, ry: Option<f64>| Body {
+        radius_x_m: rx,
+        radius_y_m: ry,
+        modulus_pa: 2.1e11,
+        poisson_ratio: 0.3,
+    };
+    let refused = Contact::new(
+        [
+            body(Some(0.01), Some(0.01)),
+            body(Some(-0.005), Some(-0.005)),
+        ],
+        10.0,
+        Shape::Point,
+        Method::Exact,
+    )
+    .unwrap_err();
+    assert!(refused.iter().any(|e| e.field
+        == Field::Radius {
+            body: 2,
+            axis: Axis::X
+        }));
+    assert_eq!(refused[0].field.hertz_pointer(), "/body2/radius_x_m");
+}
