@@ -326,16 +326,20 @@ mod tests {
                 .map(|(name, s)| (name, serde_json::to_value(s).unwrap()))
                 .collect();
             let input = &schemas[&*(e.schema_names)().0];
-            let fields: std::collections::BTreeSet<String> = match input.pointer("/properties/effects") {
-                None => Default::default(),
-                Some(effects) => {
-                    let effects = resolve(effects, &schemas);
-                    let props = effects["properties"].as_object().unwrap_or_else(|| {
-                        panic!("{}: the effects schema has no properties: {effects}", e.path)
-                    });
-                    props.keys().cloned().collect()
-                }
-            };
+            let fields: std::collections::BTreeSet<String> =
+                match input.pointer("/properties/effects") {
+                    None => Default::default(),
+                    Some(effects) => {
+                        let effects = resolve(effects, &schemas);
+                        let props = effects["properties"].as_object().unwrap_or_else(|| {
+                            panic!(
+                                "{}: the effects schema has no properties: {effects}",
+                                e.path
+                            )
+                        });
+                        props.keys().cloned().collect()
+                    }
+                };
             if !fields.is_empty() {
                 let fields: std::collections::BTreeSet<&str> =
                     fields.iter().map(String::as_str).collect();

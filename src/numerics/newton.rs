@@ -145,7 +145,12 @@ mod tests {
     }
 
     fn driver(cap: u32) -> Driver {
-        Driver::new("newton_test", IterationUnit::NewtonSteps, cap, &Budget::unlimited())
+        Driver::new(
+            "newton_test",
+            IterationUnit::NewtonSteps,
+            cap,
+            &Budget::unlimited(),
+        )
     }
 
     const LINE: LineSearch = LineSearch {

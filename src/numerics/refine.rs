@@ -141,14 +141,35 @@ mod tests {
     fn stops_at_the_finest_grid_and_falls_back_when_a_solve_fails() {
         let ok = |n: usize, _: &f64| -> Result<f64, &str> { Ok(value(n)) };
         let r = refine(4, value(4), 1e-9, doubling(16), ok, judge).unwrap();
-        assert!(matches!(r, Refined::GridLimited { pair: Pair { grid: 16, .. }, .. }));
-        let fails_at_32 =
-            |n: usize, _: &f64| -> Result<f64, &str> { if n == 32 { Err("stalled") } else { Ok(value(n)) } };
+        assert!(matches!(
+            r,
+            Refined::GridLimited {
+                pair: Pair { grid: 16, .. },
+                ..
+            }
+        ));
+        let fails_at_32 = |n: usize, _: &f64| -> Result<f64, &str> {
+            if n == 32 {
+                Err("stalled")
+            } else {
+                Ok(value(n))
+            }
+        };
         let r = refine(4, value(4), 1e-9, doubling(64), fails_at_32, judge).unwrap();
-        assert!(matches!(r, Refined::FellBack { failed_grid: 32, pair: Pair { grid: 16, .. }, .. }));
+        assert!(matches!(
+            r,
+            Refined::FellBack {
+                failed_grid: 32,
+                pair: Pair { grid: 16, .. },
+                ..
+            }
+        ));
         let never = |_: &f64, _: &f64| Judgement::Unresolved;
         let r = refine(4, value(4), 1e-9, doubling(16), ok, never);
-        assert!(matches!(r, Err(RefineError::Unresolved(Pair { grid: 16, .. }))));
+        assert!(matches!(
+            r,
+            Err(RefineError::Unresolved(Pair { grid: 16, .. }))
+        ));
         let r = refine(4, value(4), 1e-9, doubling(4), ok, judge);
         assert!(matches!(r, Err(RefineError::NoFinerGrid)));
     }

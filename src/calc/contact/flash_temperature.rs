@@ -25,8 +25,9 @@
 //!   L ≤ 0.1 and the fast form for L ≥ 5, per body. In the intermediate range 0.1 < L < 5 the
 //!   texts give only charts (α for circles, C₁–C₄ of Fig. 7.30, which the text lacks); there the
 //!   service integrates Jaeger's moving-source solution itself for a uniform flux
-//!   ([`super::moving_heat_source`]: the circle and the square as 3D sources, the line as the
-//!   infinitely long band the table's forms describe), which reproduces the square's and the
+//!   ([`crate::calc::surface::moving_heat_source`]: the circle and the square as 3D sources,
+//!   the line as the infinitely long band the table's forms describe), which reproduces the
+//!   square's and the
 //!   band's slow and fast forms at the range ends. For a circle the slow form is the isothermal
 //!   disc's 0.25 Q/(Ka) while the uniform flux gives 8/(3π²)·Q/(Ka) = 0.27 Q/(Ka): the mean
 //!   steps up 8 % as L crosses 0.1.
@@ -40,25 +41,25 @@
 //!     fast as the square with this q. A stationary body under a line source has no steady
 //!     state (C → 0 as L → 0): it takes none of the heat.
 //!
+//! This file is the wire (request, validation, response); the physics is the surface model
+//! [`crate::calc::surface::flash`] (`flash::solve(&FlashTemperatureCase) -> FlashSolution`).
+//!
 //! Two fast bodies in a line contact reproduce Blok's eq. 7.39 with 2√2 × 0.399 = 1.128 in place
 //! of the text's rounded 1.11: the service follows Table 7.7, 1.6 % above eq. 7.39–7.40.
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::moving_heat_source::{self, Shape};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
+pub use crate::calc::surface::flash::FlashModel;
+use crate::calc::surface::flash::{
+    self, Body, BodyShare, FlashTemperatureCase, PecletRegime, Source,
+};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{Level, SolverReport};
+use crate::fidelity::Level;
 
 pub struct FlashTemperature;
 
-/// Upper end of the slow (stationary-source) range of the Jaeger/Archard forms.
-const SLOW_PECLET: f64 = 0.1;
-/// Lower end of the fast-source range of the Jaeger/Archard forms.
-const FAST_PECLET: f64 = 5.0;
-/// Circular fast source: T_max ≈ 1.64 T̄ (Stachowiak Fig. 7.32).
-const CIRCULAR_MAX_OVER_MEAN: f64 = 1.64;
 /// Largest accepted magnitudes: beyond them no tribological contact is meant.
 const MAX_LENGTH_M: f64 = 10.0;
 const MAX_LOAD_N: f64 = 1e9;
@@ -120,18 +121,6 @@ pub struct FlashBody {
     pub specific_heat_j_kg_k: Option<Positive>,
 }
 
-/// Which conductances are used.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum FlashModel {
-    /// Tian & Kennedy (1994) as Khonsari & Booser eq. 3.51 give it: circular contacts, every
-    /// Peclet number; 4aK for a stationary body (eq. 3.49).
-    TianKennedy,
-    /// Blok–Jaeger–Archard slow (L ≤ 0.1) and fast (L ≥ 5) forms, Stachowiak & Batchelor
-    /// Tables 7.5–7.7; mean and maximum flash temperatures.
-    Jaeger,
-}
-
 /// Request: a sliding contact, its load, friction and the two bodies.
 #[derive(Debug, Clone, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -152,193 +141,6 @@ pub struct FlashTemperatureInput {
     /// surface temperatures T_b + T_f.
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 80.0)]
     pub bulk_temperature_c: Option<Celsius>,
-}
-
-/// The source as the physics takes it (lengths in m).
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Source {
-    Circular {
-        radius: f64,
-    },
-    Square {
-        half_width: f64,
-    },
-    /// `half_length` is l, half the band's length.
-    Line {
-        half_width: f64,
-        half_length: f64,
-    },
-}
-
-impl Source {
-    /// The length in the Peclet number: a or b.
-    fn peclet_length(self) -> f64 {
-        match self {
-            Source::Circular { radius } => radius,
-            Source::Square { half_width } | Source::Line { half_width, .. } => half_width,
-        }
-    }
-
-    fn area(self) -> f64 {
-        match self {
-            Source::Circular { radius } => std::f64::consts::PI * radius * radius,
-            Source::Square { half_width } => 4.0 * half_width * half_width,
-            Source::Line {
-                half_width,
-                half_length,
-            } => 4.0 * half_width * half_length,
-        }
-    }
-
-    fn name(self) -> &'static str {
-        match self {
-            Source::Circular { .. } => "circular",
-            Source::Square { .. } => "square",
-            Source::Line { .. } => "line",
-        }
-    }
-}
-
-/// One body as the physics takes it.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Body {
-    /// Surface speed U, m/s (signed).
-    pub speed: f64,
-    /// Conductivity K, W/(m·K).
-    pub conductivity: f64,
-    /// Diffusivity χ, m²/s.
-    pub diffusivity: f64,
-}
-
-/// The validated case.
-#[derive(Debug, Clone, Copy)]
-pub struct FlashTemperatureCase {
-    pub source: Source,
-    pub load: f64,
-    pub friction: f64,
-    pub bodies: [Body; 2],
-    pub model: FlashModel,
-    pub bulk_c: Option<f64>,
-}
-
-/// The Peclet range a body's Peclet number falls in (Stachowiak's three ranges).
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum PecletRegime {
-    /// L ≤ 0.1: the source is (nearly) stationary over this body; steady conduction.
-    Slow,
-    /// 0.1 < L < 5.
-    Intermediate,
-    /// L ≥ 5: fast source; heat diffuses normal to the surface only.
-    Fast,
-}
-
-impl PecletRegime {
-    fn of(peclet: f64) -> Self {
-        if peclet <= SLOW_PECLET {
-            PecletRegime::Slow
-        } else if peclet < FAST_PECLET {
-            PecletRegime::Intermediate
-        } else {
-            PecletRegime::Fast
-        }
-    }
-}
-
-impl Body {
-    /// L = |U| a/(2χ).
-    pub fn peclet(&self, source: Source) -> f64 {
-        self.speed.abs() * source.peclet_length() / (2.0 * self.diffusivity)
-    }
-}
-
-/// Thermal conductances C = Q/T of one body taking all the heat, W/K: for the mean flash
-/// temperature, and for the maximum where the model gives one.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Conductance {
-    pub mean: f64,
-    pub max: Option<f64>,
-}
-
-/// The conductances of `body` under `source` by `model` (see the module doc for the forms).
-/// `None` where the model has no formula (Tian–Kennedy for a non-circular source).
-pub fn conductance(model: FlashModel, source: Source, body: &Body) -> Option<Conductance> {
-    let k = body.conductivity;
-    let l = body.peclet(source);
-    match (model, source) {
-        (FlashModel::TianKennedy, Source::Circular { radius: a }) => {
-            let mean = if body.speed == 0.0 {
-                4.0 * a * k
-            } else {
-                4.56 * a * k * (0.66 + l).sqrt()
-            };
-            Some(Conductance { mean, max: None })
-        }
-        (FlashModel::TianKennedy, _) => None,
-        (FlashModel::Jaeger, _) => match PecletRegime::of(l) {
-            PecletRegime::Intermediate => Some(moving_source(source, k, l)),
-            regime => Some(jaeger(source, k, l, regime == PecletRegime::Fast)),
-        },
-    }
-}
-
-/// Conductances from the integrated moving-source solution (T in units of qℓ/K, so
-/// C = Q/T = A K/(ℓ T)).
-fn moving_source(source: Source, k: f64, l: f64) -> Conductance {
-    let shape = match source {
-        Source::Circular { .. } => Shape::Circle,
-        Source::Square { .. } => Shape::Rectangle { half_length: 1.0 },
-        Source::Line { .. } => Shape::Band,
-    };
-    let t = moving_heat_source::temperatures(shape, l);
-    let per_coefficient = source.area() * k / source.peclet_length();
-    Conductance {
-        mean: per_coefficient / t.mean,
-        max: Some(per_coefficient / t.max),
-    }
-}
-
-/// Jaeger/Archard conductances, written through q = Q/A so that C = Q/T = A·(q/T).
-fn jaeger(source: Source, k: f64, l: f64, fast: bool) -> Conductance {
-    let area = source.area();
-    let pi = std::f64::consts::PI;
-    match source {
-        Source::Circular { radius: a } => {
-            if fast {
-                // T̄ = 0.308 (Q/(Ka)) (χ/(Ua))^½ and χ/(Ua) = 1/(2L).
-                let mean = k * a * (2.0 * l).sqrt() / 0.308;
-                Conductance {
-                    mean,
-                    max: Some(mean / CIRCULAR_MAX_OVER_MEAN),
-                }
-            } else {
-                Conductance {
-                    mean: 4.0 * k * a,
-                    max: None,
-                }
-            }
-        }
-        Source::Square { half_width: b } | Source::Line { half_width: b, .. } => {
-            // T = coefficient × q b/K, so C = A K/(b × coefficient).
-            let per_coefficient = area * k / b;
-            let (mean, max) = if fast {
-                // (χb/U)^½ = b/(2L)^½; (2χb/(πU))^½ = b/(πL)^½.
-                (1.064 / (2.0 * l).sqrt(), 2.0 / (pi * l).sqrt())
-            } else if let Source::Line { .. } = source {
-                // (2/π)(1.616 − ln 2L) and (2/π)(1.116 − ln L): infinite at L = 0.
-                (
-                    2.0 / pi * (1.616 - (2.0 * l).ln()),
-                    2.0 / pi * (1.116 - l.ln()),
-                )
-            } else {
-                (0.946, 1.122)
-            };
-            Conductance {
-                mean: per_coefficient / mean,
-                max: Some(per_coefficient / max),
-            }
-        }
-    }
 }
 
 fn body_error(name: &str, field: &str, message: impl Into<String>) -> FieldError {
@@ -590,21 +392,11 @@ pub struct FlashTemperatureOutput {
     pub max_surface_temperature_c: Option<f64>,
 }
 
-/// 1/T = Σ 1/T_i for conductances C_i: T = Q/ΣC_i.
-fn shared(q: f64, c: [f64; 2]) -> f64 {
-    q / (c[0] + c[1])
-}
-
 impl Calculation for FlashTemperature {
     const PATH: &'static str = "/v1/contacts/flash-temperature";
     const SUMMARY: &'static str =
         "Flash temperature of a sliding contact (circular, square, line), heat shared by two bodies";
-    const DESCRIPTION: &'static str = "Mean and maximum flash temperature rise of a uniform frictional heat source Q = μW|U_A − U_B| \
-on a circular, square or band contact, each body with its own Peclet number L = Ua/(2χ), the heat shared so both surfaces reach \
-the same temperature (1/T_f = 1/T_fA + 1/T_fB). Models: Tian–Kennedy for circular contacts over all Peclet numbers \
-(Khonsari & Booser eq. 3.49–3.51, 4aK for a stationary body) and the Blok–Jaeger–Archard slow (L ≤ 0.1) and fast (L ≥ 5) forms \
-(Stachowiak & Batchelor Tables 7.5–7.7); in between (0.1 < L < 5), where the texts have only charts, Jaeger's moving-source \
-solution for a uniform flux integrated numerically (3D for circles and squares, the 2D band for lines).";
+    const DESCRIPTION: &'static str = include_str!("flash_temperature.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"geometry": {"shape": "circular", "radius_m": 0.01}, "load_n": 3000, "friction_coefficient": 0.1, "body_a": {"speed_m_s": 0.5, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "body_b": {"speed_m_s": 0, "thermal_conductivity_w_m_k": 54, "thermal_diffusivity_m2_s": 1.474e-5}, "bulk_temperature_c": 40}"#;
@@ -616,81 +408,35 @@ solution for a uniform flux integrated numerically (3D for circles and squares, 
         case: FlashTemperatureCase,
         ctx: &mut Context,
     ) -> Result<FlashTemperatureOutput, CalcError> {
-        let [a, b] = case.bodies;
-        let sliding = (a.speed - b.speed).abs();
-        let q = case.friction * case.load * sliding;
-        let [ca, cb] = [a, b].map(|body| conductance(case.model, case.source, &body));
-        let (Some(ca), Some(cb)) = (ca, cb) else {
-            return Err(CalcError::Internal(
-                "validation let through a body without a formula".to_owned(),
-            ));
+        let s = flash::solve(&case)?;
+        for warning in &s.warnings {
+            ctx.warn(warning.code, warning.message.clone());
+        }
+        ctx.report(s.report.clone());
+        let body = |b: &BodyShare| BodyResult {
+            peclet_number: b.peclet_number,
+            regime: b.regime,
+            thermal_diffusivity_m2_s: b.thermal_diffusivity_m2_s,
+            thermal_conductance_w_k: b.thermal_conductance_w_k,
+            heat_fraction: b.heat_fraction,
+            heat_w: b.heat_w,
+            flash_temperature_rise_alone_k: b.flash_temperature_rise_alone_k,
+            max_flash_temperature_rise_alone_k: b.max_flash_temperature_rise_alone_k,
         };
-        let mean = [ca.mean, cb.mean];
-        let total = mean[0] + mean[1];
-        if !(total > 0.0 && total.is_finite()) {
-            return Err(CalcError::impossible(
-                "/body_a/speed_m_s",
-                "neither body conducts the heat away in steady state (a band source over two stationary bodies)",
-            ));
-        }
-        let flash = shared(q, mean);
-        let max = match (ca.max, cb.max) {
-            (Some(x), Some(y)) => Some(shared(q, [x, y])),
-            _ => None,
-        };
-        if !flash.is_finite() || max.is_some_and(|m| !m.is_finite()) {
-            return Err(CalcError::impossible(
-                "",
-                "the flash temperature is not finite for these inputs",
-            ));
-        }
-        if matches!(case.source, Source::Line { .. }) && [a, b].iter().any(|body| body.speed == 0.0)
-        {
-            ctx.warn(
-                "stationary_band_source",
-                "a band source has no steady state in a stationary body (Jaeger's line forms diverge as L → 0): the moving body takes all the heat",
-            );
-        }
-        if let Some(bulk) = case.bulk_c {
-            if bulk + max.unwrap_or(flash) > Celsius::MAX {
-                ctx.warn(
-                    "surface_above_1000_c",
-                    "the surface temperature exceeds 1000 °C: the contact would melt, oxidise or change its friction long before",
-                );
-            }
-        }
-        let body = |body: &Body, c: &Conductance| BodyResult {
-            peclet_number: body.peclet(case.source),
-            regime: PecletRegime::of(body.peclet(case.source)),
-            thermal_diffusivity_m2_s: body.diffusivity,
-            thermal_conductance_w_k: c.mean,
-            heat_fraction: c.mean / total,
-            heat_w: q * c.mean / total,
-            flash_temperature_rise_alone_k: (c.mean > 0.0).then(|| q / c.mean),
-            max_flash_temperature_rise_alone_k: c.max.filter(|m| *m > 0.0).map(|m| q / m),
-        };
-        let integrated = case.model == FlashModel::Jaeger
-            && [a, b].iter().any(|body| {
-                PecletRegime::of(body.peclet(case.source)) == PecletRegime::Intermediate
-            });
-        ctx.report(match case.model {
-            FlashModel::TianKennedy => SolverReport::closed_form("tian_kennedy"),
-            // The request has no fidelity to choose: the quadrature is fixed (720 directions,
-            // 24² Gauss points; 0.3 % against the exact slow limits).
-            FlashModel::Jaeger if integrated => {
-                SolverReport::closed_form("jaeger_archard_with_moving_source_quadrature")
-            }
-            FlashModel::Jaeger => SolverReport::closed_form("jaeger_archard"),
-        });
+        let (q, flash, max) = (
+            s.heat_w,
+            s.flash_temperature_rise_k,
+            s.max_flash_temperature_rise_k,
+        );
         Ok(FlashTemperatureOutput {
             model: case.model,
             shape: case.source.name().to_owned(),
-            sliding_speed_m_s: sliding,
+            sliding_speed_m_s: s.sliding_speed_m_s,
             heat_flux_w: q,
-            heat_flux_density_w_m2: q / case.source.area(),
-            contact_area_m2: case.source.area(),
-            body_a: body(&a, &ca),
-            body_b: body(&b, &cb),
+            heat_flux_density_w_m2: q / s.contact_area_m2,
+            contact_area_m2: s.contact_area_m2,
+            body_a: body(&s.bodies[0]),
+            body_b: body(&s.bodies[1]),
             flash_temperature_rise_k: flash,
             max_flash_temperature_rise_k: max,
             mean_surface_temperature_c: case.bulk_c.map(|t| t + flash),
@@ -700,334 +446,5 @@ solution for a uniform flux integrated numerically (3D for circles and squares, 
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field};
-    use proptest::prelude::*;
-    use serde_json::{json, Value};
-
-    fn steel(speed: f64) -> Value {
-        json!({"speed_m_s": speed, "thermal_conductivity_w_m_k": 54.0, "thermal_diffusivity_m2_s": 1.474e-5})
-    }
-
-    /// Khonsari & Booser Ex. 3.2.
-    fn example_3_2() -> Value {
-        json!({
-            "geometry": {"shape": "circular", "radius_m": 0.01},
-            "load_n": 3000.0, "friction_coefficient": 0.1,
-            "body_a": steel(0.5), "body_b": steel(0.0)
-        })
-    }
-
-    /// Stachowiak & Batchelor §7.6 example: two steel rollers, b from Hertz.
-    fn two_rollers() -> Value {
-        let roller = |u: f64| json!({"speed_m_s": u, "thermal_conductivity_w_m_k": 46.7, "density_kg_m3": 7800.0, "specific_heat_j_kg_k": 460.0});
-        json!({
-            "geometry": {"shape": "line", "half_width_m": 1.819456736586892e-4, "length_m": 0.01},
-            "load_n": 5000.0, "friction_coefficient": 0.2,
-            "body_a": roller(2.0), "body_b": roller(1.0), "bulk_temperature_c": 80.0
-        })
-    }
-
-    fn body(v: &Value, name: &str, field: &str) -> f64 {
-        v["result"][name][field]
-            .as_f64()
-            .unwrap_or_else(|| panic!("{name}.{field} missing in {v}"))
-    }
-
-    #[test]
-    fn khonsari_example_3_2_moving_steel_on_a_stationary_pin() {
-        let v = ok::<FlashTemperature>(&example_3_2());
-        // Spec recomputation: Pe = 169.6, 32.13 and 2.16 W/°C, ΔT = 4.37 °C, 69.4 °C.
-        assert_rel(body(&v, "body_a", "peclet_number"), 169.6, 1e-3, "Pe");
-        assert_rel(
-            body(&v, "body_a", "thermal_conductance_w_k"),
-            32.13,
-            1e-3,
-            "C1",
-        );
-        assert_rel(
-            body(&v, "body_b", "thermal_conductance_w_k"),
-            2.16,
-            1e-9,
-            "C2",
-        );
-        assert_rel(
-            result_field(&v, "flash_temperature_rise_k"),
-            4.37,
-            2e-3,
-            "ΔT",
-        );
-        assert_rel(
-            body(&v, "body_b", "flash_temperature_rise_alone_k"),
-            69.4,
-            1e-3,
-            "all heat in body 2",
-        );
-        assert_rel(result_field(&v, "heat_flux_w"), 150.0, 1e-12, "Q");
-        assert_eq!(v["result"]["model"], "tian_kennedy");
-        assert_eq!(v["result"]["body_a"]["regime"], "fast");
-        assert_eq!(v["result"]["body_b"]["regime"], "slow");
-        assert!(v["result"]["max_flash_temperature_rise_k"].is_null());
-    }
-
-    #[test]
-    fn stachowiak_two_rollers_follow_table_7_7_and_blok_eq_7_40() {
-        let v = ok::<FlashTemperature>(&two_rollers());
-        assert_rel(body(&v, "body_a", "peclet_number"), 13.98, 1e-3, "L_A");
-        assert_rel(body(&v, "body_b", "peclet_number"), 6.99, 1e-3, "L_B");
-        assert_rel(
-            body(&v, "body_a", "thermal_diffusivity_m2_s"),
-            13.02e-6,
-            1e-3,
-            "χ",
-        );
-        // Table 7.7 summed over two fast bodies is eq. 7.40 with 2/√π = 1.128 for 1.11.
-        let (mu, w, two_l, b): (f64, f64, f64, f64) = (0.2, 5000.0, 0.01, 1.819456736586892e-4);
-        let krs: f64 = 46.7 * 7800.0 * 460.0;
-        let eq_7_40 =
-            |c: f64| c * mu * w * (2f64.sqrt() - 1.0) / (two_l * (2.0 * b).sqrt() * krs.sqrt());
-        let t_max = result_field(&v, "max_flash_temperature_rise_k");
-        assert_rel(
-            t_max,
-            eq_7_40(2.0 / std::f64::consts::PI.sqrt()),
-            1e-3,
-            "Table 7.7 = eq 7.40 with 1.128",
-        );
-        assert_rel(eq_7_40(1.11), 186.2, 1e-3, "the book's eq 7.40");
-        assert_rel(
-            t_max,
-            186.2,
-            0.017,
-            "within the 1.11/1.128 difference of the book",
-        );
-        assert_rel(
-            result_field(&v, "max_surface_temperature_c"),
-            80.0 + t_max,
-            1e-12,
-            "T_c",
-        );
-        assert!(result_field(&v, "flash_temperature_rise_k") < t_max);
-    }
-
-    #[test]
-    fn tian_kennedy_meets_archard_fast_at_high_peclet_and_4ak_near_zero() {
-        let source = Source::Circular { radius: 0.01 };
-        let at = |speed: f64| Body {
-            speed,
-            conductivity: 54.0,
-            diffusivity: 1.474e-5,
-        };
-        let c = |m, b: &Body| conductance(m, source, b).expect("a formula").mean;
-        // L = 1e4: 4.56 against 1/0.308 × √2 = 4.592, their constants 0.7 % apart.
-        let fast = at(1e4 * 2.0 * 1.474e-5 / 0.01);
-        assert_rel(
-            c(FlashModel::TianKennedy, &fast),
-            c(FlashModel::Jaeger, &fast),
-            0.01,
-            "high Pe",
-        );
-        // Pe → 0: 4.56 √0.66 aK = 3.705 aK against 4aK (eq 3.50), the disc's flux vs isothermal.
-        let creep = at(1e-9);
-        let ratio = c(FlashModel::TianKennedy, &creep) / c(FlashModel::Jaeger, &creep);
-        assert_rel(ratio, 4.56 * 0.66f64.sqrt() / 4.0, 1e-6, "low Pe");
-        assert_eq!(
-            c(FlashModel::TianKennedy, &at(0.0)),
-            c(FlashModel::Jaeger, &at(0.0))
-        );
-    }
-
-    #[test]
-    fn a_stationary_body_under_a_band_takes_no_heat() {
-        let mut req = two_rollers();
-        req["body_b"]["speed_m_s"] = json!(0.0);
-        let v = ok::<FlashTemperature>(&req);
-        assert_eq!(body(&v, "body_b", "heat_w"), 0.0);
-        assert_rel(body(&v, "body_a", "heat_fraction"), 1.0, 1e-12, "all to A");
-        assert!(v["result"]["body_b"]["flash_temperature_rise_alone_k"].is_null());
-        assert_eq!(v["warnings"][0]["code"], "stationary_band_source");
-    }
-
-    #[test]
-    fn square_slow_and_fast_forms_match_table_7_6() {
-        // A slow square (L = 0.01) on a fast one (L = 50): both forms by hand.
-        let (b, k, chi, mu, w) = (1e-3, 50.0, 1e-5, 0.3, 100.0);
-        let (ua, ub) = (1.0, 2e-4);
-        let req = json!({
-            "geometry": {"shape": "square", "half_width_m": b},
-            "load_n": w, "friction_coefficient": mu,
-            "body_a": {"speed_m_s": ua, "thermal_conductivity_w_m_k": k, "thermal_diffusivity_m2_s": chi},
-            "body_b": {"speed_m_s": ub, "thermal_conductivity_w_m_k": k, "thermal_diffusivity_m2_s": chi}
-        });
-        let v = ok::<FlashTemperature>(&req);
-        let q: f64 = mu * w * (ua - ub) / (4.0 * b * b);
-        let ta = 1.064 * q / k * (chi * b / ua).sqrt();
-        let tb = 0.946 * q * b / k;
-        let tmax_a = 2.0 * q / k * (2.0 * chi * b / (std::f64::consts::PI * ua)).sqrt();
-        let tmax_b = 1.122 * q * b / k;
-        assert_rel(
-            body(&v, "body_a", "flash_temperature_rise_alone_k"),
-            ta,
-            1e-12,
-            "T_fA",
-        );
-        assert_rel(
-            body(&v, "body_b", "flash_temperature_rise_alone_k"),
-            tb,
-            1e-12,
-            "T_fB",
-        );
-        assert_rel(
-            result_field(&v, "flash_temperature_rise_k"),
-            1.0 / (1.0 / ta + 1.0 / tb),
-            1e-12,
-            "eq 7.37",
-        );
-        assert_rel(
-            result_field(&v, "max_flash_temperature_rise_k"),
-            1.0 / (1.0 / tmax_a + 1.0 / tmax_b),
-            1e-12,
-            "eq 7.38",
-        );
-    }
-
-    #[test]
-    fn the_intermediate_peclet_range_is_integrated_between_the_slow_and_fast_forms() {
-        // A square on a moving body through L = 0.1 … 5: the integrated mean lies below the slow
-        // form and above the fast one, and falls with speed (Stachowiak Table 7.6, Fig. 7.30).
-        let mut last = f64::INFINITY;
-        for speed in [0.004, 0.01, 0.03, 0.1] {
-            let mut r = two_rollers();
-            r["geometry"] = json!({"shape": "square", "half_width_m": 1e-3});
-            r["body_b"]["speed_m_s"] = json!(0.0);
-            r["body_a"]["speed_m_s"] = json!(speed);
-            let v = ok::<FlashTemperature>(&r);
-            let l = body(&v, "body_a", "peclet_number");
-            assert!(0.1 < l && l < 5.0, "L = {l}");
-            assert_eq!(
-                v["solver"]["method"],
-                "jaeger_archard_with_moving_source_quadrature"
-            );
-            let alone = body(&v, "body_a", "flash_temperature_rise_alone_k");
-            let q = v["result"]["heat_flux_w"].as_f64().unwrap();
-            let qb_k = q / 4e-6 * 1e-3 / 46.7;
-            // Each limiting form overestimates outside its own range: the exact lies below both.
-            let (slow, fast) = (0.946 * qb_k, 1.064 / (2.0 * l).sqrt() * qb_k);
-            assert!(alone < slow.min(fast), "L = {l}");
-            // … and approaches each near its range: within 15 % at L = 0.15 and L = 3.8.
-            assert!(l > 0.2 || alone > 0.85 * slow, "L = {l}");
-            assert!(l < 3.0 || alone > 0.85 * fast, "L = {l}");
-            let per_heat = alone / q;
-            assert!(per_heat < last);
-            last = per_heat;
-        }
-    }
-
-    #[test]
-    fn refusals_name_the_field() {
-        let mut tk_square = two_rollers();
-        tk_square["model"] = json!("tian_kennedy");
-        let mut missing = example_3_2();
-        missing["geometry"] = json!({"shape": "line", "half_width_m": 1e-4});
-        let mut both_thermal = example_3_2();
-        both_thermal["body_b"]["density_kg_m3"] = json!(7800.0);
-        let mut still = example_3_2();
-        still["body_a"]["speed_m_s"] = json!(0.0);
-        let mut typo = example_3_2();
-        typo["lod_n"] = json!(1.0);
-        let mut stray = example_3_2();
-        stray["geometry"]["length_m"] = json!(0.01);
-        let rows: [(&Value, &str, &str); 5] = [
-            (&tk_square, "/model", "Tian–Kennedy is circular"),
-            (&missing, "/geometry/length_m", "a band needs its length"),
-            (
-                &both_thermal,
-                "/body_b/thermal_diffusivity_m2_s",
-                "χ and ρ, σ both",
-            ),
-            (&still, "/body_a/speed_m_s", "nothing moves"),
-            (&stray, "/geometry/length_m", "a circle has no length"),
-        ];
-        for (req, pointer, why) in rows {
-            assert_eq!(
-                invalid_pointers::<FlashTemperature>(req),
-                vec![pointer.to_owned()],
-                "{why}"
-            );
-        }
-        assert!(crate::calc::testing::post::<FlashTemperature>(&typo).is_err());
-    }
-
-    #[test]
-    fn example_runs() {
-        let req: Value = serde_json::from_str(FlashTemperature::EXAMPLE).expect("example is JSON");
-        let v = ok::<FlashTemperature>(&req);
-        assert_rel(
-            result_field(&v, "mean_surface_temperature_c"),
-            40.0 + 4.374,
-            1e-3,
-            "T_b + ΔT",
-        );
-    }
-
-    #[test]
-    fn reference_cases_pass() {
-        for case in [
-            include_str!("../../../tests/data/contact/kb_ex3_2_flash_temperature_pin.json"),
-            include_str!(
-                "../../../tests/data/contact/stachowiak_r7_6_flash_temperature_two_rollers.json"
-            ),
-        ] {
-            let case: Value = serde_json::from_str(case).expect("case is JSON");
-            assert_eq!(case["path"], FlashTemperature::PATH);
-            let v = ok::<FlashTemperature>(&case["request"]);
-            for want in case["expected"].as_array().expect("expected list") {
-                let pointer = want["pointer"].as_str().expect("pointer");
-                let got = v
-                    .pointer(pointer)
-                    .and_then(Value::as_f64)
-                    .unwrap_or(f64::NAN);
-                let (value, tol) = (want["value"].as_f64(), want["rel_tol"].as_f64());
-                assert_rel(got, value.expect("value"), tol.expect("rel_tol"), pointer);
-            }
-        }
-    }
-
-    /// A request over the valid ranges: a circular Tian–Kennedy case, or a Jaeger square or
-    /// band with body A fast (L ≥ 5) and body B fast or stationary.
-    fn request(shape: u8, load: f64, mu: f64, speed: f64, b_moves: bool) -> Value {
-        let geometry = match shape {
-            0 => json!({"shape": "circular", "radius_m": 1e-3}),
-            1 => json!({"shape": "square", "half_width_m": 1e-3}),
-            _ => json!({"shape": "line", "half_width_m": 1e-3, "length_m": 0.02}),
-        };
-        let b_speed = if b_moves { speed / 3.0 } else { 0.0 };
-        json!({
-            "geometry": geometry, "load_n": load, "friction_coefficient": mu,
-            "body_a": steel(speed), "body_b": steel(b_speed)
-        })
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
-        #[test]
-        fn finite_shared_and_monotone(
-            shape in 0u8..3, load in 1.0f64..1e5, mu in 0.01f64..1.0,
-            // L_A = U·1e-3/(2·1.474e-5) ≥ 5 (and L_B ≥ 5 when B moves at U/3).
-            speed in 0.45f64..100.0, b_moves: bool, grow in 1.01f64..3.0,
-        ) {
-            let run = |l: f64, m: f64, u: f64| ok::<FlashTemperature>(&request(shape, l, m, u, b_moves));
-            let v = run(load, mu, speed);
-            let t = result_field(&v, "flash_temperature_rise_k");
-            prop_assert!(t.is_finite() && t > 0.0);
-            let q = result_field(&v, "heat_flux_w");
-            let shares = body(&v, "body_a", "heat_w") + body(&v, "body_b", "heat_w");
-            prop_assert!((shares / q - 1.0).abs() < 1e-12);
-            let fractions = body(&v, "body_a", "heat_fraction") + body(&v, "body_b", "heat_fraction");
-            prop_assert!((fractions - 1.0).abs() < 1e-12);
-            for bigger in [run(load * grow, mu, speed), run(load, mu * grow, speed), run(load, mu, speed * grow)] {
-                prop_assert!(result_field(&bigger, "flash_temperature_rise_k") > t);
-            }
-        }
-    }
-}
+#[path = "flash_temperature_tests.rs"]
+mod tests;

@@ -47,7 +47,7 @@
 //! Not checked against a worked example: the texts have none.
 
 use crate::calc::{CalcError, Context};
-use crate::fidelity::{Level, IterationUnit, SolverReport, StopReason};
+use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 use crate::numerics::optimise::brent_minimise;
 
 const TOLERANCE: f64 = 1e-9;

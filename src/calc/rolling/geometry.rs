@@ -18,10 +18,11 @@
 use serde::Deserialize;
 use utoipa::ToSchema;
 
-use crate::calc::contact::hertz::{BodySpec, Hertz, HertzInput, HertzOutput, PoissonRatio, Radius};
+use crate::calc::contact::hertz::{
+    Body, Contact, Field, HertzOutput, Invalid, Method, PoissonRatio, Shape, Solution,
+};
 use crate::calc::quantity::Positive;
-use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::FidelityRequest;
+use crate::calc::{CalcError, Context, FieldError};
 
 /// Largest ball or pitch diameter accepted, m.
 const MAX_DIAMETER_M: f64 = 100.0;
@@ -228,16 +229,13 @@ impl BallBearingSpec {
         // The Hertz room checks the elastic constants and that each raceway contact is a
         // point contact it can solve; its pointers are mapped onto this object's fields.
         for race in [Race::Inner, Race::Outer] {
-            if let Err(hertz) = bearing
-                .hertz_input(race, bearing.free_contact_angle(), 1.0)
-                .and_then(|input| input.validate())
-            {
+            if let Err(hertz) = bearing.hertz_contact(race, bearing.free_contact_angle(), 1.0) {
                 for e in hertz {
-                    let field = match e.pointer.as_str() {
-                        "/body1/elastic_modulus_pa" => "/ball/elastic_modulus_pa",
-                        "/body1/poisson_ratio" => "/ball/poisson_ratio",
-                        "/body2/elastic_modulus_pa" => "/rings/elastic_modulus_pa",
-                        "/body2/poisson_ratio" => "/rings/poisson_ratio",
+                    let field = match e.field {
+                        Field::Modulus { body: 1 } => "/ball/elastic_modulus_pa",
+                        Field::PoissonRatio { body: 1 } => "/ball/poisson_ratio",
+                        Field::Modulus { .. } => "/rings/elastic_modulus_pa",
+                        Field::PoissonRatio { .. } => "/rings/poisson_ratio",
                         _ if race == Race::Inner => "/inner_groove_radius_m",
                         _ => "/outer_groove_radius_m",
                     };
@@ -289,60 +287,50 @@ impl BallBearing {
         (self.radial_centre_offset_m - self.curvature_centre_distance_m).max(0.0)
     }
 
-    /// The Hertz room's request for a ball on `race` at contact angle α (rad) under `load_n`.
-    fn hertz_input(
+    /// The Hertz contact of a ball on `race` at contact angle α (rad) under `load_n`, checked
+    /// by the Hertz model (its refusals name the Hertz model's fields: body 1 the ball, body 2
+    /// the raceway).
+    fn hertz_contact(
         &self,
         race: Race,
         contact_angle: f64,
         load_n: f64,
-    ) -> Result<HertzInput, Vec<FieldError>> {
+    ) -> Result<Contact, Vec<Invalid>> {
         let d = self.ball_diameter_m;
         let along = self.pitch_diameter_m / contact_angle.cos();
         let (rolling, groove, material) = match race {
             Race::Inner => (0.5 * (along - d), -self.inner_conformity * d, self.rings),
             Race::Outer => (-0.5 * (along + d), -self.outer_conformity * d, self.rings),
         };
-        let radius = |r: f64, pointer: &str| {
-            Radius::try_from(r).map_err(|m| vec![FieldError::new(pointer, m)])
-        };
-        let body = |rx: Radius, ry: Radius, m: MaterialSpec| BodySpec {
+        let body = |rx: f64, ry: f64, m: MaterialSpec| Body {
             radius_x_m: Some(rx),
             radius_y_m: Some(ry),
-            elastic_modulus_pa: m.elastic_modulus_pa,
-            poisson_ratio: m.poisson_ratio,
+            modulus_pa: m.elastic_modulus_pa.get(),
+            poisson_ratio: m.poisson_ratio.get(),
         };
-        let ball = radius(0.5 * d, "/body1/radius_x_m")?;
-        Ok(HertzInput {
-            body1: body(ball, ball, self.ball),
-            body2: body(
-                radius(rolling, "/body2/radius_x_m")?,
-                radius(groove, "/body2/radius_y_m")?,
-                material,
-            ),
-            load_n: Positive::try_from(load_n).map_err(|m| vec![FieldError::new("/load_n", m)])?,
-            line: None,
-            fidelity: FidelityRequest::default(),
-            closed_form: None,
-        })
+        let ball = 0.5 * d;
+        Contact::new(
+            [body(ball, ball, self.ball), body(rolling, groove, material)],
+            load_n,
+            Shape::Point,
+            Method::Exact,
+        )
     }
 
     /// The exact Hertz contact of a ball on `race` at contact angle α (rad) under `load_n` > 0,
-    /// from the Hertz room (its warnings go to `ctx`; its solver report is overwritten by the
-    /// caller's).
-    pub fn raceway_contact(
+    /// from the Hertz model, with the model's warnings in the solution.
+    pub fn raceway_solution(
         &self,
         race: Race,
         contact_angle: f64,
         load_n: f64,
-        ctx: &mut Context,
-    ) -> Result<HertzOutput, CalcError> {
-        let case = self
-            .hertz_input(race, contact_angle, load_n)
-            .and_then(|input| input.validate())
+    ) -> Result<Solution, CalcError> {
+        let contact = self
+            .hertz_contact(race, contact_angle, load_n)
             .map_err(|errors| {
                 let detail: Vec<String> = errors
                     .into_iter()
-                    .map(|e| format!("{}: {}", e.pointer, e.message))
+                    .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
                     .collect();
                 CalcError::impossible(
                     "/bearing",
@@ -353,7 +341,23 @@ impl BallBearing {
                     ),
                 )
             })?;
-        Hertz::run(case, ctx)
+        contact.solve()
+    }
+
+    /// [`Self::raceway_solution`] as the Hertz room's output, its warnings and solver report
+    /// passed to `ctx` (the report is overwritten by the caller's). Transitional: the load
+    /// distribution still reads the Hertz room's output; it can take `raceway_solution`.
+    pub fn raceway_contact(
+        &self,
+        race: Race,
+        contact_angle: f64,
+        load_n: f64,
+        ctx: &mut Context,
+    ) -> Result<HertzOutput, CalcError> {
+        Ok(HertzOutput::reported(
+            &self.raceway_solution(race, contact_angle, load_n)?,
+            ctx,
+        ))
     }
 
     /// Load–deflection constant K of one ball on `race` at contact angle α (rad), N/m^1.5:

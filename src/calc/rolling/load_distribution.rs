@@ -41,7 +41,7 @@ use crate::calc::contact::hertz::HertzOutput;
 use crate::calc::quantity::NonNegative;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{Level, IterationUnit, SolverReport, StopReason};
+use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 use crate::numerics::roots::{brent, Root, RootError, Stopping};
 
 pub struct LoadDistribution;
@@ -1411,7 +1411,11 @@ fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
         fidelity: Level::Standard,
         grid: None,
         iterations,
-        iterations_unit: if method.starts_with("newton") { IterationUnit::NewtonSteps } else { IterationUnit::RootSearchSteps },
+        iterations_unit: if method.starts_with("newton") {
+            IterationUnit::NewtonSteps
+        } else {
+            IterationUnit::RootSearchSteps
+        },
         evaluations: None,
         stop_reason: StopReason::Converged,
         residual: Some(residual),

@@ -51,13 +51,13 @@ use utoipa::ToSchema;
 
 use serde_json::Value;
 
-use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::geometry::BallBearingSpec;
 use super::load_distribution::{parse_at, LoadDistributionBearing};
 use super::roller::{RollerBearingSpec, ROLLER_STATIC_LIMIT_PA};
-use crate::calc::contact::hertz::{BodySpec, Hertz, HertzInput, LineSpec, PoissonRatio, Radius};
+use crate::calc::contact::hertz::{Body, Contact, Invalid, Method, Shape};
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{FidelityRequest, Level};
+use crate::fidelity::Level;
 
 pub struct StaticCapacity;
 
@@ -437,8 +437,8 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0. A cylindrical roller `b
         let d = case.ball_diameter_m;
         let cos = case.contact_angle.cos();
         let (inner, outer) = (
-            rating_ball_load(&case, true, ctx)?,
-            rating_ball_load(&case, false, ctx)?,
+            rating_ball_load(&case, true)?,
+            rating_ball_load(&case, false)?,
         );
         let (q0, governing) = if inner <= outer {
             (inner, "inner")
@@ -499,14 +499,10 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0. A cylindrical roller `b
 
 /// Q₀ of one raceway: the ball load at which its exact Hertz pressure is 4200 MPa, from the
 /// pressure at 1 N (p ∝ Q^⅓).
-fn rating_ball_load(
-    case: &StaticCapacityCase,
-    inner: bool,
-    ctx: &Context,
-) -> Result<f64, CalcError> {
+fn rating_ball_load(case: &StaticCapacityCase, inner: bool) -> Result<f64, CalcError> {
     let d = case.ball_diameter_m;
     if let Some(length) = case.roller_length_m {
-        return rating_roller_load(case, length, inner, ctx);
+        return rating_roller_load(case, length, inner);
     }
     let along = case.pitch_diameter_m / case.contact_angle.cos();
     let (rolling, groove) = if inner {
@@ -514,33 +510,23 @@ fn rating_ball_load(
     } else {
         (-0.5 * (along + d), -case.conformity.1 * d)
     };
-    let steel = MaterialSpec {
-        elastic_modulus_pa: Positive::try_from(RATING_STEEL.0).map_err(CalcError::Internal)?,
-        poisson_ratio: PoissonRatio::try_from(RATING_STEEL.1).map_err(CalcError::Internal)?,
-        density_kg_m3: None,
+    let body = |rx: f64, ry: f64| Body {
+        radius_x_m: Some(rx),
+        radius_y_m: Some(ry),
+        modulus_pa: RATING_STEEL.0,
+        poisson_ratio: RATING_STEEL.1,
     };
-    let radius = |r: f64| Radius::try_from(r).map_err(CalcError::Internal);
-    let body = |rx: f64, ry: f64| -> Result<BodySpec, CalcError> {
-        Ok(BodySpec {
-            radius_x_m: Some(radius(rx)?),
-            radius_y_m: Some(radius(ry)?),
-            elastic_modulus_pa: steel.elastic_modulus_pa,
-            poisson_ratio: steel.poisson_ratio,
-        })
-    };
-    let input = HertzInput {
-        body1: body(0.5 * d, 0.5 * d)?,
-        body2: body(rolling, groove)?,
-        load_n: Positive::try_from(1.0).map_err(CalcError::Internal)?,
-        line: None,
-        fidelity: FidelityRequest::default(),
-        closed_form: None,
-    };
+    let contact = Contact::new(
+        [body(0.5 * d, 0.5 * d), body(rolling, groove)],
+        1.0,
+        Shape::Point,
+        Method::Exact,
+    );
     let what = format!(
         "the {} raceway's rating contact is not a Hertz point contact",
         if inner { "inner" } else { "outer" }
     );
-    let unit = pressure_at_one_newton(input, &what, ctx)?;
+    let unit = pressure_at_one_newton(contact, &what)?;
     Ok((STATIC_RATING_PRESSURE_PA / unit).powi(3))
 }
 
@@ -550,7 +536,6 @@ fn rating_roller_load(
     case: &StaticCapacityCase,
     length: f64,
     inner: bool,
-    ctx: &Context,
 ) -> Result<f64, CalcError> {
     let d = case.ball_diameter_m;
     let race = if inner {
@@ -558,50 +543,46 @@ fn rating_roller_load(
     } else {
         -0.5 * (case.pitch_diameter_m + d)
     };
-    let body = |r: f64| -> Result<BodySpec, CalcError> {
-        Ok(BodySpec {
-            radius_x_m: Some(Radius::try_from(r).map_err(CalcError::Internal)?),
-            radius_y_m: None,
-            elastic_modulus_pa: Positive::try_from(RATING_STEEL.0).map_err(CalcError::Internal)?,
-            poisson_ratio: PoissonRatio::try_from(RATING_STEEL.1).map_err(CalcError::Internal)?,
-        })
+    let body = |r: f64| Body {
+        radius_x_m: Some(r),
+        radius_y_m: None,
+        modulus_pa: RATING_STEEL.0,
+        poisson_ratio: RATING_STEEL.1,
     };
-    let input = HertzInput {
-        body1: body(0.5 * d)?,
-        body2: body(race)?,
-        load_n: Positive::try_from(1.0).map_err(CalcError::Internal)?,
-        line: Some(LineSpec {
-            length_m: Positive::try_from(length).map_err(CalcError::Internal)?,
-        }),
-        fidelity: FidelityRequest::default(),
-        closed_form: None,
-    };
+    let contact = Contact::new(
+        [body(0.5 * d), body(race)],
+        1.0,
+        Shape::Line { length_m: length },
+        Method::Exact,
+    );
     let unit = pressure_at_one_newton(
-        input,
+        contact,
         "a roller's rating contact is not a Hertz line contact",
-        ctx,
     )?;
     Ok((ROLLER_STATIC_LIMIT_PA / unit).powi(2))
 }
 
-/// The Hertz room's maximum pressure for `input` (loaded with 1 N), Pa; a contact the room
-/// refuses is a 422 on the bearing saying `what` and why.
-fn pressure_at_one_newton(input: HertzInput, what: &str, ctx: &Context) -> Result<f64, CalcError> {
-    let hertz_case = input.validate().map_err(|errors| {
+/// The Hertz model's maximum pressure for `contact` (loaded with 1 N), Pa; a contact the model
+/// refuses is a 422 on the bearing saying `what` and why. The model's warnings are not passed
+/// on (the rating contact is ISO's reference, not the user's).
+fn pressure_at_one_newton(
+    contact: Result<Contact, Vec<Invalid>>,
+    what: &str,
+) -> Result<f64, CalcError> {
+    let contact = contact.map_err(|errors| {
         CalcError::impossible(
             "/bearing",
             format!(
                 "{what}: {}",
                 errors
                     .into_iter()
-                    .map(|e| format!("{}: {}", e.pointer, e.message))
+                    .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
                     .collect::<Vec<_>>()
                     .join("; ")
             ),
         )
     })?;
-    let mut step = ctx.child();
-    Ok(Hertz::run(hertz_case, &mut step)?.max_pressure_pa)
+    Ok(contact.solve()?.max_pressure_pa)
 }
 
 /// The guideline minimum s0 (SKF's table; see the module doc): ball or roller bearings.

@@ -26,8 +26,8 @@
 //! sweeps or cycles), the last two are converged, so their films serve Richardson's
 //! extrapolation.
 
+use super::corrections::fully_flooded_meniscus;
 use super::fluid::Fluid;
-use crate::calc::contact::ehl_film::fully_flooded_meniscus;
 use crate::calc::Budget;
 use crate::numerics::fft::Convolution2d;
 use crate::numerics::half_space::rectangle_inverse_distance;

@@ -1,0 +1,1123 @@
+//! `POST /v1/contacts/ehl`: numerical elastohydrodynamic lubrication of a line or a point
+//! (circular or elliptical) contact — Reynolds with Barus or Roelands viscosity and
+//! Dowson–Higginson density, half-space elastic deformation, load balance and cavitation by
+//! complementarity. Line contacts by a fully coupled Newton method on nested grids
+//! ([`line`]), point contacts by FAS multigrid ([`point`]), both with Richardson
+//! extrapolation; traction from the converged field on request.
+//!
+//! Conventions are the film-formula room's (`/v1/contacts/ehl-film`): E′ = 2/Σ(1 − ν²)/E,
+//! R_x the reduced radius along the entrainment direction x, ū the mean surface speed, U =
+//! η₀ū/(E′R_x), G = αE′. Moes' groups: line M = W′(2U)^(−1/2), L = G(2U)^(1/4) with W′ =
+//! w/(E′R_x); point M = W(2U)^(−3/4), L = G(2U)^(1/4) with W = F/(E′R_x²).
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::closed_form::inlet_viscosity;
+use super::film::{entrainment_speed, slide_roll_ratio};
+use super::fluid::Fluid;
+use super::formulas::{
+    dowson_higginson, hard_central_film, hard_min_film, pan_hamrock, point_regime, regime_films,
+    Groups, MoesAsymptotes, Regime, HARD_FIT_ELLIPTICITY,
+};
+use super::line::{interpolate, LineFailure, LineProblem, LineSolution};
+use super::point;
+use super::point::{HertzEllipse, PointFailure, PointProblem, PointSolution};
+use super::traction::{self, ShearLaw, TractionLaw};
+use crate::calc::contact::hertz::{
+    contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
+};
+use crate::calc::lubricant::model::PressureLaw;
+use crate::calc::lubricant::{Lubricant, LubricantSpec};
+use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::effects::{Criterion, Decision, Mode};
+use crate::fidelity::{FidelityRequest, IterationUnit, Level, SolverReport, StopReason};
+use crate::numerics::richardson;
+
+pub struct Ehl;
+
+/// Moes' load parameter range the line solver accepts: below 0.1 the contact is a rigid
+/// hydrodynamic one (no EHL), above 10⁴ the Hertz zone is beyond any affordable grid.
+const MOES_M_RANGE: (f64, f64) = (0.1, 1e4);
+/// The point solver's range of M (its definition W(2U)^(−3/4)): below 1 the film is many
+/// times the Hertz radius's gap (rigid–hydrodynamic); above 2000 the Hertz zone needs more
+/// than 512 cells across.
+const POINT_MOES_M_RANGE: (f64, f64) = (1.0, 2000.0);
+/// Cells per direction of the point solver's finest grid per fidelity level (fast,
+/// standard, high), and the explicit range.
+const POINT_CELLS: [usize; 3] = [64, 128, 256];
+/// Estimated relative error of the fine grid's central film (a bound on the extrapolated
+/// film's) above which a point solution is warned about, per level.
+const POINT_WARN_ABOVE: [f64; 3] = [0.1, 0.03, 0.01];
+const POINT_CUSTOM_CELLS: (u32, u32) = (64, 512);
+/// Moes' material parameter range (L = 0 is isoviscous; the Moes map ends at about 25).
+const MOES_L_MAX: f64 = 50.0;
+/// Cells (coarse, fine) of the nested grids per fidelity level.
+const FAST_CELLS: usize = 64;
+const STANDARD_CELLS: usize = 128;
+const HIGH_CELLS: usize = 256;
+/// The grid every solve starts on (from the Hertz pressure).
+const FIRST_CELLS: usize = 32;
+/// Explicit grids: the fine cell count.
+const CUSTOM_CELLS: (u32, u32) = (32, 2048);
+/// Relative central-film error estimate (of the fine grid, before extrapolation) above which
+/// the solve goes on to finer grids, per level: fast, standard, high.
+const REFINE_ABOVE: [f64; 3] = [0.05, 0.01, 0.002];
+/// αp_h above which a Barus law is warned about: e^15 ≈ 3 × 10⁶ in viscosity, where Barus and
+/// Roelands part by orders of magnitude.
+const BARUS_LIMIT: f64 = 15.0;
+/// Density rise ρ(p_h)/ρ₀ − 1 above which `auto` applies compressibility.
+const COMPRESSIBILITY_THRESHOLD: f64 = 0.01;
+/// αp_h above which `auto` applies piezoviscosity (below it η changes by < 10 % over the
+/// contact: the isoviscous regimes).
+const PIEZOVISCOSITY_THRESHOLD: f64 = 0.1;
+
+/// Effects this calculation understands.
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NumericalEhlEffects {
+    /// Dowson–Higginson density ρ/ρ₀ = 1 + 0.6p/(1 + 1.7p), p in GPa (Khonsari eq. 2.20).
+    /// `auto` applies it when the density rises by more than 1 % at the Hertz pressure.
+    #[serde(default)]
+    pub compressibility: Mode,
+    /// The lubricant's pressure–viscosity law (Barus or Roelands). `auto` applies it when
+    /// αp_h > 0.1; `off` solves the isoviscous problem.
+    #[serde(default)]
+    pub piezoviscosity: Mode,
+}
+
+/// Shear law for traction.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum TractionModel {
+    /// τ = ηγ̇ (overflows for realistic αp_h: Stachowiak §7.7; bounded here only by the
+    /// limiting shear stress if given).
+    Newtonian,
+    /// Eyring: τ = τ₀ asinh(ηγ̇/τ₀) (Stachowiak eq. 7.52).
+    Eyring,
+}
+
+/// Traction request: the sliding shear integrated over the converged film.
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NumericalEhlTractionSpec {
+    pub model: TractionModel,
+    /// Eyring stress τ₀, Pa (> 0, at most 1e9; typically 2–20 MPa for mineral oils), required
+    /// by `eyring`.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 5e6)]
+    pub eyring_stress_pa: Option<Positive>,
+    /// Limiting shear stress as a fraction of the local pressure, τ_L = γp (0 < γ ≤ 1;
+    /// typically 0.05–0.1): the shear stress is capped at it (Stachowiak §7.7 describes the
+    /// limit without a formula; the proportional form is the common one).
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.0, example = 0.08)]
+    pub limiting_shear_coefficient: Option<Positive>,
+}
+
+/// Request: a lubricated contact rolling along x — a line contact of two cylinders (axes
+/// along y) when `line` is given, else a point contact (circular or elliptical) of the two
+/// bodies' principal curvatures.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct NumericalEhlInput {
+    /// The first body, as in `/v1/contacts/hertz` (for a line contact a cylinder:
+    /// `radius_y_m` absent).
+    pub body1: BodySpec,
+    /// The second body.
+    pub body2: BodySpec,
+    /// Normal load on the contact (a line contact carries it over its length), N (> 0, at
+    /// most 1e12).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 5000.0)]
+    pub load_n: Positive,
+    /// The contact length of a line contact; absent for a point contact.
+    pub line: Option<LineSpec>,
+    /// Mean entrainment speed ū = (u₁ + u₂)/2 along x, m/s (> 0, at most 1000): the mean, not
+    /// the sum.
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1000.0, example = 2.0)]
+    pub entrainment_speed_m_s: Positive,
+    /// The lubricant; it needs a pressure–viscosity law (Barus α or Roelands Z) unless
+    /// `effects.piezoviscosity` is `off`.
+    pub lubricant: LubricantSpec,
+    /// Temperature of the oil entering the contact, °C (isothermal solution: η₀ is taken here).
+    #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
+    pub temperature_c: Celsius,
+    /// Slide-to-roll ratio s = |u₁ − u₂|/ū, 0 … 2 (default 0); the sliding speed is sū.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 2.0, example = 0.05)]
+    pub slide_roll_ratio: Option<NonNegative>,
+    /// Traction from the converged film, on request (needs a slide-to-roll ratio > 0).
+    pub traction: Option<NumericalEhlTractionSpec>,
+    /// `fast`, `standard` (default) or `high`. Line: nested grids of 64/128, 128/256 or
+    /// 256/512 cells with Richardson extrapolation, refined further while the estimated error
+    /// of the fine grid's central film exceeds 5 %, 1 % or 0.2 %; or `{"grid": [cells, 1]}`
+    /// for an explicit fine grid (32 … 2048 cells, the coarse grid half of it). Point: 64²,
+    /// 128² or 256² cells (65², 129², 257² nodes) extrapolated with the grid of half as many,
+    /// a warning when the estimated error exceeds the level's 10 %, 3 % or 1 %; or
+    /// `{"grid": [n, n]}` with n a power of two, 64 … 512.
+    #[serde(default)]
+    pub fidelity: FidelityRequest,
+    /// Return the pressure and film profiles along x as `profiles` (default false; the name
+    /// the journal-bearing room uses for its field).
+    #[serde(default)]
+    #[schema(example = false)]
+    pub include_field: bool,
+    #[serde(default)]
+    pub effects: NumericalEhlEffects,
+}
+
+/// The validated case.
+#[derive(Debug, Clone)]
+pub struct NumericalEhlCase {
+    hertz: Contact,
+    load_n: f64,
+    /// The line contact's length; None for a point contact.
+    length_m: Option<f64>,
+    speed_m_s: f64,
+    lubricant: Lubricant,
+    temperature_c: f64,
+    slide_roll_ratio: f64,
+    traction: Option<NumericalEhlTractionSpec>,
+    grids: Grids,
+    include_field: bool,
+    effects: NumericalEhlEffects,
+}
+
+/// The grids a request asks for: the line solver's nested pairs, or the point solver's finest
+/// grid with the level's error tolerance.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum Grids {
+    Line(Cells),
+    Point {
+        level: Level,
+        cells: usize,
+        tolerance: f64,
+    },
+}
+
+/// The line solver's grids.
+#[derive(Debug, Clone, Copy, PartialEq)]
+struct Cells {
+    level: Level,
+    /// The fine grid of the first pair.
+    fine: usize,
+    /// Refinement stops after this fine grid.
+    finest: usize,
+    /// Refine while the estimated relative error of the central film exceeds this.
+    tolerance: f64,
+}
+
+impl Validate for NumericalEhlInput {
+    type Valid = NumericalEhlCase;
+    fn validate(self) -> Result<NumericalEhlCase, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        // The Hertz part (exact ellipticity), refused with the request's own pointers.
+        let hertz = contact_of(
+            &self.body1,
+            &self.body2,
+            self.load_n,
+            self.line,
+            Method::Exact,
+        )
+        .map_err(|mut e| errors.append(&mut e))
+        .ok();
+        let speed = entrainment_speed(self.entrainment_speed_m_s, &mut errors);
+        let lubricant = self
+            .lubricant
+            .parse("/lubricant")
+            .map_err(|mut e| errors.append(&mut e))
+            .ok();
+        if let Some(l) = &lubricant {
+            if l.pressure_law.is_none() && self.effects.piezoviscosity != Mode::Off {
+                errors.push(FieldError::new(
+                    "/lubricant",
+                    "an EHL solution needs a pressure–viscosity law: give pressure_viscosity_coefficient_1_pa (Barus α) or roelands_pressure_viscosity_index (Z), or set effects.piezoviscosity to off",
+                ));
+            }
+        }
+        let slide_roll_ratio = slide_roll_ratio(self.slide_roll_ratio, &mut errors);
+        if let Some(t) = self.traction {
+            if slide_roll_ratio == 0.0 {
+                errors.push(FieldError::new(
+                    "/traction",
+                    "traction needs sliding: give slide_roll_ratio > 0",
+                ));
+            }
+            if t.model == TractionModel::Eyring && t.eyring_stress_pa.is_none() {
+                errors.push(FieldError::new(
+                    "/traction/eyring_stress_pa",
+                    "the Eyring model needs the Eyring stress τ₀ (typically 2–20 MPa)",
+                ));
+            }
+            if t.eyring_stress_pa.is_some_and(|s| s.get() > 1e9) {
+                errors.push(FieldError::new(
+                    "/traction/eyring_stress_pa",
+                    "must be at most 1e9 Pa",
+                ));
+            }
+            if t.limiting_shear_coefficient.is_some_and(|s| s.get() > 1.0) {
+                errors.push(FieldError::new(
+                    "/traction/limiting_shear_coefficient",
+                    "must be within (0, 1]",
+                ));
+            }
+        }
+        let grids = if self.line.is_some() {
+            line_cells(self.fidelity, &mut errors).map(Grids::Line)
+        } else {
+            point_grids(self.fidelity, &mut errors)
+        };
+        match (errors.is_empty(), hertz, lubricant, grids) {
+            (true, Some(hertz), Some(lubricant), Some(grids)) => Ok(NumericalEhlCase {
+                hertz,
+                load_n: self.load_n.get(),
+                length_m: self.line.map(|l| l.length_m.get()),
+                speed_m_s: speed,
+                lubricant,
+                temperature_c: self.temperature_c.get(),
+                slide_roll_ratio,
+                traction: self.traction,
+                grids,
+                include_field: self.include_field,
+                effects: self.effects,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// The line solver's grids for a fidelity request.
+fn line_cells(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option<Cells> {
+    match fidelity {
+        FidelityRequest::Level(Level::ClosedForm) => {
+            refuse_closed_form(errors);
+            None
+        }
+        FidelityRequest::Level(level) => {
+            let (fine, tolerance) = match level {
+                Level::Fast => (2 * FAST_CELLS, REFINE_ABOVE[0]),
+                Level::High => (2 * HIGH_CELLS, REFINE_ABOVE[2]),
+                _ => (2 * STANDARD_CELLS, REFINE_ABOVE[1]),
+            };
+            Some(Cells {
+                level,
+                fine,
+                finest: (fine * 4).max(1024),
+                tolerance,
+            })
+        }
+        FidelityRequest::Custom(custom) if custom.tolerance.is_some() => {
+            errors.push(FieldError::new(
+                "/fidelity/tolerance",
+                "the Newton solve always converges to a scaled residual of 1e-10; give only a grid",
+            ));
+            None
+        }
+        FidelityRequest::Custom(custom) => match custom.grid {
+            Some([n, 1]) if (CUSTOM_CELLS.0..=CUSTOM_CELLS.1).contains(&n) && n % 2 == 0 => {
+                Some(Cells {
+                    level: Level::Standard,
+                    fine: n as usize,
+                    finest: n as usize,
+                    tolerance: REFINE_ABOVE[1],
+                })
+            }
+            _ => {
+                errors.push(FieldError::new(
+                    "/fidelity/grid",
+                    format!(
+                        "must be [cells, 1] with an even cell count in {}…{}",
+                        CUSTOM_CELLS.0, CUSTOM_CELLS.1
+                    ),
+                ));
+                None
+            }
+        },
+    }
+}
+
+fn refuse_closed_form(errors: &mut Vec<FieldError>) {
+    errors.push(FieldError::new(
+        "/fidelity",
+        "the numerical EHL solver has fast, standard and high levels; the closed-form films are at /v1/contacts/ehl-film",
+    ));
+}
+
+/// The point solver's grid for a fidelity request.
+fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option<Grids> {
+    let level = |level: Level, i: usize| {
+        Some(Grids::Point {
+            level,
+            cells: POINT_CELLS[i],
+            tolerance: POINT_WARN_ABOVE[i],
+        })
+    };
+    match fidelity {
+        FidelityRequest::Level(Level::Fast) => level(Level::Fast, 0),
+        FidelityRequest::Level(Level::Standard) => level(Level::Standard, 1),
+        FidelityRequest::Level(Level::High) => level(Level::High, 2),
+        FidelityRequest::Level(Level::ClosedForm) => {
+            refuse_closed_form(errors);
+            None
+        }
+        FidelityRequest::Custom(custom) if custom.tolerance.is_some() => {
+            errors.push(FieldError::new(
+                "/fidelity/tolerance",
+                "the multigrid cycles run to a fixed algebraic tolerance far below the grid's error; give only a grid",
+            ));
+            None
+        }
+        FidelityRequest::Custom(custom) => match custom.grid {
+            Some([n, m])
+                if n == m
+                    && n.is_power_of_two()
+                    && (POINT_CUSTOM_CELLS.0..=POINT_CUSTOM_CELLS.1).contains(&n) =>
+            {
+                Some(Grids::Point {
+                    level: Level::Standard,
+                    cells: n as usize,
+                    tolerance: POINT_WARN_ABOVE[1],
+                })
+            }
+            _ => {
+                errors.push(FieldError::new(
+                    "/fidelity/grid",
+                    format!(
+                        "a point contact takes [n, n] cells with n a power of two in {}…{}",
+                        POINT_CUSTOM_CELLS.0, POINT_CUSTOM_CELLS.1
+                    ),
+                ));
+                None
+            }
+        },
+    }
+}
+
+/// Profiles along x (a point contact's along its centre line y = 0).
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct NumericalEhlProfiles {
+    /// Positions along x from the contact centre, m (the entrainment is towards +x).
+    pub x_m: Vec<f64>,
+    /// Pressure at each position, Pa.
+    pub pressure_pa: Vec<f64>,
+    /// Film thickness at each position, m.
+    pub film_m: Vec<f64>,
+}
+
+/// Traction from the converged film.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct NumericalEhlTraction {
+    pub model: TractionModel,
+    /// Sliding (shear) traction force over the contact (a line contact's whole length), N.
+    pub traction_force_n: f64,
+    /// Traction coefficient F_t/F.
+    pub traction_coefficient: f64,
+    /// Share of the load carried where the limiting shear stress caps τ (0 without it).
+    pub limited_load_fraction: f64,
+}
+
+/// A closed-form film to compare with.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct NumericalEhlFormula {
+    /// Line: `pan_hamrock_central`, `pan_hamrock_min`, `dowson_higginson_min` or
+    /// `moes_central`. Point: `hamrock_dowson_central` and `hamrock_dowson_min` (the hard-EHL
+    /// fits, Stachowiak eq. 7.26, Hamrock eq. 21.57), or for an isoviscous solve
+    /// `hamrock_isoviscous_elastic_central` and `hamrock_isoviscous_rigid`.
+    pub formula: String,
+    /// The formula's film, m.
+    pub film_m: f64,
+    /// (numerical − formula)/formula.
+    pub deviation: f64,
+}
+
+/// Result.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct NumericalEhlOutput {
+    /// `line` or `point`.
+    #[schema(example = "line")]
+    pub contact: String,
+    /// Film at the contact centre x = 0, m.
+    pub central_film_thickness_m: f64,
+    /// Smallest film, m (in the outlet constriction under heavy load; in a point contact the
+    /// horseshoe's side lobes).
+    pub min_film_thickness_m: f64,
+    /// Point contact: the lateral position y of the smallest film, m (one of the two
+    /// symmetric side lobes).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_film_position_y_m: Option<f64>,
+    /// Highest pressure, Pa (the outlet spike when there is one).
+    pub max_pressure_pa: f64,
+    /// Where the highest pressure is, m from the centre.
+    pub max_pressure_position_m: f64,
+    /// Where the film cavitates (the outlet meniscus), m from the centre.
+    pub cavitation_position_m: f64,
+    /// Hertz half-width b of the dry contact under the same load, m; for a point contact the
+    /// semi-axis along x.
+    pub hertz_half_width_m: f64,
+    /// Point contact: the Hertz semi-axis across the entrainment direction (along y), m.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub hertz_semi_axis_y_m: Option<f64>,
+    /// Hertz maximum pressure p_h of the dry contact, Pa.
+    pub hertz_pressure_pa: f64,
+    /// Moes' load parameter: line M = W′(2U)^(−1/2), point M = W(2U)^(−3/4).
+    pub moes_load_parameter: f64,
+    /// Moes' material parameter L = G(2U)^(1/4) (0 for an isoviscous solve).
+    pub moes_material_parameter: f64,
+    /// Speed parameter U = η₀ū/(E′R_x).
+    pub speed_parameter: f64,
+    /// Materials parameter G = αE′ (0 for an isoviscous solve).
+    pub materials_parameter: f64,
+    /// Load parameter: line W′ = w/(E′R_x) with w = F/length; point W = F/(E′R_x²).
+    pub load_parameter: f64,
+    /// E′ = 2/Σ(1 − ν²)/E, Pa.
+    pub effective_modulus_pa: f64,
+    /// R_x, the reduced radius along the entrainment direction, m.
+    pub reduced_radius_x_m: f64,
+    /// η₀ at the inlet temperature and ambient pressure, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// The closed-form films of `/v1/contacts/ehl-film` beside the numerical ones (the
+    /// published band: the fits scatter by about ±10 % among themselves).
+    pub formulas: Vec<NumericalEhlFormula>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub traction: Option<NumericalEhlTraction>,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub profiles: Option<NumericalEhlProfiles>,
+}
+
+impl Calculation for Ehl {
+    const PATH: &'static str = "/v1/contacts/ehl";
+    const SUMMARY: &'static str =
+        "Numerical EHL of a line or point contact: film, pressure spike, horseshoe, traction";
+    const DESCRIPTION: &'static str = include_str!("numerical.md");
+    const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &["compressibility", "piezoviscosity"];
+    const EXAMPLE: &'static str = r#"{"body1": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "body2": {"radius_x_m": 0.02, "elastic_modulus_pa": 2.1e11, "poisson_ratio": 0.3}, "load_n": 5000, "line": {"length_m": 0.01}, "entrainment_speed_m_s": 2.0, "lubricant": {"viscosity_pa_s": 0.05, "roelands_pressure_viscosity_index": 0.6}, "temperature_c": 40, "slide_roll_ratio": 0.05, "traction": {"model": "eyring", "eyring_stress_pa": 5e6, "limiting_shear_coefficient": 0.08}}"#;
+
+    type Input = NumericalEhlInput;
+    type Output = NumericalEhlOutput;
+
+    fn run(case: NumericalEhlCase, ctx: &mut Context) -> Result<NumericalEhlOutput, CalcError> {
+        let hertz = case.hertz.solve()?;
+        // The dry contact's approach is not part of an EHL solution: its warning is not passed
+        // on; the others are, with the dry contact's report until the solver's replaces it.
+        for w in hertz.warnings_but_approach() {
+            ctx.warn(w.code, w.message.clone());
+        }
+        ctx.report(hertz.report.clone());
+        let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
+        let ph = hertz.max_pressure_pa;
+        let law = pressure_law(&case, eta0, ph, ctx)?;
+        if let Some(PressureLaw::Barus { alpha_1_pa }) = law {
+            if alpha_1_pa * ph > BARUS_LIMIT {
+                ctx.warn(
+                    "barus_beyond_its_range",
+                    format!("αp_h = {:.1}: Barus' exponential overstates the viscosity at {:.2} GPa by orders of magnitude (Khonsari §2.6 limits it to about 0.07 GPa, Roelands to moderate pressures); the film, set in the inlet, is little affected, but the pressure spike and the traction are — prefer a Roelands Z", alpha_1_pa * ph, ph * 1e-9),
+                );
+            }
+        }
+        let rise = Fluid {
+            law: PressureLaw::Barus { alpha_1_pa: 0.0 },
+            eta0_pa_s: eta0,
+            hertz_pressure_pa: ph,
+            compressible: true,
+        }
+        .density(1.0)
+        .0 - 1.0;
+        let compressible = decide(
+            ctx,
+            "compressibility",
+            case.effects.compressibility,
+            Criterion {
+                name: "density_rise_at_hertz_pressure",
+                value: rise,
+                threshold: COMPRESSIBILITY_THRESHOLD,
+            },
+            "Dowson–Higginson density",
+        );
+        let fluid = Fluid {
+            law: law.unwrap_or(PressureLaw::Barus { alpha_1_pa: 0.0 }),
+            eta0_pa_s: eta0,
+            hertz_pressure_pa: ph,
+            compressible,
+        };
+        let alpha = law.map_or(0.0, |l| l.alpha_1_pa(eta0));
+        match (case.grids, case.length_m) {
+            (Grids::Line(cells), Some(length)) => {
+                line_contact(&case, &hertz, fluid, alpha, cells, length, ctx)
+            }
+            (
+                Grids::Point {
+                    level,
+                    cells,
+                    tolerance,
+                },
+                None,
+            ) => point_contact(&case, &hertz, fluid, alpha, (level, cells, tolerance), ctx),
+            _ => Err(CalcError::Internal(
+                "the grids do not match the contact".to_owned(),
+            )),
+        }
+    }
+}
+
+/// The line contact: Moes' map check, the nested Newton solves, films and traction.
+fn line_contact(
+    case: &NumericalEhlCase,
+    hertz: &Solution,
+    fluid: Fluid,
+    alpha: f64,
+    cells: Cells,
+    length_m: f64,
+    ctx: &mut Context,
+) -> Result<NumericalEhlOutput, CalcError> {
+    let (e, rx, ph) = (
+        hertz.effective_modulus_pa,
+        hertz.reduced_radius_x_m,
+        fluid.hertz_pressure_pa,
+    );
+    let b = hertz.half_width_m().unwrap_or(f64::NAN);
+    let groups = Groups {
+        u: fluid.eta0_pa_s * case.speed_m_s / (e * rx),
+        g: alpha * e,
+        w: case.load_n / length_m / (e * rx),
+    };
+    let two_u = 2.0 * groups.u;
+    let (m, l) = (groups.w / two_u.sqrt(), groups.g * two_u.powf(0.25));
+    if !(MOES_M_RANGE.0..=MOES_M_RANGE.1).contains(&m) || l > MOES_L_MAX {
+        return Err(CalcError::impossible(
+            "/load_n",
+            format!("Moes' M = {m:.4e} and L = {l:.4e} are outside the solver's map (M {}…{}, L ≤ {MOES_L_MAX}): below M = 0.1 the contact is rigid–hydrodynamic, above 10⁴ the Hertz zone cannot be resolved", MOES_M_RANGE.0, MOES_M_RANGE.1),
+        ));
+    }
+    let moes_h = MoesAsymptotes::new(m, l).central();
+    let film_guess = std::f64::consts::PI * moes_h / (8.0 * m);
+    let problem = LineProblem {
+        fluid,
+        lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
+        inlet: -(60.0 * film_guess).sqrt().max(4.5),
+        outlet: (3.0 * film_guess).sqrt().max(1.5),
+        film_guess,
+    };
+    let solved = solve_nested(&problem, cells, ctx)?;
+    let scale = b * b / rx;
+    let fine = &solved.fine;
+    let (p_index, p_max) = peak(&fine.pressure);
+    let cavitation = cavitation_point(&fine.x, &fine.pressure);
+    let central = solved.central * scale;
+    let min = solved.min * scale;
+    let (ph_central, ph_min) = pan_hamrock(&groups, groups.w);
+    let mut formulas = vec![compare(rx, "moes_central", moes_h * two_u.sqrt(), central)];
+    if alpha > 0.0 {
+        formulas.push(compare(rx, "pan_hamrock_central", ph_central, central));
+        formulas.push(compare(rx, "pan_hamrock_min", ph_min, min));
+        formulas.push(compare(
+            rx,
+            "dowson_higginson_min",
+            dowson_higginson(&groups, groups.w),
+            min,
+        ));
+    }
+    let n = fine.x.len();
+    let cells_iter = (0..n).map(|i| {
+        let width = 0.5 * (fine.x[(i + 1).min(n - 1)] - fine.x[i.saturating_sub(1)]) * b;
+        (fine.pressure[i], fine.film[i] * scale, width * length_m)
+    });
+    let traction = case
+        .traction
+        .map(|spec| traction(&spec, &fluid, cells_iter, case));
+    warn_traction(&traction, ctx);
+    let profiles = case.include_field.then(|| NumericalEhlProfiles {
+        x_m: fine.x.iter().map(|x| x * b).collect(),
+        pressure_pa: fine.pressure.iter().map(|p| p * ph).collect(),
+        film_m: fine.film.iter().map(|h| h * scale).collect(),
+    });
+    Ok(NumericalEhlOutput {
+        contact: "line".to_owned(),
+        central_film_thickness_m: central,
+        min_film_thickness_m: min,
+        min_film_position_y_m: None,
+        max_pressure_pa: p_max * ph,
+        max_pressure_position_m: fine.x[p_index] * b,
+        cavitation_position_m: cavitation * b,
+        hertz_half_width_m: b,
+        hertz_semi_axis_y_m: None,
+        hertz_pressure_pa: ph,
+        moes_load_parameter: m,
+        moes_material_parameter: l,
+        speed_parameter: groups.u,
+        materials_parameter: groups.g,
+        load_parameter: groups.w,
+        effective_modulus_pa: e,
+        reduced_radius_x_m: rx,
+        viscosity_pa_s: fluid.eta0_pa_s,
+        formulas,
+        traction,
+        profiles,
+    })
+}
+
+/// A closed-form film h/R_x beside a numerical film in m.
+fn compare(rx: f64, formula: &str, h: f64, numerical: f64) -> NumericalEhlFormula {
+    NumericalEhlFormula {
+        formula: formula.to_owned(),
+        film_m: h * rx,
+        deviation: numerical / (h * rx) - 1.0,
+    }
+}
+
+/// The point problem's two finest levels on `cells` per direction, or on half as many (and so
+/// on) when the finest level's cycles stall or diverge (strongly piezoviscous contacts on fine
+/// grids), with a `grid_fallback` warning: returns the levels and the cells they reached.
+fn solve_point(
+    problem: &PointProblem,
+    mut cells: usize,
+    tolerance: f64,
+    ctx: &mut Context,
+) -> Result<(Vec<PointSolution>, usize), CalcError> {
+    let budget = ctx.budget();
+    let mut failed = Vec::new();
+    loop {
+        match problem.solve(cells, tolerance, &budget) {
+            Ok(solved) => {
+                if !failed.is_empty() {
+                    ctx.warn(
+                        "grid_fallback",
+                        format!("the multigrid cycles stalled or diverged on {}; the result is the {cells}² cells' solution", failed.join(", ")),
+                    );
+                }
+                return Ok((solved, cells));
+            }
+            Err(PointFailure::NotConverged {
+                residual,
+                cycles,
+                cells: stalled,
+            }) if stalled == cells && cells / 2 >= point::MIN_CELLS => {
+                failed.push(format!(
+                    "{cells}² cells (after {cycles} cycles, scaled residual {residual:.3e})"
+                ));
+                cells /= 2;
+            }
+            Err(PointFailure::DeadlineExceeded) => return Err(CalcError::DeadlineExceeded),
+            Err(PointFailure::NotConverged {
+                residual,
+                cycles,
+                cells,
+            }) => {
+                return Err(CalcError::impossible(
+                    "/load_n",
+                    format!("the multigrid cycles on {cells}² cells stalled or diverged after {cycles} cycles with scaled residual {residual:.3e}: this load and speed are beyond the point solver (try another fidelity)"),
+                ))
+            }
+        }
+    }
+}
+
+/// The point contact: the Hertz ellipse in the solver's units, Moes' map check, the multigrid
+/// solve on the requested grid and the grid of half as many cells, Richardson's extrapolation,
+/// films, formulas and traction.
+fn point_contact(
+    case: &NumericalEhlCase,
+    hertz: &Solution,
+    fluid: Fluid,
+    alpha: f64,
+    (level, cells, tolerance): (Level, usize, f64),
+    ctx: &mut Context,
+) -> Result<NumericalEhlOutput, CalcError> {
+    let (e, rx, ph) = (
+        hertz.effective_modulus_pa,
+        hertz.reduced_radius_x_m,
+        fluid.hertz_pressure_pa,
+    );
+    let ry = hertz.reduced_radius_y_m.unwrap_or(f64::INFINITY);
+    let (major, minor) = hertz.semi_axes_m().unwrap_or((f64::NAN, f64::NAN));
+    // a along the entrainment direction x, b across it.
+    let (a, b) = if hertz.major_axis() == MajorAxis::X {
+        (major, minor)
+    } else {
+        (minor, major)
+    };
+    let groups = Groups {
+        u: fluid.eta0_pa_s * case.speed_m_s / (e * rx),
+        g: alpha * e,
+        w: case.load_n / (e * rx * rx),
+    };
+    let two_u = 2.0 * groups.u;
+    let (m, l) = (groups.w * two_u.powf(-0.75), groups.g * two_u.powf(0.25));
+    if !(POINT_MOES_M_RANGE.0..=POINT_MOES_M_RANGE.1).contains(&m) || l > MOES_L_MAX {
+        return Err(CalcError::impossible(
+            "/load_n",
+            format!("Moes' M = {m:.4e} and L = {l:.4e} (point contact: M = W(2U)^−¾) are outside the point solver's map (M {}…{}, L ≤ {MOES_L_MAX}): below M = 1 the contact is rigid–hydrodynamic, above 2000 the Hertz zone cannot be resolved", POINT_MOES_M_RANGE.0, POINT_MOES_M_RANGE.1),
+        ));
+    }
+    let k = b / a;
+    let radius_ratio = if ry.is_finite() { ry / rx } else { 1e9 };
+    let regimes = regime_films(
+        groups.viscosity_parameter(),
+        groups.elasticity_parameter(),
+        k,
+        radius_ratio,
+    );
+    let reduced_guess = match point_regime(&regimes) {
+        Regime::IsoviscousRigid => regimes.isoviscous_rigid,
+        Regime::PiezoviscousRigid => regimes.piezoviscous_rigid,
+        Regime::IsoviscousElastic => regimes.isoviscous_elastic.1,
+        Regime::PiezoviscousElastic => regimes.piezoviscous_elastic.1,
+    };
+    // H = hR_x/a².
+    let unit = a * a / rx;
+    let film_guess = groups.film_from_reduced(reduced_guess) * rx / unit;
+    let ellipse = HertzEllipse {
+        a,
+        b,
+        rx,
+        ry,
+        e_prime: e,
+    };
+    let problem = PointProblem::new(fluid, &ellipse, case.speed_m_s, film_guess);
+    let (solved, cells) = solve_point(&problem, cells, tolerance, ctx)?;
+    let (coarse, fine) = (&solved[0], &solved[1]);
+    let (c0, c1) = (coarse.central_film(), fine.central_film());
+    let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
+    let central = richardson::extrapolate(c0, c1);
+    if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
+        return Err(CalcError::impossible(
+            "/load_n",
+            format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+        ));
+    }
+    // The minimum (a parabola's vertex between nodes) converges like the film, so it is
+    // extrapolated too — unless the coarser grid closes it.
+    let extrapolated = richardson::extrapolate(m0, m1);
+    let min = if m0 > 0.0 && extrapolated > 0.0 {
+        extrapolated
+    } else {
+        ctx.warn(
+            "min_film_not_extrapolated",
+            format!("the minimum film closes on {}² cells, so the {cells}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", cells / 2),
+        );
+        m1
+    };
+    // Richardson's estimate plus what the cycles left (a limit cycle's spread, or the last
+    // cycle's change), weighted as in (4c₁ − c₀)/3.
+    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
+    let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
+    let error = discretisation + cycles_left;
+    ctx.report(SolverReport {
+        method: "fas_multigrid_finite_difference_richardson".to_owned(),
+        fidelity: level,
+        grid: Some(vec![cells as u32, cells as u32]),
+        iterations: fine.cycles,
+        iterations_unit: IterationUnit::MultigridCycles,
+        evaluations: None,
+        stop_reason: StopReason::Converged,
+        residual: Some(fine.residual),
+        error_estimate: Some(error),
+        elapsed_ms: 0.0,
+    });
+    if error > tolerance {
+        ctx.warn(
+            "grid_limited",
+            format!("the central film's estimated error {:.2} % ({:.2} % the grid's, {:.2} % the cycles') exceeds the level's {:.1} % on {cells}² cells: the Hertz zone is thin for this grid; a higher fidelity resolves it", error * 100.0, discretisation * 100.0, cycles_left * 100.0, tolerance * 100.0),
+        );
+    }
+    let nx = fine.x.len();
+    let (p_index, p_max) = peak(&fine.pressure);
+    // The centre line y = 0 is the middle row of the grid.
+    let centre_row = fine.y.len() / 2;
+    let row = |field: &[f64]| field[centre_row * nx..(centre_row + 1) * nx].to_vec();
+    let centre_pressure = row(&fine.pressure);
+    let cavitation = cavitation_point(&fine.x, &centre_pressure);
+    let film_m = |h: f64| h * unit;
+    let formulas = if alpha > 0.0 {
+        if !(HARD_FIT_ELLIPTICITY.0..=HARD_FIT_ELLIPTICITY.1).contains(&k) {
+            ctx.warn(
+                "outside_fitted_range",
+                format!("the Hamrock–Dowson fits in `formulas` were made for k = {}–{} (entrainment across the major axis at k > 1); at k = {k:.3} their deviations are indicative only (Hamrock §21.3.3)", HARD_FIT_ELLIPTICITY.0, HARD_FIT_ELLIPTICITY.1),
+            );
+        }
+        vec![
+            compare(
+                rx,
+                "hamrock_dowson_central",
+                hard_central_film(&groups, k),
+                film_m(central),
+            ),
+            compare(
+                rx,
+                "hamrock_dowson_min",
+                hard_min_film(&groups, k),
+                film_m(min),
+            ),
+        ]
+    } else {
+        vec![
+            compare(
+                rx,
+                "hamrock_isoviscous_elastic_central",
+                groups.film_from_reduced(regimes.isoviscous_elastic.1),
+                film_m(central),
+            ),
+            compare(
+                rx,
+                "hamrock_isoviscous_rigid",
+                groups.film_from_reduced(regimes.isoviscous_rigid),
+                film_m(central),
+            ),
+        ]
+    };
+    let (hx, hy) = (fine.x[1] - fine.x[0], fine.y[1] - fine.y[0]);
+    let cell_area = hx * a * hy * b;
+    let cells_iter =
+        (0..fine.pressure.len()).map(|k| (fine.pressure[k], film_m(fine.film[k]), cell_area));
+    let traction = case
+        .traction
+        .map(|spec| traction(&spec, &fluid, cells_iter, case));
+    warn_traction(&traction, ctx);
+    let profiles = case.include_field.then(|| NumericalEhlProfiles {
+        x_m: fine.x.iter().map(|x| x * a).collect(),
+        pressure_pa: centre_pressure.iter().map(|p| p * ph).collect(),
+        film_m: row(&fine.film).into_iter().map(film_m).collect(),
+    });
+    Ok(NumericalEhlOutput {
+        contact: "point".to_owned(),
+        central_film_thickness_m: film_m(central),
+        min_film_thickness_m: film_m(min),
+        min_film_position_y_m: Some(min_y * b),
+        max_pressure_pa: p_max * ph,
+        max_pressure_position_m: fine.x[p_index % nx] * a,
+        cavitation_position_m: cavitation * a,
+        hertz_half_width_m: a,
+        hertz_semi_axis_y_m: Some(b),
+        hertz_pressure_pa: ph,
+        moes_load_parameter: m,
+        moes_material_parameter: l,
+        speed_parameter: groups.u,
+        materials_parameter: groups.g,
+        load_parameter: groups.w,
+        effective_modulus_pa: e,
+        reduced_radius_x_m: rx,
+        viscosity_pa_s: fluid.eta0_pa_s,
+        formulas,
+        traction,
+        profiles,
+    })
+}
+
+/// The index and value of the highest pressure.
+fn peak(pressure: &[f64]) -> (usize, f64) {
+    pressure
+        .iter()
+        .copied()
+        .enumerate()
+        .max_by(|a, b| a.1.total_cmp(&b.1))
+        .unwrap_or((0, 0.0))
+}
+
+/// Where a pressure profile along `x` ends: the node after its last pressurised one (the
+/// outlet meniscus), or the domain's end.
+fn cavitation_point(x: &[f64], pressure: &[f64]) -> f64 {
+    let last = x.len() - 1;
+    pressure
+        .iter()
+        .rposition(|&p| p > 0.0)
+        .map_or(x[last], |i| x[(i + 1).min(last)])
+}
+
+fn warn_traction(traction: &Option<NumericalEhlTraction>, ctx: &mut Context) {
+    if let Some(t) = traction.as_ref().filter(|t| t.traction_coefficient > 1.0) {
+        ctx.warn(
+            "traction_exceeds_load",
+            format!("the traction coefficient {:.3e} exceeds 1: the {:?} shear law with the pressure–viscosity law overflows in the Hertz zone (Stachowiak §7.7); use the Eyring model and/or a limiting shear stress", t.traction_coefficient, t.model),
+        );
+    }
+}
+
+fn decide(ctx: &mut Context, effect: &'static str, mode: Mode, c: Criterion, what: &str) -> bool {
+    let decision = Decision::decide(mode, c, what);
+    let applied = decision.applied;
+    ctx.decide(effect, decision);
+    applied
+}
+
+/// The pressure–viscosity law to solve with (None: isoviscous), after the piezoviscosity
+/// decision.
+fn pressure_law(
+    case: &NumericalEhlCase,
+    eta0: f64,
+    ph: f64,
+    ctx: &mut Context,
+) -> Result<Option<PressureLaw>, CalcError> {
+    let Some(law) = case.lubricant.pressure_law else {
+        ctx.decide(
+            "piezoviscosity",
+            Decision::not_applicable(
+                Mode::Off,
+                "piezoviscosity: requested off and the lubricant has no pressure–viscosity law",
+            ),
+        );
+        return Ok(None);
+    };
+    let alpha = law.alpha_1_pa(eta0);
+    if let PressureLaw::Roelands { .. } = law {
+        if !(alpha.is_finite() && alpha > 0.0) {
+            return Err(CalcError::impossible(
+                "/lubricant",
+                format!("Roelands' law needs η₀ > 6.3e-5 Pa·s (log₁₀η₀[mPa·s] + 1.2 > 0); η₀ = {eta0:.4e} Pa·s: give the Barus coefficient for so thin a fluid"),
+            ));
+        }
+    }
+    let applied = decide(
+        ctx,
+        "piezoviscosity",
+        case.effects.piezoviscosity,
+        Criterion {
+            name: "alpha_times_hertz_pressure",
+            value: alpha * ph,
+            threshold: PIEZOVISCOSITY_THRESHOLD,
+        },
+        law.name(),
+    );
+    Ok(applied.then_some(law))
+}
+
+/// The fine-grid field and the Richardson-extrapolated films.
+struct Nested {
+    fine: LineSolution,
+    central: f64,
+    min: f64,
+}
+
+/// Solve on a coarse and a fine grid (the coarse solution starts the fine one), extrapolate the
+/// films (second order: the observed ratio of successive differences is about 4), and refine
+/// while the estimated error exceeds the level's tolerance ([`REFINE_ABOVE`]).
+fn solve_nested(
+    problem: &LineProblem,
+    cells: Cells,
+    ctx: &mut Context,
+) -> Result<Nested, CalcError> {
+    let budget = ctx.budget();
+    let failure = |f: LineFailure, cells: usize| {
+        match f {
+        LineFailure::DeadlineExceeded => CalcError::DeadlineExceeded,
+        LineFailure::NotConverged { residual, iterations } => CalcError::impossible(
+            "/load_n",
+            format!("the Newton solve on {cells} cells stalled after {iterations} iterations with scaled residual {residual:.3e}: this load and speed are beyond the solver (try another fidelity)"),
+        ),
+    }
+    };
+    let films = |s: &LineSolution| {
+        let central = interpolate(&s.x, &s.film, 0.0);
+        let min = s.film.iter().copied().fold(f64::INFINITY, f64::min);
+        (central, min)
+    };
+    let mut fine_cells = cells.fine;
+    // Nested iteration from a coarse grid up to the first pair's coarse grid: Newton started
+    // from the Hertz pressure on a fine grid can stall where the same start converges on 32
+    // cells and each finer grid then starts within its basin.
+    let mut start_cells = (fine_cells / 2).min(FIRST_CELLS);
+    let mut coarse = problem
+        .solve(start_cells, None, &budget)
+        .map_err(|f| failure(f, start_cells))?;
+    let mut iterations = coarse.iterations;
+    while start_cells < fine_cells / 2 {
+        start_cells *= 2;
+        coarse = problem
+            .solve(start_cells, Some(&coarse), &budget)
+            .map_err(|f| failure(f, start_cells))?;
+        iterations += coarse.iterations;
+    }
+    // The last resolved pair: what a stalled or late refinement falls back to.
+    let mut last: Option<(Nested, usize, f64)> = None;
+    loop {
+        let fine = match problem.solve(fine_cells, Some(&coarse), &budget) {
+            Ok(fine) => fine,
+            Err(f) => match last.take() {
+                Some((nested, cells_used, error)) => {
+                    ctx.warn(
+                        "grid_limited",
+                        format!("refining to {fine_cells} cells failed ({}); the result is the {cells_used}-cell solution, whose estimated error is {:.2} %", failure(f, fine_cells), error * 100.0),
+                    );
+                    return Ok(nested);
+                }
+                None => return Err(failure(f, fine_cells)),
+            },
+        };
+        iterations += fine.iterations;
+        let (c0, m0) = films(&coarse);
+        let (c1, m1) = films(&fine);
+        let central = richardson::extrapolate(c0, c1);
+        let min = richardson::extrapolate(m0, m1);
+        let error = (richardson::fine_error(c0, c1) / central).abs();
+        let resolved = central > 0.0 && min > 0.0 && m1 > 0.0;
+        let last_grid = fine_cells * 2 > cells.finest;
+        if !resolved && last_grid {
+            return Err(CalcError::impossible(
+                "/load_n",
+                format!("the film is not resolved on {fine_cells} cells (central {c1:.3e}, minimum {m1:.3e} in units of b²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+            ));
+        }
+        if resolved {
+            ctx.report(SolverReport {
+                method: "newton_finite_volume_richardson".to_owned(),
+                fidelity: cells.level,
+                grid: Some(vec![fine_cells as u32, 1]),
+                iterations,
+                iterations_unit: IterationUnit::NewtonSteps,
+                evaluations: None,
+                stop_reason: StopReason::Converged,
+                residual: Some(fine.residual),
+                error_estimate: Some(error),
+                elapsed_ms: 0.0,
+            });
+            if error <= cells.tolerance || last_grid {
+                if error > cells.tolerance {
+                    ctx.warn(
+                        "grid_limited",
+                        format!("the central film's estimated error {:.2} % exceeds the level's {:.1} % on the finest grid tried ({fine_cells} cells)", error * 100.0, cells.tolerance * 100.0),
+                    );
+                }
+                return Ok(Nested { fine, central, min });
+            }
+            last = Some((
+                Nested {
+                    fine: fine.clone(),
+                    central,
+                    min,
+                },
+                fine_cells,
+                error,
+            ));
+        }
+        coarse = fine;
+        fine_cells *= 2;
+    }
+}
+
+/// The traction of the converged film for the request's traction law.
+fn traction(
+    spec: &NumericalEhlTractionSpec,
+    fluid: &Fluid,
+    cells: impl Iterator<Item = (f64, f64, f64)>,
+    case: &NumericalEhlCase,
+) -> NumericalEhlTraction {
+    let shear = match (spec.model, spec.eyring_stress_pa) {
+        (TractionModel::Eyring, Some(t0)) => ShearLaw::Eyring {
+            stress_pa: t0.get(),
+        },
+        _ => ShearLaw::Newtonian,
+    };
+    let law = TractionLaw {
+        shear,
+        limiting_shear_coefficient: spec.limiting_shear_coefficient.map(|g| g.get()),
+    };
+    let sliding = case.slide_roll_ratio * case.speed_m_s;
+    let t = traction::traction(&law, fluid, sliding, case.load_n, cells);
+    NumericalEhlTraction {
+        model: spec.model,
+        traction_force_n: t.force_n,
+        traction_coefficient: t.coefficient,
+        limited_load_fraction: t.limited_load_fraction,
+    }
+}
+
+#[cfg(test)]
+#[path = "numerical_tests.rs"]
+mod tests;
