@@ -456,16 +456,7 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
 impl Calculation for Analysis {
     const PATH: &'static str = "/v1/rolling-bearings/analysis";
     const SUMMARY: &'static str = "Ball or cylindrical roller bearing at one operating point: load distribution, static capacity, contact stresses, films, κ, life and limits";
-    const DESCRIPTION: &'static str = "The whole chain, each step by its own room: quasi-static load distribution \
-(`/v1/rolling-bearings/load-distribution`), ISO 76 static capacity and safety factor under the operating loads \
-(`/v1/rolling-bearings/static-capacity`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
-Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball (`/v1/contacts/ehl-film`: ball radius D/2; inner race \
-R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
-a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). The load distribution gets the ring speeds, so its centrifugal and \
-gyroscopic ball loads apply by their criteria; the outer film then sits at the largest outer load. Effects are the steps' own, \
-the films' merged over both raceways. A cylindrical roller `bearing` runs the same chain on line contacts over the effective \
-length (the EHL room's line formulas, Hamrock's k → ∞ limit among them), with the roller life exponent 10/3 and the roller \
-limits and ISO 76's roller rating.";
+    const DESCRIPTION: &'static str = include_str!("analysis.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[
         "thermal",

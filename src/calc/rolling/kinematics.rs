@@ -247,13 +247,7 @@ impl Calculation for Kinematics {
     const PATH: &'static str = "/v1/rolling-bearings/kinematics";
     const SUMMARY: &'static str =
         "Rolling-bearing kinematics: cage and ball spin speeds, defect frequencies (FTF, BPFO, BPFI, BSF), entrainment speeds";
-    const DESCRIPTION: &'static str = "Pure-rolling kinematics of a ball or roller bearing with the same contact angle α at both \
-races (race-control-free; Hamrock eqs 21.93–21.98, Khonsari & Booser §14.5/§14.7): with γ = D cos α/d_m, cage \
-n_c = ½[n_i(1 − γ) + n_o(1 + γ)]; ball spin relative to the cage n_b = (d_m/2D)(1 − γ²)(n_i − n_o), and from the fixed \
-frame (d_m/2D)[n_i(1 − γ) − n_o(1 + γ)]; entrainment speed ū = (π d_m/120)|n_i − n_o|(1 − γ²) at both contacts. \
-Defect frequencies in Hz: FTF = |n_c|/60, BPFO = Z|n_o − n_c|/60, BPFI = Z|n_i − n_c|/60 (so BPFO + BPFI = Z|n_i − n_o|/60), \
-BSF = |n_b|/60 (spin relative to the cage) and the ball defect frequency 2·BSF. Either ring, both or counter-rotating rings; \
-no skidding, gyroscopic or centrifugal effects.";
+    const DESCRIPTION: &'static str = include_str!("kinematics.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "contact_angle_deg": 0, "inner_ring_speed_rpm": 1800, "outer_ring_speed_rpm": 0}"#;

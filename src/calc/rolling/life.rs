@@ -738,13 +738,7 @@ impl Calculation for Life {
     const PATH: &'static str = "/v1/rolling-bearings/life";
     const SUMMARY: &'static str =
         "Rolling-bearing fatigue life: L10, reliability factor a1, ISO 281 a_ISO and modified life";
-    const DESCRIPTION: &'static str = "Basic rating life L10 = (C/P)^p million revolutions (p = 3 ball, 10/3 roller) and \
-L10h = 10⁶L10/(60n) (Khonsari & Booser eqs 13.5–13.7; Hamrock 21.3.6), with P given, from P = XF_r + YF_a (at least F_r; eq 13.8) \
-or the duty-cycle mean P_m = [ΣP_iᵖu_i/Σu_i]^{1/p} over revolutions u_i (eqs 13.9–13.10, Ex 13.3). Reliability factor a1: \
-the texts' Weibull relation [ln(100/R)/ln(100/90)]^{1/e}, e = 1.5 (Table 13.9), or ISO 281:2007's \
-0.95[ln(100/R)/ln(100/90)]^{2/3} + 0.05. Modified life a1·a_ISO·L10 with ISO 281:2007's a_ISO(κ, e_C C_u/P) for radial ball and \
-roller bearings (κ bands 0.1–0.4, 0.4–1, 1–4; κ clipped to [0.1, 4]; a_ISO capped at 50) and the rated viscosity \
-ν1 = 45000n^−0.83 d_m^−0.5 (n < 1000 rpm) or 4500n^−0.5 d_m^−0.5 mm²/s, κ = ν/ν1.";
+    const DESCRIPTION: &'static str = include_str!("life.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"bearing_kind": "ball", "dynamic_load_rating_n": 35700, "equivalent_load_n": 5000, "speed_rpm": 5000, "operating_viscosity_mm2_s": 20, "pitch_diameter_m": 0.07, "contamination_factor": 0.5, "fatigue_load_limit_n": 980}"#;

@@ -504,22 +504,7 @@ impl Calculation for LoadDistribution {
     const PATH: &'static str = "/v1/rolling-bearings/load-distribution";
     const SUMMARY: &'static str =
         "Ball- and cylindrical-roller-bearing load distribution: element loads, contact angles, load zone and ring displacements under combined load, moment and speed";
-    const DESCRIPTION: &'static str = "Quasi-static equilibrium of the inner ring of a single-row ball bearing (deep-groove or \
-angular-contact, clearance or preload) under a radial load F_r, an axial load F_a and optionally a tilting moment M, rigid rings, \
-every ball summed discretely at ψ_j = 2πj/Z (Harris; Hamrock §21.3.6; Khonsari & Booser §14.4). Groove curvature centres BD apart \
-unloaded (B = f_i + f_o − 1); concentric rings put them r₀ = BD cos α_g − P_d/2 apart radially, the free contact angle is \
-cos α_f = r₀/BD. `varying` (default): A_j = √[(a₀ + δ_a + θℜ cos ψ_j)² + (r₀ + δ_r cos ψ_j)²], sin α_j = (a₀ + δ_a + θℜ cos ψ_j)/A_j; \
-`fixed`: A_j = A₀ + (δ_a + θℜ cos ψ_j) sin α_f + δ_r cos α_f cos ψ_j. δ_j = A_j − BD ≥ 0, Q_j = K_n δ_j^1.5 with \
-K_n = [K_i^(−2/3) + K_o^(−2/3)]^(−3/2) from the exact Hertz contacts at α_f. Without `moment_n_m` the ring is held square (θ = 0) and \
-the moment it takes is reported; with it the ring tilts freely (ℜ = d_m/2 + (f_i − ½)D cos α_f). At speed (`inner_ring_speed_rpm`, \
-`outer_ring_speed_rpm`) the effects `centrifugal` (F_c = ½ m d_m ω_m², Khonsari & Booser RI-9) and `gyroscopic` (J ω_R ω_m sin β, \
-outer-race control) put every ball at its own place between the grooves (Jones): inner and outer loads and angles part. The \
-equilibrium is the minimum of the convex elastic energy less the work of the loads: safeguarded Newton (ball blocks eliminated), \
-Brent's method for pure radial or pure axial loads held square; every force balance to 1e-9 of the load. Load-zone factor \
-ε = δ(0)/[δ(0) − δ(π)] (classic ½(1 + δ_a tan α/δ_r) at fixed angle). Zero clearance, pure radial: Q_max = 4.37 F_r/Z for many \
-balls (Stribeck); pure axial: Q = F_a/(Z sin α). A cylindrical roller `bearing` (fields `roller_…`, Khonsari & Booser RI-4, RI-6): \
-straight or crowned rollers (40 laminae, crown drop y²/2R), Palmgren's Q = K_n δ^(10/9) per roller, radial load only, \
-δ_j = δ_r cos ψ_j − P_d/2 solved by Brent's method; the raceway contacts are Hertz line contacts (static factor against 4000 MPa).";
+    const DESCRIPTION: &'static str = include_str!("load_distribution.md");
     const FIDELITY: &'static [Level] = &[Level::Standard];
     const EFFECTS: &'static [&'static str] = &["centrifugal", "gyroscopic"];
     const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "inner_groove_radius_m": 0.0066, "outer_groove_radius_m": 0.0066, "diametral_clearance_m": 1.8e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 3000, "axial_load_n": 1000}"#;

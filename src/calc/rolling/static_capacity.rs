@@ -416,16 +416,7 @@ impl Calculation for StaticCapacity {
     const PATH: &'static str = "/v1/rolling-bearings/static-capacity";
     const SUMMARY: &'static str =
         "Static capacity of ball and cylindrical roller bearings: ISO 76 basic static load rating C0, static equivalent load P0 and safety factor s0";
-    const DESCRIPTION: &'static str = "Basic static radial load rating of a radial (deep-groove or single-row angular-contact) \
-ball bearing from its geometry: the radial load at which the most loaded ball, carrying Q_max = 5 F_r/(Z cos α) (Stribeck's \
-practical rule, Khonsari & Booser RI-6), presses its raceway at 4200 MPa, where the permanent deformation is about 1e-4 D \
-(Khonsari & Booser RB-8, ISO 76). C0 = f0 Z D² cos α with f0 = Q₀/(5 D²) from the exact Hertz contact on ISO's reference grooves \
-(r_i = 0.52 D, r_o = 0.53 D, or the bearing's own where looser) in bearing steel (E = 207 GPa, ν = 0.3), a function of \
-γ = D cos α/d_m. Static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r): X0 = 0.6, Y0 = 0.5 deep groove; X0 = 0.5 and Y0 from \
-0.46 (15°) to 0.22 (45°) single-row angular contact; or given. s0 = C0/P0 (or a catalogue C0), with warnings against the \
-guideline minimum for the operation (rotating: 0.5/1/2 for low/normal/high demands on quiet running, 1.5/1.5/2 with shock \
-loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0. A cylindrical roller `bearing` is rated by the same definition at \
-4000 MPa on line contacts over the effective length (C0 = 44.2 (1 − γ) Z L D, ISO's 44), P0 = F_r, with the roller guidelines.";
+    const DESCRIPTION: &'static str = include_str!("static_capacity.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "inner_groove_radius_m": 0.0066, "outer_groove_radius_m": 0.0066, "diametral_clearance_m": 1.8e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 3000, "axial_load_n": 1000}"#;
