@@ -36,13 +36,13 @@ use utoipa::ToSchema;
 
 use super::ball_equilibrium::{BallState, Balls, Gyro, Problem, SeriesLaw};
 use super::geometry::{BallBearing, BallBearingSpec, Race};
+use super::ring_equilibrium::load_balance_root;
 use super::roller::{self, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::HertzOutput;
 use crate::calc::quantity::NonNegative;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{Level, SolverReport};
-use crate::numerics::roots::{brent, Root, RootError, Stopping};
 
 pub struct LoadDistribution;
 
@@ -53,8 +53,6 @@ const TOLERANCE: f64 = 1e-9;
 /// Newton iterations allowed (each with up to [`MAX_HALVINGS`] backtracking steps).
 const MAX_ITERATIONS: u32 = 200;
 const MAX_HALVINGS: u32 = 60;
-/// Brent iterations allowed in the one-dimensional cases.
-const MAX_BRENT_ITERATIONS: u32 = 200;
 /// ISO 76's static-capacity contact pressure for ball bearings (4200 MPa): above it permanent
 /// deformation of about 1e-4 D is expected.
 const STATIC_LIMIT_PA: f64 = 4.2e9;
@@ -1400,38 +1398,6 @@ fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
         error_estimate: None,
         elapsed_ms: 0.0,
     }
-}
-
-/// The one-dimensional load balance: `force` is negative (or zero) at 0 and turns positive as the
-/// ring is pushed in; `hi` is doubled (at most 200 times) until it does, then Brent's method
-/// finds the root. `method` names the solve in a not-converged answer.
-pub(super) fn load_balance_root(
-    mut force: impl FnMut(f64) -> f64,
-    mut hi: f64,
-    method: &'static str,
-    ctx: &Context,
-) -> Result<Root, CalcError> {
-    let mut grown = 0;
-    while force(hi) <= 0.0 {
-        hi *= 2.0;
-        grown += 1;
-        if grown > 200 || !hi.is_finite() {
-            return Err(CalcError::Internal(format!("{method}: no bracket")));
-        }
-    }
-    ctx.check_deadline()?;
-    let stop = Stopping {
-        x_tolerance: 0.0,
-        max_iterations: MAX_BRENT_ITERATIONS,
-    };
-    brent(force, 0.0, hi, stop).map_err(|e| match e {
-        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-            method,
-            iterations,
-            residual: width,
-        },
-        other => CalcError::Internal(format!("{method} bracket: {other:?}")),
-    })
 }
 
 #[cfg(test)]

@@ -18,5 +18,6 @@ pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
+mod ring_equilibrium;
 pub mod roller;
 pub mod static_capacity;

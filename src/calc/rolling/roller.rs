@@ -31,7 +31,7 @@ use serde::Deserialize;
 use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
-use super::load_distribution::load_balance_root;
+use super::ring_equilibrium::load_balance_root;
 use crate::calc::contact::hertz::{
     BodySpec, Hertz, HertzInput, HertzOutput, LineSpec, PoissonRatio, Radius,
 };
