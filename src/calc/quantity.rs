@@ -32,6 +32,8 @@ impl TryFrom<f64> for Positive {
 pub struct NonNegative(f64);
 
 impl NonNegative {
+    pub const ZERO: NonNegative = NonNegative(0.0);
+
     pub fn get(self) -> f64 {
         self.0
     }

@@ -121,9 +121,30 @@ pub struct KinematicsCase {
 impl Validate for KinematicsInput {
     type Valid = KinematicsCase;
     fn validate(self) -> Result<KinematicsCase, Vec<FieldError>> {
+        KinematicsCase::new(
+            self.ball_diameter_m,
+            self.pitch_diameter_m,
+            self.ball_count,
+            self.contact_angle_deg,
+            self.inner_ring_speed_rpm.map_or(0.0, RingSpeed::get),
+            self.outer_ring_speed_rpm.map_or(0.0, RingSpeed::get),
+        )
+    }
+}
+
+impl KinematicsCase {
+    /// A case from typed values; the pointers of its errors are the kinematics request's.
+    pub(super) fn new(
+        ball_diameter_m: Positive,
+        pitch_diameter_m: Positive,
+        ball_count: u32,
+        contact_angle_deg: Option<ContactAngle>,
+        inner_rpm: f64,
+        outer_rpm: f64,
+    ) -> Result<KinematicsCase, Vec<FieldError>> {
         let mut errors = Vec::new();
-        let d = self.ball_diameter_m.get();
-        let dm = self.pitch_diameter_m.get();
+        let d = ball_diameter_m.get();
+        let dm = pitch_diameter_m.get();
         for (value, pointer) in [(d, "/ball_diameter_m"), (dm, "/pitch_diameter_m")] {
             if value > MAX_DIAMETER_M {
                 errors.push(FieldError::new(
@@ -146,13 +167,10 @@ impl Validate for KinematicsInput {
                 ),
             ));
         }
-        if !(1..=MAX_BALL_COUNT).contains(&self.ball_count) {
+        if !(1..=MAX_BALL_COUNT).contains(&ball_count) {
             errors.push(FieldError::new(
                 "/ball_count",
-                format!(
-                    "must be within [1, {MAX_BALL_COUNT}], got {}",
-                    self.ball_count
-                ),
+                format!("must be within [1, {MAX_BALL_COUNT}], got {ball_count}"),
             ));
         }
         if !errors.is_empty() {
@@ -161,10 +179,10 @@ impl Validate for KinematicsInput {
         Ok(KinematicsCase {
             ball_diameter_m: d,
             pitch_diameter_m: dm,
-            ball_count: self.ball_count,
-            contact_angle_rad: self.contact_angle_deg.map_or(0.0, |a| a.0.to_radians()),
-            inner_rpm: self.inner_ring_speed_rpm.map_or(0.0, RingSpeed::get),
-            outer_rpm: self.outer_ring_speed_rpm.map_or(0.0, RingSpeed::get),
+            ball_count,
+            contact_angle_rad: contact_angle_deg.map_or(0.0, |a| a.0.to_radians()),
+            inner_rpm,
+            outer_rpm,
         })
     }
 }
@@ -256,17 +274,23 @@ impl Calculation for Kinematics {
     type Output = KinematicsOutput;
 
     fn run(case: KinematicsCase, ctx: &mut Context) -> Result<KinematicsOutput, CalcError> {
-        if case.inner_rpm == case.outer_rpm {
-            ctx.warn(
+        Ok(solve(&case, ctx))
+    }
+}
+
+/// The speeds of a validated case, with a warning when the rings do not turn relative to each
+/// other (the room's answer; the analysis calls it too).
+pub(super) fn solve(case: &KinematicsCase, ctx: &mut Context) -> KinematicsOutput {
+    if case.inner_rpm == case.outer_rpm {
+        ctx.warn(
                 "no_relative_rotation",
                 format!(
                     "both rings turn at {} rpm: the bearing turns as a rigid body, with no rolling, spin or defect frequencies (only the cage frequency)",
                     case.inner_rpm
                 ),
             );
-        }
-        Ok(kinematics(&case))
     }
+    kinematics(case)
 }
 
 /// The closed forms of the module documentation.

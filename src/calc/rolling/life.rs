@@ -794,7 +794,7 @@ fn a_iso(kind: BearingKind, kappa: f64, x: f64) -> f64 {
 }
 
 /// The whole calculation, with its warnings.
-fn life(case: &LifeCase, ctx: &mut Context) -> LifeOutput {
+pub(super) fn life(case: &LifeCase, ctx: &mut Context) -> LifeOutput {
     let p = case.kind.life_exponent();
     let ratio = case.rating_n / case.load_n;
     let l10 = ratio.powf(p);

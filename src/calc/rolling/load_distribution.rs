@@ -37,7 +37,7 @@ use utoipa::ToSchema;
 use super::ball_equilibrium::{BallState, Balls, Gyro, Problem, SeriesLaw};
 use super::geometry::{BallBearing, BallBearingSpec, Race};
 use super::ring_equilibrium::load_balance_root;
-use super::roller::{self, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
+use super::roller::{self, RollerBearing, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::HertzOutput;
 use crate::calc::quantity::NonNegative;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -196,11 +196,39 @@ pub(super) fn parse_at<T: DeserializeOwned>(value: Value, at: &str) -> Result<T,
     })
 }
 
+/// The request's load case, typed: everything but the bearing. The pointers of its errors are
+/// the load-distribution request's, which the analysis request shares.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Loading {
+    pub radial_load_n: NonNegative,
+    pub axial_load_n: NonNegative,
+    pub contact_angle_mode: ContactAngleMode,
+    pub moment_n_m: Option<f64>,
+    pub inner_ring_speed_rpm: Option<f64>,
+    pub outer_ring_speed_rpm: Option<f64>,
+    pub effects: LoadDistributionEffects,
+}
+
 impl LoadDistributionInput {
+    fn loading(&self) -> Loading {
+        Loading {
+            radial_load_n: self.radial_load_n,
+            axial_load_n: self.axial_load_n,
+            contact_angle_mode: self.contact_angle_mode,
+            moment_n_m: self.moment_n_m,
+            inner_ring_speed_rpm: self.inner_ring_speed_rpm,
+            outer_ring_speed_rpm: self.outer_ring_speed_rpm,
+            effects: self.effects,
+        }
+    }
+}
+
+impl Loading {
     /// A roller bearing's request: radial load only, no speed effects.
-    fn validate_roller(self) -> Result<LoadDistributionRequest, Vec<FieldError>> {
-        let spec: RollerBearingSpec = parse_at(self.bearing, "/bearing")?;
-        let bearing = spec.validate_at("/bearing");
+    pub(super) fn roller(
+        self,
+        bearing: Result<RollerBearing, Vec<FieldError>>,
+    ) -> Result<LoadDistributionRequest, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
         if f_r > MAX_LOAD_N {
@@ -253,11 +281,24 @@ impl LoadDistributionInput {
 impl Validate for LoadDistributionInput {
     type Valid = LoadDistributionRequest;
     fn validate(self) -> Result<LoadDistributionRequest, Vec<FieldError>> {
+        let loading = self.loading();
         if self.bearing.get("roller_diameter_m").is_some() {
-            return self.validate_roller();
+            let spec: RollerBearingSpec = parse_at(self.bearing, "/bearing")?;
+            return loading.roller(spec.validate_at("/bearing"));
         }
-        let bearing = parse_at::<BallBearingSpec>(self.bearing.clone(), "/bearing")
-            .and_then(|spec| spec.validate_at("/bearing"));
+        loading.ball(
+            parse_at::<BallBearingSpec>(self.bearing, "/bearing")
+                .and_then(|spec| spec.validate_at("/bearing")),
+        )
+    }
+}
+
+impl Loading {
+    /// A ball bearing's request.
+    pub(super) fn ball(
+        self,
+        bearing: Result<BallBearing, Vec<FieldError>>,
+    ) -> Result<LoadDistributionRequest, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let (f_r, f_a) = (self.radial_load_n.get(), self.axial_load_n.get());
         for (f, pointer) in [(f_r, "/radial_load_n"), (f_a, "/axial_load_n")] {
@@ -514,104 +555,112 @@ impl Calculation for LoadDistribution {
         request: LoadDistributionRequest,
         ctx: &mut Context,
     ) -> Result<LoadDistributionOutput, CalcError> {
-        let case = match request {
-            LoadDistributionRequest::Ball(case) => case,
-            LoadDistributionRequest::Roller(case) => return roller_run(case, ctx),
-        };
-        let bearing = &case.bearing;
-        let alpha_f = bearing.free_contact_angle();
-        let k_n = bearing.contact_stiffness(alpha_f, ctx)?;
-        let speed = speed_model(&case, k_n, ctx)?;
-        let eq = if case.moment_n_m.is_none() && speed.is_none() {
-            classic(&case, k_n, ctx)?
+        solve(request, ctx)
+    }
+}
+
+/// The load distribution of a validated case (the room's answer; the analysis calls it too).
+pub(super) fn solve(
+    request: LoadDistributionRequest,
+    ctx: &mut Context,
+) -> Result<LoadDistributionOutput, CalcError> {
+    let case = match request {
+        LoadDistributionRequest::Ball(case) => case,
+        LoadDistributionRequest::Roller(case) => return roller_run(case, ctx),
+    };
+    let bearing = &case.bearing;
+    let alpha_f = bearing.free_contact_angle();
+    let k_n = bearing.contact_stiffness(alpha_f, ctx)?;
+    let speed = speed_model(&case, k_n, ctx)?;
+    let eq = if case.moment_n_m.is_none() && speed.is_none() {
+        classic(&case, k_n, ctx)?
+    } else {
+        general(&case, k_n, speed, ctx)?
+    };
+    let inner_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
+        if b.inner_load > m.0 {
+            (b.inner_load, b.inner_angle)
         } else {
-            general(&case, k_n, speed, ctx)?
-        };
-        let inner_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
-            if b.inner_load > m.0 {
-                (b.inner_load, b.inner_angle)
-            } else {
-                m
-            }
-        });
-        let outer_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
-            if b.outer_load > m.0 {
-                (b.outer_load, b.outer_angle)
-            } else {
-                m
-            }
-        });
-        if inner_max.0 <= 0.0 {
-            return Err(CalcError::Internal(
-                "an equilibrium without a loaded ball".to_owned(),
-            ));
+            m
         }
-        let inner = bearing.raceway_contact(Race::Inner, inner_max.1, inner_max.0, ctx)?;
-        let outer = bearing.raceway_contact(Race::Outer, outer_max.1, outer_max.0, ctx)?;
-        let p_max = inner.max_pressure_pa.max(outer.max_pressure_pa);
-        if p_max > STATIC_LIMIT_PA {
-            ctx.warn(
+    });
+    let outer_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
+        if b.outer_load > m.0 {
+            (b.outer_load, b.outer_angle)
+        } else {
+            m
+        }
+    });
+    if inner_max.0 <= 0.0 {
+        return Err(CalcError::Internal(
+            "an equilibrium without a loaded ball".to_owned(),
+        ));
+    }
+    let inner = bearing.raceway_contact(Race::Inner, inner_max.1, inner_max.0, ctx)?;
+    let outer = bearing.raceway_contact(Race::Outer, outer_max.1, outer_max.0, ctx)?;
+    let p_max = inner.max_pressure_pa.max(outer.max_pressure_pa);
+    if p_max > STATIC_LIMIT_PA {
+        ctx.warn(
                 "static_capacity_exceeded",
                 format!(
                     "the most loaded ball's contact pressure {:.0} MPa exceeds the 4200 MPa of ISO 76's static load rating for ball bearings: permanent raceway deformation beyond 1e-4 D is expected, and rigid-ring Hertz theory is stretched",
                     p_max / 1e6
                 ),
             );
-        }
-        ctx.report(eq.report.clone());
-        let z = bearing.ball_count;
-        let arm = tilt_arm(bearing);
-        let free = eq.centrifugal_n.is_some();
-        let tilting_moment = eq
+    }
+    ctx.report(eq.report.clone());
+    let z = bearing.ball_count;
+    let arm = tilt_arm(bearing);
+    let free = eq.centrifugal_n.is_some();
+    let tilting_moment = eq
+        .balls
+        .iter()
+        .enumerate()
+        .map(|(j, b)| {
+            b.inner_load
+                * b.inner_angle.sin()
+                * arm
+                * (std::f64::consts::TAU * j as f64 / z as f64).cos()
+        })
+        .sum();
+    Ok(LoadDistributionOutput {
+        max_ball_load_n: inner_max.0,
+        load_zone_factor: eq.load_zone_factor,
+        load_zone_half_angle_deg: eq.half_angle.to_degrees(),
+        loaded_ball_count: eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32,
+        ball_loads: eq
             .balls
             .iter()
             .enumerate()
-            .map(|(j, b)| {
-                b.inner_load
-                    * b.inner_angle.sin()
-                    * arm
-                    * (std::f64::consts::TAU * j as f64 / z as f64).cos()
+            .map(|(j, b)| BallLoad {
+                azimuth_deg: 360.0 * j as f64 / z as f64,
+                load_n: b.inner_load,
+                contact_angle_deg: b.inner_angle.to_degrees(),
+                outer_load_n: free.then_some(b.outer_load),
+                outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
+                gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
             })
-            .sum();
-        Ok(LoadDistributionOutput {
-            max_ball_load_n: inner_max.0,
-            load_zone_factor: eq.load_zone_factor,
-            load_zone_half_angle_deg: eq.half_angle.to_degrees(),
-            loaded_ball_count: eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32,
-            ball_loads: eq
-                .balls
+            .collect(),
+        radial_displacement_m: eq.displacement[0],
+        axial_displacement_m: eq.displacement[1],
+        free_contact_angle_deg: alpha_f.to_degrees(),
+        end_play_m: bearing.end_play_m(),
+        contact_stiffness_n_m1_5: Some(k_n),
+        roller_contact_stiffness_n_m10_9: None,
+        static_safety_factor: (STATIC_LIMIT_PA / p_max).powi(3),
+        tilt_rad: eq.displacement[2],
+        tilting_moment_n_m: tilting_moment,
+        centrifugal_force_n: eq.centrifugal_n,
+        max_outer_ball_load_n: free.then_some(outer_max.0),
+        max_gyroscopic_friction_n: eq.gyroscopic.then(|| {
+            eq.balls
                 .iter()
-                .enumerate()
-                .map(|(j, b)| BallLoad {
-                    azimuth_deg: 360.0 * j as f64 / z as f64,
-                    load_n: b.inner_load,
-                    contact_angle_deg: b.inner_angle.to_degrees(),
-                    outer_load_n: free.then_some(b.outer_load),
-                    outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
-                    gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
-                })
-                .collect(),
-            radial_displacement_m: eq.displacement[0],
-            axial_displacement_m: eq.displacement[1],
-            free_contact_angle_deg: alpha_f.to_degrees(),
-            end_play_m: bearing.end_play_m(),
-            contact_stiffness_n_m1_5: Some(k_n),
-            roller_contact_stiffness_n_m10_9: None,
-            static_safety_factor: (STATIC_LIMIT_PA / p_max).powi(3),
-            tilt_rad: eq.displacement[2],
-            tilting_moment_n_m: tilting_moment,
-            centrifugal_force_n: eq.centrifugal_n,
-            max_outer_ball_load_n: free.then_some(outer_max.0),
-            max_gyroscopic_friction_n: eq.gyroscopic.then(|| {
-                eq.balls
-                    .iter()
-                    .map(|b| b.friction_n.abs())
-                    .fold(0.0, f64::max)
-            }),
-            inner_contact: RacewayContact::from_hertz(&inner)?,
-            outer_contact: RacewayContact::from_hertz(&outer)?,
-        })
-    }
+                .map(|b| b.friction_n.abs())
+                .fold(0.0, f64::max)
+        }),
+        inner_contact: RacewayContact::from_hertz(&inner)?,
+        outer_contact: RacewayContact::from_hertz(&outer)?,
+    })
 }
 
 /// A cylindrical roller bearing's load distribution (see [`super::roller`]).
