@@ -25,7 +25,7 @@ use crate::calc::contact::ehl_film::{
 };
 use crate::calc::contact::hertz::{BodySpec, LineSpec, Radius};
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::quantity::{Celsius, NonNegative, Positive, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
 use crate::fidelity::{FidelityRequest, Level};
@@ -207,8 +207,7 @@ pub struct AnalysisCase {
     lubricant: LubricantSpec,
     temperature: Celsius,
     temperature_c: f64,
-    inner_rpm: f64,
-    outer_rpm: f64,
+    speed: RingSpeed,
     roughness: Option<RaceRoughness>,
     kinematic_viscosity_mm2_s: f64,
     bore_m: Option<f64>,
@@ -349,8 +348,7 @@ impl Validate for AnalysisInput {
                 lubricant: self.lubricant,
                 temperature: self.temperature_c,
                 temperature_c: t,
-                inner_rpm: self.inner_ring_speed_rpm,
-                outer_rpm,
+                speed: RingSpeed::new(self.inner_ring_speed_rpm, outer_rpm),
                 roughness: self.roughness,
                 kinematic_viscosity_mm2_s: nu,
                 bore_m: self.bore_diameter_m.map(Positive::get),
@@ -514,7 +512,7 @@ pub struct AnalysisOutput {
 /// The chain's limit checks, as warnings (Khonsari & Booser §14.10–14.13, Tables 13.1,
 /// 14.5–14.8, RB-6); returns (d·n, d_m·n).
 fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Context) -> (f64, f64) {
-    let n = (case.inner_rpm - case.outer_rpm).abs();
+    let n = case.speed.relative_rpm().abs();
     let pitch_dn = pitch_m * 1e3 * n;
     let dn = case.bore_m.map_or(pitch_dn, |d| d * 1e3 * n);
     let what = if case.bore_m.is_some() {
@@ -678,8 +676,7 @@ impl Calculation for Analysis {
                     case.bearing.pitch_diameter_m(),
                     case.bearing.element_count(),
                     Some(angle),
-                    case.inner_rpm,
-                    case.outer_rpm,
+                    case.speed,
                 )
             })
             .map_err(|errors| refused(super::kinematics::Kinematics::PATH, &errors))?;

@@ -24,7 +24,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use crate::calc::quantity::Positive;
+use crate::calc::quantity::{Positive, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
 
@@ -37,22 +37,23 @@ const MAX_SPEED_RPM: f64 = 1e7;
 /// Largest number of rolling elements accepted.
 const MAX_BALL_COUNT: u32 = 10_000;
 
-/// A ring speed in rpm: finite, signed (positive in the sense the request chooses), |n| ≤ 1e7.
+/// One ring's speed in rpm as the request gives it: finite, signed (positive in the sense the
+/// request chooses), |n| ≤ 1e7.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(try_from = "f64")]
-pub struct RingSpeed(f64);
+pub struct RingRpm(f64);
 
-impl RingSpeed {
+impl RingRpm {
     pub fn get(self) -> f64 {
         self.0
     }
 }
 
-impl TryFrom<f64> for RingSpeed {
+impl TryFrom<f64> for RingRpm {
     type Error = String;
     fn try_from(v: f64) -> Result<Self, String> {
         if v.is_finite() && v.abs() <= MAX_SPEED_RPM {
-            Ok(RingSpeed(v))
+            Ok(RingRpm(v))
         } else {
             Err(format!(
                 "must be a finite speed in rpm with |n| ≤ {MAX_SPEED_RPM:e}, got {v}"
@@ -100,11 +101,11 @@ pub struct KinematicsInput {
     /// Inner ring speed n_i, rpm, signed (|n| ≤ 1e7); default 0. Rings turning the opposite
     /// way have opposite signs.
     #[schema(value_type = Option<f64>, minimum = -1e7, maximum = 1e7, example = 1800.0)]
-    pub inner_ring_speed_rpm: Option<RingSpeed>,
+    pub inner_ring_speed_rpm: Option<RingRpm>,
     /// Outer ring speed n_o, rpm, signed in the same sense as the inner ring's (|n| ≤ 1e7);
     /// default 0.
     #[schema(value_type = Option<f64>, minimum = -1e7, maximum = 1e7, example = 0.0)]
-    pub outer_ring_speed_rpm: Option<RingSpeed>,
+    pub outer_ring_speed_rpm: Option<RingRpm>,
 }
 
 /// The validated case.
@@ -114,8 +115,7 @@ pub struct KinematicsCase {
     pitch_diameter_m: f64,
     ball_count: u32,
     contact_angle_rad: f64,
-    inner_rpm: f64,
-    outer_rpm: f64,
+    speed: RingSpeed,
 }
 
 impl Validate for KinematicsInput {
@@ -126,8 +126,10 @@ impl Validate for KinematicsInput {
             self.pitch_diameter_m,
             self.ball_count,
             self.contact_angle_deg,
-            self.inner_ring_speed_rpm.map_or(0.0, RingSpeed::get),
-            self.outer_ring_speed_rpm.map_or(0.0, RingSpeed::get),
+            RingSpeed::new(
+                self.inner_ring_speed_rpm.map_or(0.0, RingRpm::get),
+                self.outer_ring_speed_rpm.map_or(0.0, RingRpm::get),
+            ),
         )
     }
 }
@@ -139,8 +141,7 @@ impl KinematicsCase {
         pitch_diameter_m: Positive,
         ball_count: u32,
         contact_angle_deg: Option<ContactAngle>,
-        inner_rpm: f64,
-        outer_rpm: f64,
+        speed: RingSpeed,
     ) -> Result<KinematicsCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let d = ball_diameter_m.get();
@@ -181,8 +182,7 @@ impl KinematicsCase {
             pitch_diameter_m: dm,
             ball_count,
             contact_angle_rad: contact_angle_deg.map_or(0.0, |a| a.0.to_radians()),
-            inner_rpm,
-            outer_rpm,
+            speed,
         })
     }
 }
@@ -281,12 +281,12 @@ impl Calculation for Kinematics {
 /// The speeds of a validated case, with a warning when the rings do not turn relative to each
 /// other (the room's answer; the analysis calls it too).
 pub(super) fn solve(case: &KinematicsCase, ctx: &mut Context) -> KinematicsOutput {
-    if case.inner_rpm == case.outer_rpm {
+    if case.speed.inner_rpm == case.speed.outer_rpm {
         ctx.warn(
                 "no_relative_rotation",
                 format!(
                     "both rings turn at {} rpm: the bearing turns as a rigid body, with no rolling, spin or defect frequencies (only the cage frequency)",
-                    case.inner_rpm
+                    case.speed.inner_rpm
                 ),
             );
     }
@@ -299,7 +299,7 @@ fn kinematics(case: &KinematicsCase) -> KinematicsOutput {
     let dm = case.pitch_diameter_m;
     let cos_a = case.contact_angle_rad.cos();
     let gamma = d * cos_a / dm;
-    let (ni, no) = (case.inner_rpm, case.outer_rpm);
+    let (ni, no) = (case.speed.inner_rpm, case.speed.outer_rpm);
     let z = f64::from(case.ball_count);
     let cage = 0.5 * (ni * (1.0 - gamma) + no * (1.0 + gamma));
     let inner_rel = 0.5 * (ni - no) * (1.0 + gamma);
@@ -602,8 +602,7 @@ mod tests {
             pitch_diameter_m: d / ratio,
             ball_count: z,
             contact_angle_rad: alpha.to_radians(),
-            inner_rpm: ni,
-            outer_rpm: no,
+            speed: RingSpeed::new(ni, no),
         }
     }
 

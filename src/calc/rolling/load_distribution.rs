@@ -39,7 +39,7 @@ use super::geometry::{BallBearing, BallBearingSpec, Race};
 use super::ring_equilibrium::load_balance_root;
 use super::roller::{self, RollerBearing, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::HertzOutput;
-use crate::calc::quantity::NonNegative;
+use crate::calc::quantity::{NonNegative, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{Level, SolverReport};
@@ -154,9 +154,7 @@ pub struct LoadDistributionCase {
     axial_load_n: f64,
     mode: ContactAngleMode,
     moment_n_m: Option<f64>,
-    /// Ring speeds, rpm.
-    inner_rpm: f64,
-    outer_rpm: f64,
+    speed: RingSpeed,
     effects: LoadDistributionEffects,
 }
 
@@ -374,8 +372,7 @@ impl Loading {
                     axial_load_n: f_a,
                     mode: self.contact_angle_mode,
                     moment_n_m: self.moment_n_m,
-                    inner_rpm,
-                    outer_rpm,
+                    speed: RingSpeed::new(inner_rpm, outer_rpm),
                     effects,
                 }))
             }
@@ -809,7 +806,7 @@ fn speed_model(
     ctx: &mut Context,
 ) -> Result<Option<SpeedModel>, CalcError> {
     let (c_mode, g_mode) = (case.effects.centrifugal, case.effects.gyroscopic);
-    if case.inner_rpm == 0.0 && case.outer_rpm == 0.0 {
+    if case.speed.at_rest() {
         for (name, mode) in [("centrifugal", c_mode), ("gyroscopic", g_mode)] {
             ctx.decide(
                 name,
@@ -841,13 +838,13 @@ fn speed_model(
         }
     };
     let rad = std::f64::consts::TAU / 60.0;
-    let (w_i, w_o) = (case.inner_rpm * rad, case.outer_rpm * rad);
+    let (w_i, w_o) = (case.speed.inner_rpm * rad, case.speed.outer_rpm * rad);
     let gc = d * alpha_f.cos() / dm;
     let cage = 0.5 * (w_i * (1.0 - gc) + w_o * (1.0 + gc));
     let mass = density * std::f64::consts::PI * d.powi(3) / 6.0;
     let f_c = 0.5 * mass * dm * cage * cage;
     let mean_ball_load = load_scale(case, k_n) / b.ball_count as f64;
-    let dn = dm * 1e3 * (case.inner_rpm - case.outer_rpm).abs();
+    let dn = dm * 1e3 * case.speed.relative_rpm().abs();
     let what = format!(
         "centrifugal ball force F_c = ½ m d_m ω_m² = {f_c:.4e} N at the cage speed {:.0} rpm (d_m·n = {dn:.3e} mm·rpm; Khonsari & Booser RI-9: significant from about 5000–20 000 rpm, size dependent), against the mean ball load {mean_ball_load:.4e} N",
         cage / rad
