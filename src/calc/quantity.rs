@@ -32,6 +32,8 @@ impl TryFrom<f64> for Positive {
 pub struct NonNegative(f64);
 
 impl NonNegative {
+    pub const ZERO: NonNegative = NonNegative(0.0);
+
     pub fn get(self) -> f64 {
         self.0
     }
@@ -79,6 +81,35 @@ impl TryFrom<f64> for Celsius {
                 Self::MAX
             ))
         }
+    }
+}
+
+/// The speeds of a rolling bearing's two rings, rev/min, signed in one sense (rings turning
+/// opposite ways have opposite signs). The rooms that take them check their own ranges.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct RingSpeed {
+    /// Inner-ring speed n_i, rpm.
+    pub inner_rpm: f64,
+    /// Outer-ring speed n_o, rpm.
+    pub outer_rpm: f64,
+}
+
+impl RingSpeed {
+    pub fn new(inner_rpm: f64, outer_rpm: f64) -> Self {
+        RingSpeed {
+            inner_rpm,
+            outer_rpm,
+        }
+    }
+
+    /// n_i − n_o, rpm: the speed of the inner ring relative to the outer.
+    pub fn relative_rpm(self) -> f64 {
+        self.inner_rpm - self.outer_rpm
+    }
+
+    /// Both rings at rest.
+    pub fn at_rest(self) -> bool {
+        self.inner_rpm == 0.0 && self.outer_rpm == 0.0
     }
 }
 

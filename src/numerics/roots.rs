@@ -1,5 +1,6 @@
 //! Bracketed root finding. Brent's method (inverse quadratic interpolation with bisection as a
 //! safeguard): it never leaves the bracket, so it converges whenever f changes sign on [a, b].
+//! Where only one end of the bracket is known, [`grow_bracket`] finds the other by doubling.
 
 use super::driver::{Budget, Driver, Verdict};
 use crate::fidelity::{IterationUnit, SolverReport};
@@ -22,6 +23,18 @@ pub enum RootError {
     /// The cap was reached; the last bracket width is the residual.
     NotConverged { iterations: u32, width: f64 },
 }
+
+/// [`grow_bracket`] found no end: f stayed ≤ 0 while the upper end was doubled
+/// [`MAX_DOUBLINGS`] times (or until it overflowed).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NoBracket {
+    pub hi: f64,
+    pub doublings: u32,
+}
+
+/// Doublings [`grow_bracket`] allows: 2²⁰⁰ times the first guess spans any scale a problem in
+/// f64 has, so a function still ≤ 0 there has no root to find.
+pub const MAX_DOUBLINGS: u32 = 200;
 
 /// A root and the work it took: the driver's report (method `brent`; rename it with
 /// [`SolverReport::named`] where the search is the room's headline solve).
@@ -141,6 +154,22 @@ pub fn brent(
     }
 }
 
+/// The upper end of a bracket [0, hi] of an f that is ≤ 0 at 0 and turns positive somewhere
+/// beyond: `hi` is doubled (at most [`MAX_DOUBLINGS`] times) until f(hi) > 0. Used before
+/// [`brent`] on monotone balances whose scale is known only roughly (a load balance against a
+/// displacement: a first guess from the characteristic deflection, then doubled).
+pub fn grow_bracket(mut f: impl FnMut(f64) -> f64, mut hi: f64) -> Result<f64, NoBracket> {
+    let mut doublings = 0;
+    while f(hi) <= 0.0 {
+        hi *= 2.0;
+        doublings += 1;
+        if doublings > MAX_DOUBLINGS || !hi.is_finite() {
+            return Err(NoBracket { hi, doublings });
+        }
+    }
+    Ok(hi)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -174,6 +203,24 @@ mod tests {
             r,
             Err(RootError::NotConverged { iterations: 3, .. })
         ));
+    }
+
+    #[test]
+    fn grows_a_bracket_then_brent_finds_the_root() {
+        let f = |x: f64| x - 1e6;
+        let hi = grow_bracket(f, 1e-3).unwrap();
+        assert!(hi > 1e6 && hi <= 2e6 + 1.0, "{hi}");
+        let r = brent(f, 0.0, hi, STOP).unwrap();
+        assert!((r.x - 1e6).abs() < 1e-6);
+        // Already positive at the first guess: the guess is the bracket.
+        assert_eq!(grow_bracket(f, 4e6).unwrap(), 4e6);
+    }
+
+    #[test]
+    fn refuses_to_grow_without_end() {
+        let r = grow_bracket(|_| -1.0, 1.0);
+        assert!(matches!(r, Err(NoBracket { doublings: 201, .. })));
+        assert!(grow_bracket(|_| 0.0, 1e300).is_err());
     }
 
     proptest! {

@@ -4,20 +4,31 @@
 //! life — each step by the room that also answers it alone, so the numbers are theirs.
 
 use serde::{Deserialize, Serialize};
-use serde_json::{json, Value};
+use serde_json::Value;
 use utoipa::ToSchema;
 
-use super::geometry::BallBearingSpec;
-use super::kinematics::{Kinematics, KinematicsOutput};
-use super::life::{Life, LifeOutput};
-use super::load_distribution::{LoadDistribution, LoadDistributionOutput};
-use super::static_capacity::{StaticCapacity, StaticCapacityOutput};
-use crate::calc::contact::ehl_film::{EhlFilm, EhlFilmOutput};
+use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::kinematics::{self, ContactAngle, KinematicsCase, KinematicsOutput};
+use super::life::{
+    self, BearingKind, ContaminationFactor, LifeCase, LifeInput, LifeOutput, Reliability,
+};
+use super::load_distribution::{
+    self, parse_at, ContactAngleMode, LoadDistributionEffects, LoadDistributionOutput,
+    LoadDistributionRequest, Loading,
+};
+use super::roller::RollerBearingSpec;
+use super::static_capacity::{
+    self, StaticCapacity, StaticCapacityCase, StaticCapacityOutput, StaticLoading,
+};
+use crate::calc::contact::ehl_film::{
+    EhlEffects, EhlFilm, EhlFilmInput, EhlFilmOutput, RoughnessSpec,
+};
+use crate::calc::contact::hertz::{BodySpec, LineSpec, Radius};
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, NonNegative, Positive};
-use crate::calc::{validate_value, CalcError, Calculation, Context, FieldError, Validate};
+use crate::calc::quantity::{Celsius, NonNegative, Positive, RingSpeed};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
-use crate::fidelity::Level;
+use crate::fidelity::{FidelityRequest, Level};
 
 pub struct Analysis;
 
@@ -56,8 +67,7 @@ pub struct AnalysisInput {
     #[schema(minimum = -1e6, maximum = 1e6, example = 0.0)]
     pub outer_ring_speed_rpm: Option<f64>,
     /// The lubricant, with a pressure–viscosity law (for the EHL films).
-    #[schema(value_type = LubricantSpec)]
-    pub lubricant: Value,
+    pub lubricant: LubricantSpec,
     /// Operating temperature of the oil in the contacts, °C.
     #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 70.0)]
     pub temperature_c: Celsius,
@@ -144,18 +154,60 @@ const HEAVY_LOAD_RATIO_ROLLER: f64 = 0.18;
 const MINIMUM_LOAD_RATIO_ROLLER: f64 = 0.02;
 const MISALIGNMENT_ROLLER_RAD: f64 = 3.0 / 60.0 * std::f64::consts::PI / 180.0;
 
-/// The validated chain: the requests of the steps that need no earlier result, and what the
+/// The bearing of the chain, as the request gave it (its wire spec, parsed once): the steps read
+/// their dimensions and materials from it.
+#[derive(Debug, Clone, Copy)]
+enum ChainBearing {
+    Ball(BallBearingSpec),
+    Roller(RollerBearingSpec),
+}
+
+impl ChainBearing {
+    /// Rolling-element diameter D, m.
+    fn element_diameter_m(&self) -> Positive {
+        match self {
+            ChainBearing::Ball(b) => b.ball_diameter_m,
+            ChainBearing::Roller(r) => r.roller_diameter_m,
+        }
+    }
+
+    fn pitch_diameter_m(&self) -> Positive {
+        match self {
+            ChainBearing::Ball(b) => b.pitch_diameter_m,
+            ChainBearing::Roller(r) => r.pitch_diameter_m,
+        }
+    }
+
+    fn element_count(&self) -> u32 {
+        match self {
+            ChainBearing::Ball(b) => b.ball_count,
+            ChainBearing::Roller(r) => r.roller_count,
+        }
+    }
+
+    /// The rolling elements' material and the rings'.
+    fn materials(&self) -> (MaterialSpec, MaterialSpec) {
+        match self {
+            ChainBearing::Ball(b) => (b.ball, b.rings),
+            ChainBearing::Roller(r) => (r.rollers, r.rings),
+        }
+    }
+}
+
+/// The validated chain: the typed cases of the steps that need no earlier result, and what the
 /// later steps are built from.
 #[derive(Debug, Clone)]
 pub struct AnalysisCase {
-    load_distribution: <<LoadDistribution as Calculation>::Input as Validate>::Valid,
-    static_request: Value,
-    life_request: Value,
-    bearing: Value,
-    lubricant: Value,
+    load_distribution: LoadDistributionRequest,
+    /// The static-capacity step's case, or why it refused (a warning, not a 422: ISO 76 rates
+    /// not every contact angle).
+    static_capacity: Result<StaticCapacityCase, Vec<FieldError>>,
+    life: LifeCase,
+    bearing: ChainBearing,
+    lubricant: LubricantSpec,
+    temperature: Celsius,
     temperature_c: f64,
-    inner_rpm: f64,
-    outer_rpm: f64,
+    speed: RingSpeed,
     roughness: Option<RaceRoughness>,
     kinematic_viscosity_mm2_s: f64,
     bore_m: Option<f64>,
@@ -164,18 +216,14 @@ pub struct AnalysisCase {
     angular_contact: bool,
     /// A cylindrical roller bearing: line contacts, roller life exponent, roller limits.
     roller: bool,
-    meniscus_m: Option<f64>,
+    meniscus: Option<Positive>,
     film_effects: AnalysisFilmEffects,
 }
 
 impl Validate for AnalysisInput {
     type Valid = AnalysisCase;
-    fn validate(self) -> Result<AnalysisCase, Vec<FieldError>> {
+    fn validate(mut self) -> Result<AnalysisCase, Vec<FieldError>> {
         let mut errors = Vec::new();
-        let (f_r, f_a) = (
-            self.radial_load_n.get(),
-            self.axial_load_n.map_or(0.0, NonNegative::get),
-        );
         let outer_rpm = self.outer_ring_speed_rpm.unwrap_or(0.0);
         for (v, p) in [
             (self.inner_ring_speed_rpm, "/inner_ring_speed_rpm"),
@@ -194,7 +242,14 @@ impl Validate for AnalysisInput {
                 "the rings must turn relative to each other",
             ));
         }
-        let pitch_m = self.bearing.get("pitch_diameter_m").and_then(Value::as_f64);
+        let roller = self.bearing.get("roller_diameter_m").is_some();
+        let bearing = std::mem::take(&mut self.bearing);
+        let spec = if roller {
+            parse_at::<RollerBearingSpec>(bearing, "/bearing").map(ChainBearing::Roller)
+        } else {
+            parse_at::<BallBearingSpec>(bearing, "/bearing").map(ChainBearing::Ball)
+        };
+        let pitch_m = spec.as_ref().ok().map(|b| b.pitch_diameter_m().get());
         if let (Some(bore), Some(pitch)) = (self.bore_diameter_m, pitch_m) {
             if bore.get() >= pitch {
                 errors.push(FieldError::new(
@@ -214,25 +269,47 @@ impl Validate for AnalysisInput {
                 ));
             }
         }
-        let bearing_angle = self
-            .bearing
-            .get("free_contact_angle_deg")
-            .and_then(Value::as_f64)
-            .unwrap_or(0.0);
-        let roller = self.bearing.get("roller_diameter_m").is_some();
-        let load_distribution = validate_value::<LoadDistribution>(json!({
-            "bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a,
-            "inner_ring_speed_rpm": self.inner_ring_speed_rpm, "outer_ring_speed_rpm": outer_rpm,
-        }));
-        let lubricant =
-            serde_path_to_error::deserialize::<_, LubricantSpec>(self.lubricant.clone())
-                .map_err(|e| {
-                    vec![FieldError::new(
-                        format!("/lubricant{}", json_pointer(e.path())),
-                        e.inner().to_string(),
-                    )]
-                })
-                .and_then(|spec| spec.parse("/lubricant"));
+        let bearing_angle = match &spec {
+            Ok(ChainBearing::Ball(b)) => b.free_contact_angle_deg.unwrap_or(0.0),
+            _ => 0.0,
+        };
+        let axial_load_n = self.axial_load_n.unwrap_or(NonNegative::ZERO);
+        let loading = Loading {
+            radial_load_n: self.radial_load_n,
+            axial_load_n,
+            contact_angle_mode: ContactAngleMode::Varying,
+            moment_n_m: None,
+            inner_ring_speed_rpm: Some(self.inner_ring_speed_rpm),
+            outer_ring_speed_rpm: Some(outer_rpm),
+            effects: LoadDistributionEffects::default(),
+        };
+        let static_loading = StaticLoading {
+            radial_load_n: self.radial_load_n,
+            axial_load_n: Some(axial_load_n),
+            x0_factor: None,
+            y0_factor: None,
+            static_load_rating_n: None,
+            rotating: None,
+            operation: Default::default(),
+            quiet_running: Default::default(),
+        };
+        // The load distribution's and the static capacity's cases, from the bearing validated
+        // once; their pointers are this request's (the fields share their names).
+        let (load_distribution, static_capacity) = match &spec {
+            Ok(ChainBearing::Ball(b)) => {
+                let valid = b.validate_at("/bearing");
+                (
+                    loading.ball(valid.clone()),
+                    static_loading.ball(bearing_angle, valid),
+                )
+            }
+            Ok(ChainBearing::Roller(r)) => {
+                let valid = r.validate_at("/bearing");
+                (loading.roller(valid.clone()), static_loading.roller(valid))
+            }
+            Err(e) => (Err(e.clone()), Err(e.clone())),
+        };
+        let lubricant = self.lubricant.clone().parse("/lubricant");
         let t = self.temperature_c.get();
         let nu = lubricant
             .as_ref()
@@ -246,71 +323,32 @@ impl Validate for AnalysisInput {
                 ));
             }
         }
-        let bearing_pitch = self
-            .bearing
-            .get("pitch_diameter_m")
-            .cloned()
-            .unwrap_or(Value::Null);
-        let mut life = json!({
-            "bearing_kind": if roller { "roller" } else { "ball" },
-            "dynamic_load_rating_n": self.dynamic_load_rating_n.get(),
-            "speed_rpm": (self.inner_ring_speed_rpm - outer_rpm).abs().max(f64::MIN_POSITIVE),
-            "pitch_diameter_m": bearing_pitch,
-        });
-        match (self.equivalent_load_n, self.x_factor, self.y_factor) {
-            (Some(p), None, None) => life["equivalent_load_n"] = json!(p.get()),
-            (None, Some(x), Some(y)) => {
-                life["radial_load_n"] = json!(f_r);
-                life["axial_load_n"] = json!(f_a);
-                life["x_factor"] = json!(x.get());
-                life["y_factor"] = json!(y.get());
-            }
-            (None, None, None) if f_a == 0.0 => life["equivalent_load_n"] = json!(f_r.max(f64::MIN_POSITIVE)),
-            _ => errors.push(FieldError::new(
-                "/equivalent_load_n",
-                "give equivalent_load_n, or x_factor with y_factor; P defaults to F_r only without axial load",
-            )),
-        }
-        if let Some(r) = self.reliability_percent {
-            life["reliability_percent"] = json!(r);
-        }
-        match (self.contamination_factor, self.fatigue_load_limit_n) {
-            (Some(e), Some(cu)) => {
-                life["contamination_factor"] = json!(e);
-                life["fatigue_load_limit_n"] = json!(cu.get());
-                life["operating_viscosity_mm2_s"] = json!(nu);
-            }
-            (None, None) => {}
-            _ => errors.push(FieldError::new(
-                "/contamination_factor",
-                "give contamination_factor with fatigue_load_limit_n",
-            )),
-        }
-        let life_check = if errors.is_empty() && nu.is_finite() {
-            validate_value::<Life>(life.clone()).map(|_| ())
+        let life = self.life_input(roller, outer_rpm, pitch_m, nu, &mut errors);
+        let life = if errors.is_empty() && nu.is_finite() {
+            life.map(|input| input.validate().map_err(life_pointers))
         } else {
-            Ok(())
+            None
         };
         for r in [
             load_distribution.as_ref().err(),
             lubricant.as_ref().err(),
-            life_check.as_ref().err(),
+            life.as_ref().and_then(|l| l.as_ref().err()),
         ]
         .into_iter()
         .flatten()
         {
             errors.extend(r.iter().cloned());
         }
-        match (errors.is_empty(), load_distribution) {
-            (true, Ok(load_distribution)) => Ok(AnalysisCase {
+        match (errors.is_empty(), load_distribution, spec, life) {
+            (true, Ok(load_distribution), Ok(bearing), Some(Ok(life))) => Ok(AnalysisCase {
                 load_distribution,
-                static_request: json!({"bearing": self.bearing, "radial_load_n": f_r, "axial_load_n": f_a}),
-                life_request: life,
-                bearing: self.bearing,
+                static_capacity,
+                life,
+                bearing,
                 lubricant: self.lubricant,
+                temperature: self.temperature_c,
                 temperature_c: t,
-                inner_rpm: self.inner_ring_speed_rpm,
-                outer_rpm,
+                speed: RingSpeed::new(self.inner_ring_speed_rpm, outer_rpm),
                 roughness: self.roughness,
                 kinematic_viscosity_mm2_s: nu,
                 bore_m: self.bore_diameter_m.map(Positive::get),
@@ -318,16 +356,124 @@ impl Validate for AnalysisInput {
                 misalignment_rad: self.misalignment_rad.map(NonNegative::get),
                 angular_contact: bearing_angle > 0.0,
                 roller,
-                meniscus_m: self.inlet_meniscus_distance_m.map(Positive::get),
+                meniscus: self.inlet_meniscus_distance_m,
                 film_effects: self.film_effects,
             }),
+            (true, ..) => Err(vec![FieldError::new(
+                "/temperature_c",
+                format!("the lubricant's kinematic viscosity at {t} °C is not a finite number"),
+            )]),
             _ => Err(errors),
         }
     }
 }
 
-fn json_pointer(path: &serde_path_to_error::Path) -> String {
-    path.iter().map(|s| format!("/{s}")).collect()
+impl AnalysisInput {
+    /// The life step's request from this one's fields (None, with the errors pushed, where
+    /// they do not make one).
+    fn life_input(
+        &self,
+        roller: bool,
+        outer_rpm: f64,
+        pitch_m: Option<f64>,
+        nu: f64,
+        errors: &mut Vec<FieldError>,
+    ) -> Option<LifeInput> {
+        let before = errors.len();
+        let speed = (self.inner_ring_speed_rpm - outer_rpm)
+            .abs()
+            .max(f64::MIN_POSITIVE);
+        let mut life = LifeInput {
+            bearing_kind: if roller {
+                BearingKind::Roller
+            } else {
+                BearingKind::Ball
+            },
+            dynamic_load_rating_n: self.dynamic_load_rating_n,
+            equivalent_load_n: None,
+            radial_load_n: None,
+            axial_load_n: None,
+            x_factor: None,
+            y_factor: None,
+            duty_cycle: None,
+            speed_rpm: Positive::try_from(speed).ok(),
+            reliability_percent: None,
+            reliability_factor: None,
+            weibull_slope: None,
+            operating_viscosity_mm2_s: None,
+            pitch_diameter_m: pitch_m.and_then(|d| Positive::try_from(d).ok()),
+            kappa: None,
+            contamination_factor: None,
+            fatigue_load_limit_n: None,
+        };
+        let f_a = self.axial_load_n.map_or(0.0, NonNegative::get);
+        match (self.equivalent_load_n, self.x_factor, self.y_factor) {
+            (Some(p), None, None) => life.equivalent_load_n = Some(p),
+            (None, Some(x), Some(y)) => {
+                life.radial_load_n = Some(self.radial_load_n);
+                life.axial_load_n = self.axial_load_n.or(Some(NonNegative::ZERO));
+                life.x_factor = Some(x);
+                life.y_factor = Some(y);
+            }
+            (None, None, None) if f_a == 0.0 => {
+                life.equivalent_load_n =
+                    Positive::try_from(self.radial_load_n.get().max(f64::MIN_POSITIVE)).ok()
+            }
+            _ => errors.push(FieldError::new(
+                "/equivalent_load_n",
+                "give equivalent_load_n, or x_factor with y_factor; P defaults to F_r only without axial load",
+            )),
+        }
+        if let Some(r) = self.reliability_percent {
+            match Reliability::try_from(r) {
+                Ok(r) => life.reliability_percent = Some(r),
+                Err(m) => errors.push(FieldError::new("/reliability_percent", m)),
+            }
+        }
+        match (self.contamination_factor, self.fatigue_load_limit_n) {
+            (Some(e), Some(cu)) => {
+                match ContaminationFactor::try_from(e) {
+                    Ok(e) => life.contamination_factor = Some(e),
+                    Err(m) => errors.push(FieldError::new("/contamination_factor", m)),
+                }
+                life.fatigue_load_limit_n = Some(cu);
+                life.operating_viscosity_mm2_s = Positive::try_from(nu).ok();
+            }
+            (None, None) => {}
+            _ => errors.push(FieldError::new(
+                "/contamination_factor",
+                "give contamination_factor with fatigue_load_limit_n",
+            )),
+        }
+        (errors.len() == before).then_some(life)
+    }
+}
+
+/// The life step's pointers, moved onto the fields of this request they come from.
+fn life_pointers(errors: Vec<FieldError>) -> Vec<FieldError> {
+    errors
+        .into_iter()
+        .map(|e| {
+            let pointer = match e.pointer.as_str() {
+                "/speed_rpm" => "/inner_ring_speed_rpm".to_owned(),
+                "/pitch_diameter_m" => "/bearing/pitch_diameter_m".to_owned(),
+                "/operating_viscosity_mm2_s" | "/kappa" => "/lubricant".to_owned(),
+                other => other.to_owned(),
+            };
+            FieldError::new(pointer, e.message)
+        })
+        .collect()
+}
+
+/// A step that refused the input the chain built for it (a 422 of the chain, naming the step).
+fn refused(path: &str, errors: &[FieldError]) -> CalcError {
+    let (pointer, message) = errors
+        .first()
+        .map_or(("", ""), |e| (e.pointer.as_str(), e.message.as_str()));
+    CalcError::impossible(
+        "",
+        format!("a step of the chain ({path}) refused its input at {pointer}: {message}"),
+    )
 }
 
 /// Result: each step's own result.
@@ -366,7 +512,7 @@ pub struct AnalysisOutput {
 /// The chain's limit checks, as warnings (Khonsari & Booser §14.10–14.13, Tables 13.1,
 /// 14.5–14.8, RB-6); returns (d·n, d_m·n).
 fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Context) -> (f64, f64) {
-    let n = (case.inner_rpm - case.outer_rpm).abs();
+    let n = case.speed.relative_rpm().abs();
     let pitch_dn = pitch_m * 1e3 * n;
     let dn = case.bore_m.map_or(pitch_dn, |d| d * 1e3 * n);
     let what = if case.bore_m.is_some() {
@@ -456,16 +602,7 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
 impl Calculation for Analysis {
     const PATH: &'static str = "/v1/rolling-bearings/analysis";
     const SUMMARY: &'static str = "Ball or cylindrical roller bearing at one operating point: load distribution, static capacity, contact stresses, films, κ, life and limits";
-    const DESCRIPTION: &'static str = "The whole chain, each step by its own room: quasi-static load distribution \
-(`/v1/rolling-bearings/load-distribution`), ISO 76 static capacity and safety factor under the operating loads \
-(`/v1/rolling-bearings/static-capacity`), kinematics at the most loaded ball's contact angle (`/v1/rolling-bearings/kinematics`), \
-Hertz and the Hamrock–Dowson EHL film at both raceways of the most loaded ball (`/v1/contacts/ehl-film`: ball radius D/2; inner race \
-R_x = (d_m − D cos α)/(2 cos α), R_y = −r_i; outer race R_x = −(d_m + D cos α)/(2 cos α), R_y = −r_o), and the life with ISO 281's \
-a_ISO from κ = ν/ν1 (`/v1/rolling-bearings/life`). The load distribution gets the ring speeds, so its centrifugal and \
-gyroscopic ball loads apply by their criteria; the outer film then sits at the largest outer load. Effects are the steps' own, \
-the films' merged over both raceways. A cylindrical roller `bearing` runs the same chain on line contacts over the effective \
-length (the EHL room's line formulas, Hamrock's k → ∞ limit among them), with the roller life exponent 10/3 and the roller \
-limits and ISO 76's roller rating.";
+    const DESCRIPTION: &'static str = include_str!("analysis.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[
         "thermal",
@@ -481,7 +618,7 @@ limits and ISO 76's roller rating.";
 
     fn run(case: AnalysisCase, ctx: &mut Context) -> Result<AnalysisOutput, CalcError> {
         let mut step = ctx.child();
-        let load_distribution = LoadDistribution::run(case.load_distribution, &mut step)?;
+        let load_distribution = load_distribution::solve(case.load_distribution, &mut step)?;
         absorb(ctx, &mut step, "load distribution");
         if let Some(report) = step.report.take() {
             ctx.report(report);
@@ -489,7 +626,11 @@ limits and ISO 76's roller rating.";
 
         let static_capacity = {
             let mut step = ctx.child();
-            match sub_in::<StaticCapacity>(case.static_request.clone(), &mut step) {
+            let rated = match &case.static_capacity {
+                Ok(static_case) => static_capacity::solve(static_case, &mut step),
+                Err(errors) => Err(refused(StaticCapacity::PATH, errors)),
+            };
+            match rated {
                 Ok(out) => {
                     absorb(ctx, &mut step, "static capacity");
                     Some(out)
@@ -505,20 +646,8 @@ limits and ISO 76's roller rating.";
             }
         };
 
-        let element_key = if case.roller {
-            "roller_diameter_m"
-        } else {
-            "ball_diameter_m"
-        };
-        let ball = case.bearing[element_key].as_f64().unwrap_or(f64::NAN);
-        let count = if case.roller {
-            case.bearing["roller_count"].clone()
-        } else {
-            case.bearing["ball_count"].clone()
-        };
-        let pitch = case.bearing["pitch_diameter_m"]
-            .as_f64()
-            .unwrap_or(f64::NAN);
+        let ball = case.bearing.element_diameter_m().get();
+        let pitch = case.bearing.pitch_diameter_m().get();
         let most_loaded = load_distribution
             .ball_loads
             .iter()
@@ -539,84 +668,132 @@ limits and ISO 76's roller rating.";
             .max_by(|a, b| a.0.total_cmp(&b.0))
             .map_or((q_max, alpha), |(q, a)| (q, a.abs().to_radians()));
 
-        let kinematics_request = json!({
-            "ball_diameter_m": ball, "pitch_diameter_m": pitch,
-            "ball_count": count, "contact_angle_deg": alpha_deg,
-            "inner_ring_speed_rpm": case.inner_rpm, "outer_ring_speed_rpm": case.outer_rpm,
-        });
-        let kinematics = sub::<Kinematics>(kinematics_request, ctx, "kinematics")?;
+        let kinematics_case = ContactAngle::try_from(alpha_deg)
+            .map_err(|m| vec![FieldError::new("/contact_angle_deg", m)])
+            .and_then(|angle| {
+                KinematicsCase::new(
+                    case.bearing.element_diameter_m(),
+                    case.bearing.pitch_diameter_m(),
+                    case.bearing.element_count(),
+                    Some(angle),
+                    case.speed,
+                )
+            })
+            .map_err(|errors| refused(super::kinematics::Kinematics::PATH, &errors))?;
+        let mut step = ctx.child();
+        let kinematics = kinematics::solve(&kinematics_case, &mut step);
+        absorb(ctx, &mut step, "kinematics");
 
-        let material = |key: &str| case.bearing[key].clone();
-        let element = material(if case.roller { "rollers" } else { "ball" });
         // A roller is a cylinder along y on straight raceways: a line contact over the effective
         // length (the texts' roller films, Hamrock A-R2); a ball meets the grooves' concave
         // radii across the rolling direction.
-        let ball_body = if case.roller {
-            json!({"radius_x_m": ball / 2.0,
-                "elastic_modulus_pa": element["elastic_modulus_pa"], "poisson_ratio": element["poisson_ratio"]})
-        } else {
-            json!({"radius_x_m": ball / 2.0, "radius_y_m": ball / 2.0,
-                "elastic_modulus_pa": element["elastic_modulus_pa"], "poisson_ratio": element["poisson_ratio"]})
+        let (element, rings) = case.bearing.materials();
+        let body = |radius_x: f64, radius_y: Option<f64>, material: MaterialSpec, at: &str| {
+            let radius = |r: f64, field: &str| {
+                Radius::try_from(r).map_err(|m| vec![FieldError::new(format!("{at}/{field}"), m)])
+            };
+            Ok::<_, Vec<FieldError>>(BodySpec {
+                radius_x_m: Some(radius(radius_x, "radius_x_m")?),
+                radius_y_m: radius_y.map(|r| radius(r, "radius_y_m")).transpose()?,
+                elastic_modulus_pa: material.elastic_modulus_pa,
+                poisson_ratio: material.poisson_ratio,
+            })
         };
-        let race = |radius_x: f64, groove: &str| {
-            let mut body = json!({"radius_x_m": radius_x,
-                "elastic_modulus_pa": material("rings")["elastic_modulus_pa"], "poisson_ratio": material("rings")["poisson_ratio"]});
-            if !case.roller {
-                body["radius_y_m"] = json!(-case.bearing[groove].as_f64().unwrap_or(f64::NAN));
-            }
-            body
+        let (inner_groove, outer_groove) = match &case.bearing {
+            ChainBearing::Ball(b) => (
+                Some(-b.inner_groove_radius_m.get()),
+                Some(-b.outer_groove_radius_m.get()),
+            ),
+            ChainBearing::Roller(_) => (None, None),
         };
-        let film = |race_body: Value, load: f64, speed: f64, race_rms: Option<f64>| {
-            let mut request = json!({
-                "body1": ball_body, "body2": race_body, "load_n": load.max(f64::MIN_POSITIVE),
-                "entrainment_speed_m_s": speed.abs().max(1e-9), "lubricant": case.lubricant, "temperature_c": case.temperature_c,
-                "effects": {"thermal": case.film_effects.thermal, "starvation": case.film_effects.starvation,
-                            "mixed_lubrication": case.film_effects.mixed_lubrication},
-            });
-            if let Some(m) = case.meniscus_m {
-                request["inlet_meniscus_distance_m"] = json!(m);
-            }
-            if case.roller {
-                request["line"] = json!({"length_m": case.bearing["roller_effective_length_m"]});
-            }
-            if let (Some(r), Some(race)) = (case.roughness, race_rms) {
-                request["roughness"] =
-                    json!({"body1_rms_m": r.ball_rms_m.get(), "body2_rms_m": race});
-            }
-            request
+        let line = match &case.bearing {
+            ChainBearing::Roller(r) => Some(LineSpec {
+                length_m: r.roller_effective_length_m,
+            }),
+            ChainBearing::Ball(_) => None,
+        };
+        // The film room's request, typed: one raceway's film at `load` and `speed`.
+        let film = |race_x: f64,
+                    race_y: Option<f64>,
+                    load: f64,
+                    speed: f64,
+                    race_rms: Option<NonNegative>,
+                    step: &mut Context|
+         -> Result<EhlFilmOutput, CalcError> {
+            let input = (|| {
+                let positive = |v: f64, at: &str| {
+                    Positive::try_from(v).map_err(|m| vec![FieldError::new(at, m)])
+                };
+                Ok::<_, Vec<FieldError>>(EhlFilmInput {
+                    body1: body(
+                        ball / 2.0,
+                        (!case.roller).then_some(ball / 2.0),
+                        element,
+                        "/body1",
+                    )?,
+                    body2: body(race_x, race_y, rings, "/body2")?,
+                    load_n: positive(load.max(f64::MIN_POSITIVE), "/load_n")?,
+                    entrainment_speed_m_s: positive(
+                        speed.abs().max(1e-9),
+                        "/entrainment_speed_m_s",
+                    )?,
+                    lubricant: case.lubricant.clone(),
+                    temperature_c: case.temperature,
+                    line,
+                    roughness: match (case.roughness, race_rms) {
+                        (Some(r), Some(race)) => Some(RoughnessSpec {
+                            body1_rms_m: Some(r.ball_rms_m),
+                            body2_rms_m: Some(race),
+                            composite_rms_m: None,
+                        }),
+                        _ => None,
+                    },
+                    slide_roll_ratio: None,
+                    inlet_meniscus_distance_m: case.meniscus,
+                    fidelity: FidelityRequest::default(),
+                    closed_form: None,
+                    effects: EhlEffects {
+                        thermal: case.film_effects.thermal,
+                        starvation: case.film_effects.starvation,
+                        mixed_lubrication: case.film_effects.mixed_lubrication,
+                    },
+                })
+            })();
+            let film_case = input
+                .and_then(|input| input.validate())
+                .map_err(|errors| refused(EhlFilm::PATH, &errors))?;
+            // TODO(lead): call the contact film model
+            EhlFilm::run(film_case, step)
         };
         let cos = alpha.cos();
-        let inner_race = race((pitch - ball * cos) / (2.0 * cos), "inner_groove_radius_m");
+        let inner_x = (pitch - ball * cos) / (2.0 * cos);
         let cos_o = alpha_outer.cos();
-        let outer_race = race(
-            -(pitch + ball * cos_o) / (2.0 * cos_o),
-            "outer_groove_radius_m",
-        );
+        let outer_x = -(pitch + ball * cos_o) / (2.0 * cos_o);
         let mut inner_ctx = ctx.child();
-        let inner_film = sub_in::<EhlFilm>(
-            film(
-                inner_race,
-                q_max,
-                kinematics.inner_contact_entrainment_speed_m_s,
-                case.roughness.map(|r| r.inner_race_rms_m.get()),
-            ),
+        let inner_film = film(
+            inner_x,
+            inner_groove,
+            q_max,
+            kinematics.inner_contact_entrainment_speed_m_s,
+            case.roughness.map(|r| r.inner_race_rms_m),
             &mut inner_ctx,
         )?;
         let mut outer_ctx = ctx.child();
-        let outer_film = sub_in::<EhlFilm>(
-            film(
-                outer_race,
-                q_outer,
-                kinematics.outer_contact_entrainment_speed_m_s,
-                case.roughness.map(|r| r.outer_race_rms_m.get()),
-            ),
+        let outer_film = film(
+            outer_x,
+            outer_groove,
+            q_outer,
+            kinematics.outer_contact_entrainment_speed_m_s,
+            case.roughness.map(|r| r.outer_race_rms_m),
             &mut outer_ctx,
         )?;
         merge_films(ctx, &inner_ctx, &outer_ctx);
         absorb(ctx, &mut inner_ctx, "inner raceway film");
         absorb(ctx, &mut outer_ctx, "outer raceway film");
 
-        let life = sub::<Life>(case.life_request.clone(), ctx, "life")?;
+        let mut step = ctx.child();
+        let life = life::life(&case.life, &mut step);
+        absorb(ctx, &mut step, "life");
         let limits = limits(&case, pitch, &life, ctx);
         let kappa = life
             .rated_viscosity_mm2_s
@@ -642,37 +819,6 @@ limits and ISO 76's roller rating.";
             pitch_dn_mm_rpm: limits.1,
         })
     }
-}
-
-/// Run one step in its own context, its warnings folded into ours.
-fn sub<C: Calculation>(
-    request: Value,
-    ctx: &mut Context,
-    step_name: &str,
-) -> Result<C::Output, CalcError> {
-    let mut step = ctx.child();
-    let out = sub_in::<C>(request, &mut step)?;
-    absorb(ctx, &mut step, step_name);
-    Ok(out)
-}
-
-fn sub_in<C: Calculation>(request: Value, step: &mut Context) -> Result<C::Output, CalcError> {
-    let case = validate_value::<C>(request).map_err(|errors| {
-        let e = errors.into_iter().next().map_or_else(
-            || ("".to_owned(), String::new()),
-            |e| (e.pointer, e.message),
-        );
-        CalcError::impossible(
-            "",
-            format!(
-                "a step of the chain ({}) refused its input at {}: {}",
-                C::PATH,
-                e.0,
-                e.1
-            ),
-        )
-    })?;
-    C::run(case, step)
 }
 
 /// Fold a step's warnings into the chain's (naming the step), and its effect decisions where the
@@ -704,268 +850,5 @@ fn merge_films(ctx: &mut Context, inner: &Context, outer: &Context) {
 }
 
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::calc::testing::{invalid_pointers, ok};
-
-    fn example() -> Value {
-        serde_json::from_str(Analysis::EXAMPLE).unwrap()
-    }
-
-    /// The chain's numbers are its steps': the same requests to the rooms alone give the same
-    /// results, and the films sit at the most loaded ball with its load and speeds.
-    #[test]
-    fn the_chain_is_its_rooms() {
-        let v = ok::<Analysis>(&example());
-        let r = &v["result"];
-        let alone = ok::<LoadDistribution>(&json!({
-            "bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0,
-            "inner_ring_speed_rpm": 2000.0, "outer_ring_speed_rpm": 0.0,
-        }));
-        assert_eq!(r["load_distribution"], alone["result"]);
-        let static_alone = ok::<StaticCapacity>(
-            &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
-        );
-        assert_eq!(r["static_capacity"], static_alone["result"]);
-        let q = r["load_distribution"]["max_ball_load_n"].as_f64().unwrap();
-        // The film's Hertz pressure at Q_max equals the load distribution's inner contact.
-        let p_film = r["inner_film"]["max_hertz_pressure_pa"].as_f64().unwrap();
-        let p_ld = r["load_distribution"]["inner_contact"]["max_pressure_pa"]
-            .as_f64()
-            .unwrap();
-        assert!(
-            (p_film / p_ld - 1.0).abs() < 1e-3,
-            "{p_film} vs {p_ld} at Q = {q}"
-        );
-        let kappa = r["kappa"].as_f64().unwrap();
-        assert!((kappa - r["life"]["kappa"].as_f64().unwrap()).abs() < 1e-9);
-        assert!(r["min_film_parameter_lambda"].as_f64().unwrap() > 0.0);
-        for effect in ["thermal", "starvation", "mixed_lubrication"] {
-            assert!(
-                v["effects"][effect]["reason"]
-                    .as_str()
-                    .unwrap()
-                    .contains("inner raceway"),
-                "{effect}"
-            );
-        }
-    }
-
-    /// At speed the chain's load distribution is the ball-by-ball one: the outer film sits at
-    /// the largest outer load, which exceeds the inner by about F_c.
-    #[test]
-    fn at_speed_the_outer_film_carries_the_centrifugal_force() {
-        let mut r = example();
-        r["inner_ring_speed_rpm"] = json!(30000.0);
-        r["radial_load_n"] = json!(2000.0);
-        let v = ok::<Analysis>(&r);
-        assert_eq!(v["effects"]["centrifugal"]["applied"], true);
-        let ld = &v["result"]["load_distribution"];
-        let q_o = ld["max_outer_ball_load_n"].as_f64().unwrap();
-        assert!(q_o > ld["max_ball_load_n"].as_f64().unwrap());
-        // The film's Hertz pressure at the outer raceway is the load distribution's.
-        let p_film = v["result"]["outer_film"]["max_hertz_pressure_pa"]
-            .as_f64()
-            .unwrap();
-        let p_ld = ld["outer_contact"]["max_pressure_pa"].as_f64().unwrap();
-        assert!((p_film / p_ld - 1.0).abs() < 1e-3, "{p_film} vs {p_ld}");
-    }
-
-    fn codes(v: &Value) -> Vec<String> {
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|w| w["code"].as_str().unwrap().to_owned())
-            .collect()
-    }
-
-    /// Khonsari & Booser Ex 14.7: a 110 mm shaft at 5000 rpm, pitch diameter 150 mm: d·n =
-    /// 550 000 above the 500 000 of circulating oil (d_m·n = 750 000, Fig. 14.13's angular-contact
-    /// or cylindrical-roller territory).
-    #[test]
-    fn khonsari_ex_14_7_speed_limit() {
-        let mut r = example();
-        r["bearing"] = json!({"ball_diameter_m": 0.022225, "pitch_diameter_m": 0.15, "ball_count": 14,
-            "inner_groove_radius_m": 0.52 * 0.022225, "outer_groove_radius_m": 0.52 * 0.022225,
-            "diametral_clearance_m": 2e-5,
-            "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3},
-            "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}});
-        r["inner_ring_speed_rpm"] = json!(5000.0);
-        r["radial_load_n"] = json!(10000.0);
-        r["dynamic_load_rating_n"] = json!(150000.0);
-        r["bore_diameter_m"] = json!(0.11);
-        r["lubrication_method"] = json!("circulating_oil");
-        let v = ok::<Analysis>(&r);
-        assert!((v["result"]["speed_dn_mm_rpm"].as_f64().unwrap() - 550000.0).abs() < 1e-6);
-        assert!((v["result"]["pitch_dn_mm_rpm"].as_f64().unwrap() - 750000.0).abs() < 1e-6);
-        assert!(codes(&v).contains(&"speed_above_dn_limit".to_owned()));
-        r["inner_ring_speed_rpm"] = json!(4000.0);
-        assert!(!codes(&ok::<Analysis>(&r)).contains(&"speed_above_dn_limit".to_owned()));
-    }
-
-    /// Temperature (Table 14.7), misalignment (Tables 14.8, 13.1) and load class (Table 14.6).
-    #[test]
-    fn limits_warn() {
-        let v = ok::<Analysis>(&example());
-        // The example: P/C = 8900/35 700 = 0.25, a heavy load.
-        assert!(codes(&v).contains(&"heavy_load_class".to_owned()));
-        assert!(!codes(&v).contains(&"misalignment_above_limit".to_owned()));
-        let mut r = example();
-        r["temperature_c"] = json!(160.0);
-        r["misalignment_rad"] = json!(0.005); // 17.2′ > 12′
-        let c = codes(&ok::<Analysis>(&r));
-        for code in [
-            "temperature_above_mineral_oil_limit",
-            "temperature_above_steel_stabilisation",
-            "misalignment_above_limit",
-        ] {
-            assert!(c.contains(&code.to_owned()), "{code}");
-        }
-        r["temperature_c"] = json!(70.0);
-        r["misalignment_rad"] = json!(0.002); // 6.9′: within 12′, beyond an angular contact's 2′
-        assert!(!codes(&ok::<Analysis>(&r)).contains(&"misalignment_above_limit".to_owned()));
-        r["bearing"]["free_contact_angle_deg"] = json!(25.0);
-        r["axial_load_n"] = json!(3000.0);
-        r["equivalent_load_n"] = json!(9000.0);
-        assert!(codes(&ok::<Analysis>(&r)).contains(&"misalignment_above_limit".to_owned()));
-        let mut bad = example();
-        bad["misalignment_rad"] = json!(0.2);
-        bad["bore_diameter_m"] = json!(0.2);
-        let p = invalid_pointers::<Analysis>(&bad);
-        assert!(
-            p.contains(&"/misalignment_rad".to_owned())
-                && p.contains(&"/bore_diameter_m".to_owned())
-        );
-    }
-
-    /// The films' effects reach the EHL room: starvation from the meniscus distance (on, and
-    /// judged in auto), thermal off on request.
-    #[test]
-    fn film_effects_pass_through() {
-        let mut r = example();
-        r["inlet_meniscus_distance_m"] = json!(6e-4);
-        r["film_effects"] = json!({"thermal": "off", "starvation": "on"});
-        let v = ok::<Analysis>(&r);
-        assert_eq!(v["effects"]["thermal"]["applied"], false);
-        assert_eq!(v["effects"]["thermal"]["mode"], "off");
-        assert_eq!(
-            v["effects"]["starvation"]["applied"], true,
-            "{}",
-            v["effects"]["starvation"]
-        );
-        let mut flooded = example();
-        flooded["film_effects"] = json!({"thermal": "off"});
-        let flooded = ok::<Analysis>(&flooded);
-        let h = |v: &Value| {
-            v["result"]["inner_film"]["min_film_thickness_m"]
-                .as_f64()
-                .unwrap()
-        };
-        assert!(h(&v) <= h(&flooded));
-        // In auto, that meniscus lies beyond both critical distances: reported, not applied.
-        r["film_effects"] = json!({"starvation": "auto"});
-        let auto = ok::<Analysis>(&r);
-        assert_eq!(auto["effects"]["starvation"]["applied"], false);
-        assert!(
-            auto["effects"]["starvation"]["criterion"]["value"]
-                .as_f64()
-                .unwrap()
-                > 0.0
-        );
-    }
-
-    /// Hamrock's A-R2 cylindrical roller bearing through the chain: d_i = 64, d_o = 96 mm,
-    /// D = l = 16 mm, n = 9, F_r = 10 800 N, ω_i = 524 rad/s, η₀ = 0.01 Pa·s, ξ = 2.2e-8 m²/N,
-    /// E = 207.5 GPa, ν = 0.3. Source (spec A-R2, verified): u = 10.061 m/s, inner
-    /// h_min = 0.3233 µm, outer 0.3905 µm with the point formula at k → ∞ and F_max = 4800 N
-    /// (4 F_r/n). The chain's Q_max comes from the discrete 10/9 law (about 4934 N): the films
-    /// scale by (Q/4800)^−0.073, under 0.3 %, inside the source's ±1 %.
-    #[test]
-    fn hamrock_a_r2_roller_chain() {
-        let steel = json!({"elastic_modulus_pa": 2.075e11, "poisson_ratio": 0.3});
-        let r = json!({
-            "bearing": {"roller_diameter_m": 0.016, "roller_effective_length_m": 0.016,
-                "pitch_diameter_m": 0.08, "roller_count": 9, "diametral_clearance_m": 0.0,
-                "rollers": steel, "rings": steel},
-            "radial_load_n": 10800.0,
-            "inner_ring_speed_rpm": 524.0 * 60.0 / std::f64::consts::TAU,
-            "lubricant": {"viscosity_pa_s": 0.01, "pressure_viscosity_coefficient_1_pa": 2.2e-8},
-            "temperature_c": 40.0,
-            "dynamic_load_rating_n": 100000.0,
-        });
-        let v = ok::<Analysis>(&r);
-        let res = &v["result"];
-        let f = |film: &str| {
-            res[film]["formulas"]["hamrock_dowson_line_limit"]["min_film_thickness_m"]
-                .as_f64()
-                .unwrap()
-        };
-        let q = res["load_distribution"]["max_ball_load_n"]
-            .as_f64()
-            .unwrap();
-        let s = (q / 4800.0).powf(-0.073);
-        assert!(
-            (f("inner_film") / (0.3233e-6 * s) - 1.0).abs() < 0.01,
-            "{}",
-            f("inner_film")
-        );
-        assert!(
-            (f("outer_film") / (0.3905e-6 * s) - 1.0).abs() < 0.01,
-            "{}",
-            f("outer_film")
-        );
-        assert!(
-            (res["kinematics"]["inner_contact_entrainment_speed_m_s"]
-                .as_f64()
-                .unwrap()
-                / 10.061
-                - 1.0)
-                .abs()
-                < 1e-3
-        );
-        assert_eq!(res["life"]["life_exponent"].as_f64().unwrap(), 10.0 / 3.0);
-        assert!(
-            res["static_capacity"]["basic_static_load_rating_n"]
-                .as_f64()
-                .unwrap()
-                > 0.0
-        );
-        assert_eq!(res["inner_film"]["contact"], "line");
-    }
-
-    /// ISO 76 tabulates no X0, Y0 for a 10° angular-contact bearing: the chain runs on and says
-    /// why its static block is missing.
-    #[test]
-    fn an_unrated_angle_drops_the_static_block_with_a_warning() {
-        let mut r = example();
-        r["bearing"]["free_contact_angle_deg"] = json!(10.0);
-        let v = ok::<Analysis>(&r);
-        assert!(v["result"].get("static_capacity").is_none());
-        assert!(v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w["code"] == "static_capacity_not_rated"));
-    }
-
-    #[test]
-    fn invalid_steps_name_their_fields() {
-        let mut bad = example();
-        bad["bearing"]["ball_count"] = json!(0);
-        assert!(invalid_pointers::<Analysis>(&bad)
-            .iter()
-            .any(|p| p.starts_with("/bearing")));
-        let mut no_law = example();
-        no_law["lubricant"] = json!({"viscosity_pa_s": 0.02});
-        assert_eq!(invalid_pointers::<Analysis>(&no_law), vec!["/lubricant"]);
-        let mut axial = example();
-        axial["axial_load_n"] = json!(2000.0);
-        assert!(invalid_pointers::<Analysis>(&axial).contains(&"/equivalent_load_n".to_owned()));
-        let mut typo = example();
-        typo["lubricant"]["viscosty_pa_s"] = json!(1.0);
-        assert!(invalid_pointers::<Analysis>(&typo)
-            .iter()
-            .any(|p| p == "/lubricant/viscosty_pa_s"));
-    }
-}
+#[path = "analysis_tests.rs"]
+mod tests;

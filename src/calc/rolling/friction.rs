@@ -158,9 +158,7 @@ impl Calculation for Friction {
     const PATH: &'static str = "/v1/rolling-bearings/friction";
     const SUMMARY: &'static str =
         "Friction moment and power loss of a rolling bearing (load, lubricant and seal terms)";
-    const DESCRIPTION: &'static str = "M = M_P + M_L + M_S (Khonsari & Booser §15.2, Eq. 15.1–15.5): load term ½ μ P d with the bearing \
-type's friction coefficient (Table 15.1); lubricant term 10⁻⁷ f_L (ν n)^{2/3} d_m³ (ν n ≥ 2000) or 160·10⁻⁷ f_L d_m³ (N·mm, mm, mm²/s, rpm; \
-f_L from Table 15.2); two rubbing seals ((d + D)/f1)² + f2 (Table 15.3). Power 2π (n/60) M.";
+    const DESCRIPTION: &'static str = include_str!("friction.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"bore_diameter_m": 0.1, "outside_diameter_m": 0.18, "speed_rpm": 10000, "equivalent_load_n": 26700, "friction_coefficient": 0.002, "lubrication_factor": 6.6, "operating_viscosity_mm2_s": 6.0}"#;

@@ -125,8 +125,7 @@ pub struct GreaseLifeOutput {
 impl Calculation for GreaseLife {
     const PATH: &'static str = "/v1/rolling-bearings/grease-life";
     const SUMMARY: &'static str = "Grease life and relubrication interval of a rolling bearing";
-    const DESCRIPTION: &'static str = "log10 L[h] = A + B/T − 9.6·10⁻⁷ k_f d n (Khonsari & Booser Eq. 15.34; T = 273 + °C, A = −2.60, \
-B = 2450 for premium greases, d bore in mm, n rpm, k_f Table 15.6); relubricate at ½ L. Fitted 75–175 °C.";
+    const DESCRIPTION: &'static str = include_str!("grease_life.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str =

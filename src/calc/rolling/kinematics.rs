@@ -24,7 +24,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use crate::calc::quantity::Positive;
+use crate::calc::quantity::{Positive, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
 
@@ -37,22 +37,23 @@ const MAX_SPEED_RPM: f64 = 1e7;
 /// Largest number of rolling elements accepted.
 const MAX_BALL_COUNT: u32 = 10_000;
 
-/// A ring speed in rpm: finite, signed (positive in the sense the request chooses), |n| ≤ 1e7.
+/// One ring's speed in rpm as the request gives it: finite, signed (positive in the sense the
+/// request chooses), |n| ≤ 1e7.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(try_from = "f64")]
-pub struct RingSpeed(f64);
+pub struct RingRpm(f64);
 
-impl RingSpeed {
+impl RingRpm {
     pub fn get(self) -> f64 {
         self.0
     }
 }
 
-impl TryFrom<f64> for RingSpeed {
+impl TryFrom<f64> for RingRpm {
     type Error = String;
     fn try_from(v: f64) -> Result<Self, String> {
         if v.is_finite() && v.abs() <= MAX_SPEED_RPM {
-            Ok(RingSpeed(v))
+            Ok(RingRpm(v))
         } else {
             Err(format!(
                 "must be a finite speed in rpm with |n| ≤ {MAX_SPEED_RPM:e}, got {v}"
@@ -100,11 +101,11 @@ pub struct KinematicsInput {
     /// Inner ring speed n_i, rpm, signed (|n| ≤ 1e7); default 0. Rings turning the opposite
     /// way have opposite signs.
     #[schema(value_type = Option<f64>, minimum = -1e7, maximum = 1e7, example = 1800.0)]
-    pub inner_ring_speed_rpm: Option<RingSpeed>,
+    pub inner_ring_speed_rpm: Option<RingRpm>,
     /// Outer ring speed n_o, rpm, signed in the same sense as the inner ring's (|n| ≤ 1e7);
     /// default 0.
     #[schema(value_type = Option<f64>, minimum = -1e7, maximum = 1e7, example = 0.0)]
-    pub outer_ring_speed_rpm: Option<RingSpeed>,
+    pub outer_ring_speed_rpm: Option<RingRpm>,
 }
 
 /// The validated case.
@@ -114,16 +115,37 @@ pub struct KinematicsCase {
     pitch_diameter_m: f64,
     ball_count: u32,
     contact_angle_rad: f64,
-    inner_rpm: f64,
-    outer_rpm: f64,
+    speed: RingSpeed,
 }
 
 impl Validate for KinematicsInput {
     type Valid = KinematicsCase;
     fn validate(self) -> Result<KinematicsCase, Vec<FieldError>> {
+        KinematicsCase::new(
+            self.ball_diameter_m,
+            self.pitch_diameter_m,
+            self.ball_count,
+            self.contact_angle_deg,
+            RingSpeed::new(
+                self.inner_ring_speed_rpm.map_or(0.0, RingRpm::get),
+                self.outer_ring_speed_rpm.map_or(0.0, RingRpm::get),
+            ),
+        )
+    }
+}
+
+impl KinematicsCase {
+    /// A case from typed values; the pointers of its errors are the kinematics request's.
+    pub(super) fn new(
+        ball_diameter_m: Positive,
+        pitch_diameter_m: Positive,
+        ball_count: u32,
+        contact_angle_deg: Option<ContactAngle>,
+        speed: RingSpeed,
+    ) -> Result<KinematicsCase, Vec<FieldError>> {
         let mut errors = Vec::new();
-        let d = self.ball_diameter_m.get();
-        let dm = self.pitch_diameter_m.get();
+        let d = ball_diameter_m.get();
+        let dm = pitch_diameter_m.get();
         for (value, pointer) in [(d, "/ball_diameter_m"), (dm, "/pitch_diameter_m")] {
             if value > MAX_DIAMETER_M {
                 errors.push(FieldError::new(
@@ -146,13 +168,10 @@ impl Validate for KinematicsInput {
                 ),
             ));
         }
-        if !(1..=MAX_BALL_COUNT).contains(&self.ball_count) {
+        if !(1..=MAX_BALL_COUNT).contains(&ball_count) {
             errors.push(FieldError::new(
                 "/ball_count",
-                format!(
-                    "must be within [1, {MAX_BALL_COUNT}], got {}",
-                    self.ball_count
-                ),
+                format!("must be within [1, {MAX_BALL_COUNT}], got {ball_count}"),
             ));
         }
         if !errors.is_empty() {
@@ -161,10 +180,9 @@ impl Validate for KinematicsInput {
         Ok(KinematicsCase {
             ball_diameter_m: d,
             pitch_diameter_m: dm,
-            ball_count: self.ball_count,
-            contact_angle_rad: self.contact_angle_deg.map_or(0.0, |a| a.0.to_radians()),
-            inner_rpm: self.inner_ring_speed_rpm.map_or(0.0, RingSpeed::get),
-            outer_rpm: self.outer_ring_speed_rpm.map_or(0.0, RingSpeed::get),
+            ball_count,
+            contact_angle_rad: contact_angle_deg.map_or(0.0, |a| a.0.to_radians()),
+            speed,
         })
     }
 }
@@ -247,13 +265,7 @@ impl Calculation for Kinematics {
     const PATH: &'static str = "/v1/rolling-bearings/kinematics";
     const SUMMARY: &'static str =
         "Rolling-bearing kinematics: cage and ball spin speeds, defect frequencies (FTF, BPFO, BPFI, BSF), entrainment speeds";
-    const DESCRIPTION: &'static str = "Pure-rolling kinematics of a ball or roller bearing with the same contact angle α at both \
-races (race-control-free; Hamrock eqs 21.93–21.98, Khonsari & Booser §14.5/§14.7): with γ = D cos α/d_m, cage \
-n_c = ½[n_i(1 − γ) + n_o(1 + γ)]; ball spin relative to the cage n_b = (d_m/2D)(1 − γ²)(n_i − n_o), and from the fixed \
-frame (d_m/2D)[n_i(1 − γ) − n_o(1 + γ)]; entrainment speed ū = (π d_m/120)|n_i − n_o|(1 − γ²) at both contacts. \
-Defect frequencies in Hz: FTF = |n_c|/60, BPFO = Z|n_o − n_c|/60, BPFI = Z|n_i − n_c|/60 (so BPFO + BPFI = Z|n_i − n_o|/60), \
-BSF = |n_b|/60 (spin relative to the cage) and the ball defect frequency 2·BSF. Either ring, both or counter-rotating rings; \
-no skidding, gyroscopic or centrifugal effects.";
+    const DESCRIPTION: &'static str = include_str!("kinematics.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "contact_angle_deg": 0, "inner_ring_speed_rpm": 1800, "outer_ring_speed_rpm": 0}"#;
@@ -262,17 +274,23 @@ no skidding, gyroscopic or centrifugal effects.";
     type Output = KinematicsOutput;
 
     fn run(case: KinematicsCase, ctx: &mut Context) -> Result<KinematicsOutput, CalcError> {
-        if case.inner_rpm == case.outer_rpm {
-            ctx.warn(
+        Ok(solve(&case, ctx))
+    }
+}
+
+/// The speeds of a validated case, with a warning when the rings do not turn relative to each
+/// other (the room's answer; the analysis calls it too).
+pub(super) fn solve(case: &KinematicsCase, ctx: &mut Context) -> KinematicsOutput {
+    if case.speed.inner_rpm == case.speed.outer_rpm {
+        ctx.warn(
                 "no_relative_rotation",
                 format!(
                     "both rings turn at {} rpm: the bearing turns as a rigid body, with no rolling, spin or defect frequencies (only the cage frequency)",
-                    case.inner_rpm
+                    case.speed.inner_rpm
                 ),
             );
-        }
-        Ok(kinematics(&case))
     }
+    kinematics(case)
 }
 
 /// The closed forms of the module documentation.
@@ -281,7 +299,7 @@ fn kinematics(case: &KinematicsCase) -> KinematicsOutput {
     let dm = case.pitch_diameter_m;
     let cos_a = case.contact_angle_rad.cos();
     let gamma = d * cos_a / dm;
-    let (ni, no) = (case.inner_rpm, case.outer_rpm);
+    let (ni, no) = (case.speed.inner_rpm, case.speed.outer_rpm);
     let z = f64::from(case.ball_count);
     let cage = 0.5 * (ni * (1.0 - gamma) + no * (1.0 + gamma));
     let inner_rel = 0.5 * (ni - no) * (1.0 + gamma);
@@ -584,8 +602,7 @@ mod tests {
             pitch_diameter_m: d / ratio,
             ball_count: z,
             contact_angle_rad: alpha.to_radians(),
-            inner_rpm: ni,
-            outer_rpm: no,
+            speed: RingSpeed::new(ni, no),
         }
     }
 

@@ -28,33 +28,32 @@
 //! symmetry puts every contact angle at 0) and pure axial loads (δ_r = 0) are one-dimensional
 //! and bracketed by Brent's method. Convergence: |force residual| ≤ 1e-9 of the load scale
 //! max(|F|, Z Q₀), with Q₀ the balls' preload (0 unless preloaded).
+//!
+//! This file is the wire (request, validation, effect decisions, output); the solvers are in
+//! [`super::ring_equilibrium`] and [`super::ball_equilibrium`], the roller bearing in
+//! [`super::roller`].
 
 use serde::de::DeserializeOwned;
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use utoipa::ToSchema;
 
-use super::ball_equilibrium::{BallState, Balls, Gyro, Problem, SeriesLaw};
+use super::ball_equilibrium::Gyro;
 use super::geometry::{BallBearing, BallBearingSpec, Race};
-use super::roller::{self, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
+use super::ring_equilibrium::{
+    classic, general, load_scale, tilt_arm, AngleMode, LoadDistributionCase, SpeedModel,
+};
+use super::roller::{self, RollerBearing, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::HertzOutput;
-use crate::calc::quantity::NonNegative;
+use crate::calc::quantity::{NonNegative, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
-use crate::numerics::roots::{brent, Root, RootError, Stopping};
+use crate::fidelity::Level;
 
 pub struct LoadDistribution;
 
 /// Largest load accepted, N.
 const MAX_LOAD_N: f64 = 1e9;
-/// Force balance, relative to the load scale, at which the equilibrium is accepted.
-const TOLERANCE: f64 = 1e-9;
-/// Newton iterations allowed (each with up to [`MAX_HALVINGS`] backtracking steps).
-const MAX_ITERATIONS: u32 = 200;
-const MAX_HALVINGS: u32 = 60;
-/// Brent iterations allowed in the one-dimensional cases.
-const MAX_BRENT_ITERATIONS: u32 = 200;
 /// ISO 76's static-capacity contact pressure for ball bearings (4200 MPa): above it permanent
 /// deformation of about 1e-4 D is expected.
 const STATIC_LIMIT_PA: f64 = 4.2e9;
@@ -68,9 +67,6 @@ const CENTRIFUGAL_THRESHOLD: f64 = 0.01;
 const GYROSCOPIC_THRESHOLD: f64 = 0.01;
 /// Bearing steel's density (AISI 52100), kg/m³, assumed for a steel-like ball without one.
 const STEEL_DENSITY_KG_M3: f64 = 7800.0;
-/// Traction the outer contact can give before the ball spins there (a dry-ish 0.1; EHL
-/// traction coefficients are lower still).
-const TRACTION_LIMIT: f64 = 0.1;
 
 /// How the contact angles respond to the load.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
@@ -148,20 +144,6 @@ pub struct LoadDistributionInput {
     pub effects: LoadDistributionEffects,
 }
 
-/// The validated case.
-#[derive(Debug, Clone, Copy)]
-pub struct LoadDistributionCase {
-    bearing: BallBearing,
-    radial_load_n: f64,
-    axial_load_n: f64,
-    mode: ContactAngleMode,
-    moment_n_m: Option<f64>,
-    /// Ring speeds, rpm.
-    inner_rpm: f64,
-    outer_rpm: f64,
-    effects: LoadDistributionEffects,
-}
-
 /// What the room runs: a ball bearing's case or a roller bearing's.
 #[derive(Debug, Clone, Copy)]
 pub enum LoadDistributionRequest {
@@ -198,11 +180,39 @@ pub(super) fn parse_at<T: DeserializeOwned>(value: Value, at: &str) -> Result<T,
     })
 }
 
+/// The request's load case, typed: everything but the bearing. The pointers of its errors are
+/// the load-distribution request's, which the analysis request shares.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct Loading {
+    pub radial_load_n: NonNegative,
+    pub axial_load_n: NonNegative,
+    pub contact_angle_mode: ContactAngleMode,
+    pub moment_n_m: Option<f64>,
+    pub inner_ring_speed_rpm: Option<f64>,
+    pub outer_ring_speed_rpm: Option<f64>,
+    pub effects: LoadDistributionEffects,
+}
+
 impl LoadDistributionInput {
+    fn loading(&self) -> Loading {
+        Loading {
+            radial_load_n: self.radial_load_n,
+            axial_load_n: self.axial_load_n,
+            contact_angle_mode: self.contact_angle_mode,
+            moment_n_m: self.moment_n_m,
+            inner_ring_speed_rpm: self.inner_ring_speed_rpm,
+            outer_ring_speed_rpm: self.outer_ring_speed_rpm,
+            effects: self.effects,
+        }
+    }
+}
+
+impl Loading {
     /// A roller bearing's request: radial load only, no speed effects.
-    fn validate_roller(self) -> Result<LoadDistributionRequest, Vec<FieldError>> {
-        let spec: RollerBearingSpec = parse_at(self.bearing, "/bearing")?;
-        let bearing = spec.validate_at("/bearing");
+    pub(super) fn roller(
+        self,
+        bearing: Result<RollerBearing, Vec<FieldError>>,
+    ) -> Result<LoadDistributionRequest, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
         if f_r > MAX_LOAD_N {
@@ -255,11 +265,24 @@ impl LoadDistributionInput {
 impl Validate for LoadDistributionInput {
     type Valid = LoadDistributionRequest;
     fn validate(self) -> Result<LoadDistributionRequest, Vec<FieldError>> {
+        let loading = self.loading();
         if self.bearing.get("roller_diameter_m").is_some() {
-            return self.validate_roller();
+            let spec: RollerBearingSpec = parse_at(self.bearing, "/bearing")?;
+            return loading.roller(spec.validate_at("/bearing"));
         }
-        let bearing = parse_at::<BallBearingSpec>(self.bearing.clone(), "/bearing")
-            .and_then(|spec| spec.validate_at("/bearing"));
+        loading.ball(
+            parse_at::<BallBearingSpec>(self.bearing, "/bearing")
+                .and_then(|spec| spec.validate_at("/bearing")),
+        )
+    }
+}
+
+impl Loading {
+    /// A ball bearing's request.
+    pub(super) fn ball(
+        self,
+        bearing: Result<BallBearing, Vec<FieldError>>,
+    ) -> Result<LoadDistributionRequest, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let (f_r, f_a) = (self.radial_load_n.get(), self.axial_load_n.get());
         for (f, pointer) in [(f_r, "/radial_load_n"), (f_a, "/axial_load_n")] {
@@ -333,11 +356,14 @@ impl Validate for LoadDistributionInput {
                     bearing,
                     radial_load_n: f_r,
                     axial_load_n: f_a,
-                    mode: self.contact_angle_mode,
+                    mode: match self.contact_angle_mode {
+                        ContactAngleMode::Varying => AngleMode::Varying,
+                        ContactAngleMode::Fixed => AngleMode::Fixed,
+                    },
                     moment_n_m: self.moment_n_m,
-                    inner_rpm,
-                    outer_rpm,
-                    effects,
+                    speed: RingSpeed::new(inner_rpm, outer_rpm),
+                    centrifugal: effects.centrifugal,
+                    gyroscopic: effects.gyroscopic,
                 }))
             }
             _ => Err(errors),
@@ -504,22 +530,7 @@ impl Calculation for LoadDistribution {
     const PATH: &'static str = "/v1/rolling-bearings/load-distribution";
     const SUMMARY: &'static str =
         "Ball- and cylindrical-roller-bearing load distribution: element loads, contact angles, load zone and ring displacements under combined load, moment and speed";
-    const DESCRIPTION: &'static str = "Quasi-static equilibrium of the inner ring of a single-row ball bearing (deep-groove or \
-angular-contact, clearance or preload) under a radial load F_r, an axial load F_a and optionally a tilting moment M, rigid rings, \
-every ball summed discretely at ψ_j = 2πj/Z (Harris; Hamrock §21.3.6; Khonsari & Booser §14.4). Groove curvature centres BD apart \
-unloaded (B = f_i + f_o − 1); concentric rings put them r₀ = BD cos α_g − P_d/2 apart radially, the free contact angle is \
-cos α_f = r₀/BD. `varying` (default): A_j = √[(a₀ + δ_a + θℜ cos ψ_j)² + (r₀ + δ_r cos ψ_j)²], sin α_j = (a₀ + δ_a + θℜ cos ψ_j)/A_j; \
-`fixed`: A_j = A₀ + (δ_a + θℜ cos ψ_j) sin α_f + δ_r cos α_f cos ψ_j. δ_j = A_j − BD ≥ 0, Q_j = K_n δ_j^1.5 with \
-K_n = [K_i^(−2/3) + K_o^(−2/3)]^(−3/2) from the exact Hertz contacts at α_f. Without `moment_n_m` the ring is held square (θ = 0) and \
-the moment it takes is reported; with it the ring tilts freely (ℜ = d_m/2 + (f_i − ½)D cos α_f). At speed (`inner_ring_speed_rpm`, \
-`outer_ring_speed_rpm`) the effects `centrifugal` (F_c = ½ m d_m ω_m², Khonsari & Booser RI-9) and `gyroscopic` (J ω_R ω_m sin β, \
-outer-race control) put every ball at its own place between the grooves (Jones): inner and outer loads and angles part. The \
-equilibrium is the minimum of the convex elastic energy less the work of the loads: safeguarded Newton (ball blocks eliminated), \
-Brent's method for pure radial or pure axial loads held square; every force balance to 1e-9 of the load. Load-zone factor \
-ε = δ(0)/[δ(0) − δ(π)] (classic ½(1 + δ_a tan α/δ_r) at fixed angle). Zero clearance, pure radial: Q_max = 4.37 F_r/Z for many \
-balls (Stribeck); pure axial: Q = F_a/(Z sin α). A cylindrical roller `bearing` (fields `roller_…`, Khonsari & Booser RI-4, RI-6): \
-straight or crowned rollers (40 laminae, crown drop y²/2R), Palmgren's Q = K_n δ^(10/9) per roller, radial load only, \
-δ_j = δ_r cos ψ_j − P_d/2 solved by Brent's method; the raceway contacts are Hertz line contacts (static factor against 4000 MPa).";
+    const DESCRIPTION: &'static str = include_str!("load_distribution.md");
     const FIDELITY: &'static [Level] = &[Level::Standard];
     const EFFECTS: &'static [&'static str] = &["centrifugal", "gyroscopic"];
     const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "inner_groove_radius_m": 0.0066, "outer_groove_radius_m": 0.0066, "diametral_clearance_m": 1.8e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 3000, "axial_load_n": 1000}"#;
@@ -531,104 +542,112 @@ straight or crowned rollers (40 laminae, crown drop y²/2R), Palmgren's Q = K_n 
         request: LoadDistributionRequest,
         ctx: &mut Context,
     ) -> Result<LoadDistributionOutput, CalcError> {
-        let case = match request {
-            LoadDistributionRequest::Ball(case) => case,
-            LoadDistributionRequest::Roller(case) => return roller_run(case, ctx),
-        };
-        let bearing = &case.bearing;
-        let alpha_f = bearing.free_contact_angle();
-        let k_n = bearing.contact_stiffness(alpha_f, ctx)?;
-        let speed = speed_model(&case, k_n, ctx)?;
-        let eq = if case.moment_n_m.is_none() && speed.is_none() {
-            classic(&case, k_n, ctx)?
+        solve(request, ctx)
+    }
+}
+
+/// The load distribution of a validated case (the room's answer; the analysis calls it too).
+pub(super) fn solve(
+    request: LoadDistributionRequest,
+    ctx: &mut Context,
+) -> Result<LoadDistributionOutput, CalcError> {
+    let case = match request {
+        LoadDistributionRequest::Ball(case) => case,
+        LoadDistributionRequest::Roller(case) => return roller_run(case, ctx),
+    };
+    let bearing = &case.bearing;
+    let alpha_f = bearing.free_contact_angle();
+    let k_n = bearing.contact_stiffness(alpha_f, ctx)?;
+    let speed = speed_model(&case, k_n, ctx)?;
+    let eq = if case.moment_n_m.is_none() && speed.is_none() {
+        classic(&case, k_n, ctx)?
+    } else {
+        general(&case, k_n, speed, ctx)?
+    };
+    let inner_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
+        if b.inner_load > m.0 {
+            (b.inner_load, b.inner_angle)
         } else {
-            general(&case, k_n, speed, ctx)?
-        };
-        let inner_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
-            if b.inner_load > m.0 {
-                (b.inner_load, b.inner_angle)
-            } else {
-                m
-            }
-        });
-        let outer_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
-            if b.outer_load > m.0 {
-                (b.outer_load, b.outer_angle)
-            } else {
-                m
-            }
-        });
-        if inner_max.0 <= 0.0 {
-            return Err(CalcError::Internal(
-                "an equilibrium without a loaded ball".to_owned(),
-            ));
+            m
         }
-        let inner = bearing.raceway_contact(Race::Inner, inner_max.1, inner_max.0, ctx)?;
-        let outer = bearing.raceway_contact(Race::Outer, outer_max.1, outer_max.0, ctx)?;
-        let p_max = inner.max_pressure_pa.max(outer.max_pressure_pa);
-        if p_max > STATIC_LIMIT_PA {
-            ctx.warn(
+    });
+    let outer_max = eq.balls.iter().fold((0.0, alpha_f), |m, b| {
+        if b.outer_load > m.0 {
+            (b.outer_load, b.outer_angle)
+        } else {
+            m
+        }
+    });
+    if inner_max.0 <= 0.0 {
+        return Err(CalcError::Internal(
+            "an equilibrium without a loaded ball".to_owned(),
+        ));
+    }
+    let inner = bearing.raceway_contact(Race::Inner, inner_max.1, inner_max.0, ctx)?;
+    let outer = bearing.raceway_contact(Race::Outer, outer_max.1, outer_max.0, ctx)?;
+    let p_max = inner.max_pressure_pa.max(outer.max_pressure_pa);
+    if p_max > STATIC_LIMIT_PA {
+        ctx.warn(
                 "static_capacity_exceeded",
                 format!(
                     "the most loaded ball's contact pressure {:.0} MPa exceeds the 4200 MPa of ISO 76's static load rating for ball bearings: permanent raceway deformation beyond 1e-4 D is expected, and rigid-ring Hertz theory is stretched",
                     p_max / 1e6
                 ),
             );
-        }
-        ctx.report(eq.report.clone());
-        let z = bearing.ball_count;
-        let arm = tilt_arm(bearing);
-        let free = eq.centrifugal_n.is_some();
-        let tilting_moment = eq
+    }
+    ctx.report(eq.report.clone());
+    let z = bearing.ball_count;
+    let arm = tilt_arm(bearing);
+    let free = eq.centrifugal_n.is_some();
+    let tilting_moment = eq
+        .balls
+        .iter()
+        .enumerate()
+        .map(|(j, b)| {
+            b.inner_load
+                * b.inner_angle.sin()
+                * arm
+                * (std::f64::consts::TAU * j as f64 / z as f64).cos()
+        })
+        .sum();
+    Ok(LoadDistributionOutput {
+        max_ball_load_n: inner_max.0,
+        load_zone_factor: eq.load_zone_factor,
+        load_zone_half_angle_deg: eq.half_angle.to_degrees(),
+        loaded_ball_count: eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32,
+        ball_loads: eq
             .balls
             .iter()
             .enumerate()
-            .map(|(j, b)| {
-                b.inner_load
-                    * b.inner_angle.sin()
-                    * arm
-                    * (std::f64::consts::TAU * j as f64 / z as f64).cos()
+            .map(|(j, b)| BallLoad {
+                azimuth_deg: 360.0 * j as f64 / z as f64,
+                load_n: b.inner_load,
+                contact_angle_deg: b.inner_angle.to_degrees(),
+                outer_load_n: free.then_some(b.outer_load),
+                outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
+                gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
             })
-            .sum();
-        Ok(LoadDistributionOutput {
-            max_ball_load_n: inner_max.0,
-            load_zone_factor: eq.load_zone_factor,
-            load_zone_half_angle_deg: eq.half_angle.to_degrees(),
-            loaded_ball_count: eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32,
-            ball_loads: eq
-                .balls
+            .collect(),
+        radial_displacement_m: eq.displacement[0],
+        axial_displacement_m: eq.displacement[1],
+        free_contact_angle_deg: alpha_f.to_degrees(),
+        end_play_m: bearing.end_play_m(),
+        contact_stiffness_n_m1_5: Some(k_n),
+        roller_contact_stiffness_n_m10_9: None,
+        static_safety_factor: (STATIC_LIMIT_PA / p_max).powi(3),
+        tilt_rad: eq.displacement[2],
+        tilting_moment_n_m: tilting_moment,
+        centrifugal_force_n: eq.centrifugal_n,
+        max_outer_ball_load_n: free.then_some(outer_max.0),
+        max_gyroscopic_friction_n: eq.gyroscopic.then(|| {
+            eq.balls
                 .iter()
-                .enumerate()
-                .map(|(j, b)| BallLoad {
-                    azimuth_deg: 360.0 * j as f64 / z as f64,
-                    load_n: b.inner_load,
-                    contact_angle_deg: b.inner_angle.to_degrees(),
-                    outer_load_n: free.then_some(b.outer_load),
-                    outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
-                    gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
-                })
-                .collect(),
-            radial_displacement_m: eq.displacement[0],
-            axial_displacement_m: eq.displacement[1],
-            free_contact_angle_deg: alpha_f.to_degrees(),
-            end_play_m: bearing.end_play_m(),
-            contact_stiffness_n_m1_5: Some(k_n),
-            roller_contact_stiffness_n_m10_9: None,
-            static_safety_factor: (STATIC_LIMIT_PA / p_max).powi(3),
-            tilt_rad: eq.displacement[2],
-            tilting_moment_n_m: tilting_moment,
-            centrifugal_force_n: eq.centrifugal_n,
-            max_outer_ball_load_n: free.then_some(outer_max.0),
-            max_gyroscopic_friction_n: eq.gyroscopic.then(|| {
-                eq.balls
-                    .iter()
-                    .map(|b| b.friction_n.abs())
-                    .fold(0.0, f64::max)
-            }),
-            inner_contact: RacewayContact::from_hertz(&inner)?,
-            outer_contact: RacewayContact::from_hertz(&outer)?,
-        })
-    }
+                .map(|b| b.friction_n.abs())
+                .fold(0.0, f64::max)
+        }),
+        inner_contact: RacewayContact::from_hertz(&inner)?,
+        outer_contact: RacewayContact::from_hertz(&outer)?,
+    })
 }
 
 /// A cylindrical roller bearing's load distribution (see [`super::roller`]).
@@ -733,51 +752,14 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
     })
 }
 
-/// ℜ = d_m/2 + (f_i − ½)D cos α_f, m: the radius of the inner groove curvature centres, the
-/// lever arm of the balls' axial forces about the tilt axis (Harris).
-fn tilt_arm(b: &BallBearing) -> f64 {
-    0.5 * b.pitch_diameter_m
-        + (b.inner_conformity - 0.5) * b.ball_diameter_m * b.free_contact_angle().cos()
-}
-
-/// The solved equilibrium, whichever solver found it.
-struct Equilibrium {
-    balls: Vec<BallState>,
-    /// δ_r, δ_a (report convention), θ.
-    displacement: [f64; 3],
-    load_zone_factor: Option<f64>,
-    half_angle: f64,
-    report: SolverReport,
-    centrifugal_n: Option<f64>,
-    gyroscopic: bool,
-}
-
-/// The ball model at speed: F_c on every ball, the gyroscopic inputs, each contact's stiffness.
-struct SpeedModel {
-    centrifugal_n: f64,
-    gyro: Option<Gyro>,
-    k_i: f64,
-    k_o: f64,
-}
-
-/// The load scale: |F|, |M|/ℜ, or the preload Z Q₀, N.
-fn load_scale(case: &LoadDistributionCase, k_n: f64) -> f64 {
-    let b = &case.bearing;
-    let preload = b.ball_count as f64 * k_n * b.interference_m().powf(1.5);
-    case.radial_load_n
-        .hypot(case.axial_load_n)
-        .max(case.moment_n_m.unwrap_or(0.0).abs() / tilt_arm(b))
-        .max(preload)
-}
-
 /// Decide the centrifugal and gyroscopic effects; the ball model when they apply.
 fn speed_model(
     case: &LoadDistributionCase,
     k_n: f64,
     ctx: &mut Context,
 ) -> Result<Option<SpeedModel>, CalcError> {
-    let (c_mode, g_mode) = (case.effects.centrifugal, case.effects.gyroscopic);
-    if case.inner_rpm == 0.0 && case.outer_rpm == 0.0 {
+    let (c_mode, g_mode) = (case.centrifugal, case.gyroscopic);
+    if case.speed.at_rest() {
         for (name, mode) in [("centrifugal", c_mode), ("gyroscopic", g_mode)] {
             ctx.decide(
                 name,
@@ -809,13 +791,13 @@ fn speed_model(
         }
     };
     let rad = std::f64::consts::TAU / 60.0;
-    let (w_i, w_o) = (case.inner_rpm * rad, case.outer_rpm * rad);
+    let (w_i, w_o) = (case.speed.inner_rpm * rad, case.speed.outer_rpm * rad);
     let gc = d * alpha_f.cos() / dm;
     let cage = 0.5 * (w_i * (1.0 - gc) + w_o * (1.0 + gc));
     let mass = density * std::f64::consts::PI * d.powi(3) / 6.0;
     let f_c = 0.5 * mass * dm * cage * cage;
     let mean_ball_load = load_scale(case, k_n) / b.ball_count as f64;
-    let dn = dm * 1e3 * (case.inner_rpm - case.outer_rpm).abs();
+    let dn = dm * 1e3 * case.speed.relative_rpm().abs();
     let what = format!(
         "centrifugal ball force F_c = ½ m d_m ω_m² = {f_c:.4e} N at the cage speed {:.0} rpm (d_m·n = {dn:.3e} mm·rpm; Khonsari & Booser RI-9: significant from about 5000–20 000 rpm, size dependent), against the mean ball load {mean_ball_load:.4e} N",
         cage / rad
@@ -825,7 +807,7 @@ fn speed_model(
         value: f_c / mean_ball_load,
         threshold: CENTRIFUGAL_THRESHOLD,
     };
-    let fixed = case.mode == ContactAngleMode::Fixed;
+    let fixed = case.mode == AngleMode::Fixed;
     let mut centrifugal = Decision::decide(c_mode, criterion, &what);
     if fixed {
         centrifugal = Decision::not_applicable(
@@ -895,1738 +877,6 @@ fn speed_model(
     }))
 }
 
-/// The classic two-unknown equilibrium (ring held square, no speed effects).
-fn classic(
-    case: &LoadDistributionCase,
-    k_n: f64,
-    ctx: &mut Context,
-) -> Result<Equilibrium, CalcError> {
-    let rings = Rings::new(case, k_n);
-    rings.check_existence(case)?;
-    let (u, report) = rings.equilibrium(ctx)?;
-    rings.check_geometry(u)?;
-    let (d0, d_pi) = (
-        rings.signed_deflection(u, 1.0),
-        rings.signed_deflection(u, -1.0),
-    );
-    Ok(Equilibrium {
-        balls: rings
-            .balls(u)
-            .into_iter()
-            .map(|b| BallState {
-                inner_load: b.load,
-                inner_angle: b.angle,
-                outer_load: b.load,
-                outer_angle: b.angle,
-                friction_n: 0.0,
-            })
-            .collect(),
-        displacement: [u[0], rings.axial_displacement(u), 0.0],
-        load_zone_factor: (u[0] > 0.0 && d0 > d_pi).then(|| d0 / (d0 - d_pi)),
-        half_angle: rings.load_zone_half_angle(u),
-        report,
-        centrifugal_n: None,
-        gyroscopic: false,
-    })
-}
-
-/// The general equilibrium: free tilt and/or every ball's own position at speed.
-fn general(
-    case: &LoadDistributionCase,
-    k_n: f64,
-    speed: Option<SpeedModel>,
-    ctx: &mut Context,
-) -> Result<Equilibrium, CalcError> {
-    let b = &case.bearing;
-    let alpha_f = b.free_contact_angle();
-    let arm = tilt_arm(b);
-    let moment = case.moment_n_m.unwrap_or(0.0);
-    let balls = match &speed {
-        Some(s) => Balls::Free {
-            k_i: s.k_i,
-            k_o: s.k_o,
-            centrifugal_n: s.centrifugal_n,
-            gyro: s.gyro,
-        },
-        None => Balls::Series {
-            k_n,
-            law: match case.mode {
-                ContactAngleMode::Varying => SeriesLaw::Varying,
-                ContactAngleMode::Fixed => {
-                    // Only reached without a moment (refused at the door) and without the
-                    // speed effects (which need varying angles).
-                    let (sin, cos) = alpha_f.sin_cos();
-                    SeriesLaw::Fixed { sin, cos }
-                }
-            },
-        },
-    };
-    let z = b.ball_count;
-    let scale = load_scale(case, k_n).max(speed.as_ref().map_or(0.0, |s| s.centrifugal_n));
-    let problem = Problem {
-        ball_diameter_m: b.ball_diameter_m,
-        pitch_diameter_m: b.pitch_diameter_m,
-        bd: b.curvature_centre_distance_m,
-        r0: b.radial_centre_offset_m,
-        a0: b.axial_centre_offset_m(),
-        arm,
-        inner_offset: (b.inner_conformity - 0.5) * b.ball_diameter_m,
-        outer_offset: (b.outer_conformity - 0.5) * b.ball_diameter_m,
-        cosines: (0..z)
-            .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).cos())
-            .collect(),
-        balls,
-        tilt_free: case.moment_n_m.is_some(),
-        load: [case.radial_load_n, case.axial_load_n, moment],
-        scale,
-        delta_scale: (scale / (z as f64 * k_n)).powf(2.0 / 3.0),
-    };
-    let solution = problem.solve(ctx)?;
-    let d = solution.displacement;
-    if matches!(case.mode, ContactAngleMode::Varying) && d[0] >= b.radial_centre_offset_m {
-        return Err(CalcError::impossible(
-            "/radial_load_n",
-            format!(
-                "the radial displacement {:.4e} m would carry the raceway curvature centres past each other (r₀ = {:.4e} m): a load this large is far beyond the bearing's static capacity and the rigid-ring Hertz model",
-                d[0], b.radial_centre_offset_m
-            ),
-        ));
-    }
-    if speed.as_ref().is_some_and(|s| s.gyro.is_some()) {
-        if let Some((j, ball)) = solution.balls.iter().enumerate().find(|(_, ball)| {
-            ball.outer_load > 0.0 && ball.friction_n.abs() > TRACTION_LIMIT * ball.outer_load
-        }) {
-            ctx.warn(
-                "gyroscopic_spin_likely",
-                format!(
-                    "ball {j} needs a friction force {:.4e} N at its outer contact to hold its gyroscopic moment, more than {TRACTION_LIMIT} of its load {:.4e} N: the ball will spin (pivot) there, which outer-race control does not describe",
-                    ball.friction_n.abs(),
-                    ball.outer_load
-                ),
-            );
-        }
-    }
-    let (d0, d_pi) = (
-        problem.signed_deflection(d, 1.0),
-        problem.signed_deflection(d, -1.0),
-    );
-    Ok(Equilibrium {
-        half_angle: problem.load_zone_half_angle(d),
-        load_zone_factor: (d[0] > 0.0 && d0 > d_pi).then(|| d0 / (d0 - d_pi)),
-        displacement: d,
-        centrifugal_n: speed.as_ref().map(|s| s.centrifugal_n),
-        gyroscopic: speed.as_ref().is_some_and(|s| s.gyro.is_some()),
-        balls: solution.balls,
-        report: solution.report,
-    })
-}
-
-/// One ball at equilibrium.
-struct Ball {
-    load: f64,
-    angle: f64,
-}
-
-/// The approach law of the chosen mode.
-#[derive(Debug, Clone, Copy)]
-enum Law {
-    /// A_j = hypot(u_a, r₀ + u_r cos ψ_j), with u_a = a₀ + δ_a the axial offset of the
-    /// curvature centres.
-    Varying { r0: f64 },
-    /// A_j = A₀ + u_a sin α_f + u_r cos α_f cos ψ_j, with u_a = δ_a.
-    Fixed { a0: f64, sin: f64, cos: f64 },
-}
-
-/// The ring system the equilibrium is solved on, in the unknowns u = [u_r, u_a] (u_r = δ_r).
-struct Rings {
-    law: Law,
-    /// cos ψ_j.
-    cosines: Vec<f64>,
-    /// BD, m.
-    bd: f64,
-    /// a₀, m (the reference of δ_a).
-    a0: f64,
-    k_n: f64,
-    /// Applied load [F_r, F_a], N.
-    load: [f64; 2],
-    /// Load scale of the residual, N.
-    scale: f64,
-    /// Characteristic contact deflection, m: the approach under an even share of the load.
-    delta_scale: f64,
-}
-
-/// Energy, gradient and Hessian of Π at a point.
-struct Local {
-    energy: f64,
-    gradient: [f64; 2],
-    hessian: [f64; 3],
-}
-
-impl Rings {
-    fn new(case: &LoadDistributionCase, k_n: f64) -> Self {
-        let b = &case.bearing;
-        let z = b.ball_count;
-        let (bd, r0, a0) = (
-            b.curvature_centre_distance_m,
-            b.radial_centre_offset_m,
-            b.axial_centre_offset_m(),
-        );
-        let law = match case.mode {
-            ContactAngleMode::Varying => Law::Varying { r0 },
-            ContactAngleMode::Fixed => {
-                let a = a0.hypot(r0);
-                Law::Fixed {
-                    a0: a,
-                    sin: a0 / a,
-                    cos: r0 / a,
-                }
-            }
-        };
-        let load = [case.radial_load_n, case.axial_load_n];
-        let preload = z as f64 * k_n * b.interference_m().powf(1.5);
-        let scale = load[0].hypot(load[1]).max(preload);
-        Rings {
-            law,
-            cosines: (0..z)
-                .map(|j| (std::f64::consts::TAU * j as f64 / z as f64).cos())
-                .collect(),
-            bd,
-            a0,
-            k_n,
-            load,
-            scale,
-            delta_scale: (scale / (z as f64 * k_n)).powf(2.0 / 3.0),
-        }
-    }
-
-    /// At a fixed contact angle the balls' normals span only the cone between (±cos α, sin α):
-    /// an equilibrium needs F_a ≥ F_r tan α, and no axial load at α = 0.
-    fn check_existence(&self, case: &LoadDistributionCase) -> Result<(), CalcError> {
-        let Law::Fixed { sin, cos, .. } = self.law else {
-            return Ok(());
-        };
-        let [f_r, f_a] = self.load;
-        if sin == 0.0 && f_a > 0.0 {
-            return Err(CalcError::impossible(
-                "/axial_load_n",
-                "at a fixed contact angle of 0 (a preloaded or zero-clearance deep-groove bearing) the balls carry no axial load: use contact_angle_mode varying, where the contact angles grow under the axial load",
-            ));
-        }
-        if f_a * cos < f_r * sin {
-            let alpha = case.bearing.free_contact_angle().to_degrees();
-            return Err(CalcError::impossible(
-                "/axial_load_n",
-                format!(
-                    "at a fixed contact angle α = {alpha:.4}° a single-row bearing carries F_r only with F_a ≥ F_r tan α = {:.6e} N (the classic ε theory's ε ≥ 0): below that the ring lifts off every ball. Use contact_angle_mode varying, where the contact angles fall under radial load, or raise the axial load",
-                    f_r * sin / cos
-                ),
-            ));
-        }
-        Ok(())
-    }
-
-    /// Signed approach A − BD of a ball at cos ψ = c.
-    fn signed_deflection(&self, u: [f64; 2], c: f64) -> f64 {
-        self.distance(u, c) - self.bd
-    }
-
-    fn distance(&self, u: [f64; 2], c: f64) -> f64 {
-        match self.law {
-            Law::Varying { r0 } => u[1].hypot(r0 + u[0] * c),
-            Law::Fixed { a0, sin, cos } => a0 + u[1] * sin + u[0] * cos * c,
-        }
-    }
-
-    /// Π, ∇Π and ∇²Π (as [h_rr, h_ra, h_aa]) at u.
-    fn local(&self, u: [f64; 2]) -> Local {
-        let mut l = Local {
-            energy: -self.load[0] * u[0] - self.load[1] * u[1],
-            gradient: [-self.load[0], -self.load[1]],
-            hessian: [0.0; 3],
-        };
-        let h = &mut l.hessian;
-        for &c in &self.cosines {
-            let (a, n, curvature) = match self.law {
-                Law::Varying { r0 } => {
-                    let x = r0 + u[0] * c;
-                    let a = u[1].hypot(x);
-                    // ∇A = (x c, u_a)/A; ∇²A = [c² u_a², −c x u_a, x²]/A³.
-                    let a3 = a * a * a;
-                    (
-                        a,
-                        [x * c / a, u[1] / a],
-                        [c * c * u[1] * u[1] / a3, -c * x * u[1] / a3, x * x / a3],
-                    )
-                }
-                Law::Fixed { a0, sin, cos } => {
-                    (a0 + u[1] * sin + u[0] * cos * c, [cos * c, sin], [0.0; 3])
-                }
-            };
-            let delta = a - self.bd;
-            if delta <= 0.0 {
-                continue;
-            }
-            let root = delta.sqrt();
-            let q = self.k_n * delta * root;
-            let dq = 1.5 * self.k_n * root;
-            l.energy += 0.4 * q * delta;
-            l.gradient[0] += q * n[0];
-            l.gradient[1] += q * n[1];
-            h[0] += dq * n[0] * n[0] + q * curvature[0];
-            h[1] += dq * n[0] * n[1] + q * curvature[1];
-            h[2] += dq * n[1] * n[1] + q * curvature[2];
-        }
-        l
-    }
-
-    fn residual(&self, g: [f64; 2]) -> f64 {
-        g[0].hypot(g[1]) / self.scale
-    }
-
-    /// The equilibrium u and the solver's report.
-    fn equilibrium(&self, ctx: &Context) -> Result<([f64; 2], SolverReport), CalcError> {
-        let [f_r, f_a] = self.load;
-        let axial_symmetric = match self.law {
-            Law::Varying { .. } => true,
-            Law::Fixed { sin, .. } => sin == 0.0,
-        };
-        if f_r == 0.0 && f_a == 0.0 {
-            // A preloaded bearing at rest: the concentric position, every ball equally loaded.
-            let u = [0.0, 0.0];
-            return Ok((
-                u,
-                report("symmetric", 0, self.residual(self.local(u).gradient)),
-            ));
-        }
-        // u_a = 0: contact angles 0 (varying) or δ_a = 0 (fixed), the symmetric position.
-        if f_r == 0.0 {
-            return self.one_dimensional(1, ctx);
-        }
-        if f_a == 0.0 && axial_symmetric {
-            return self.one_dimensional(0, ctx);
-        }
-        self.newton(ctx)
-    }
-
-    /// Brent's method on one component of the force balance along axis k, the other unknown
-    /// held at 0 where symmetry puts it. The force along k grows monotonically with u_k
-    /// (convex energy), from about −F_k at u_k = 0 (the symmetric ring carries no net force).
-    fn one_dimensional(
-        &self,
-        k: usize,
-        ctx: &Context,
-    ) -> Result<([f64; 2], SolverReport), CalcError> {
-        let at = |x: f64| {
-            let mut u = [0.0, 0.0];
-            u[k] = x;
-            u
-        };
-        let force = |x: f64| self.local(at(x)).gradient[k];
-        let at_rest = self.residual(self.local(at(0.0)).gradient);
-        if force(0.0) >= 0.0 && at_rest <= TOLERANCE {
-            // A load below round-off of a heavy preload.
-            return Ok((at(0.0), report("brent_ball_load_balance", 0, at_rest)));
-        }
-        // Past the clearance (or the end play), then doubled until the balls carry the load.
-        let hi = self.a0 + self.bd + self.delta_scale;
-        let root = load_balance_root(force, hi, "brent_ball_load_balance", ctx)?;
-        let u = at(root.x);
-        let residual = self.residual(self.local(u).gradient);
-        if residual > TOLERANCE {
-            return Err(CalcError::NotConverged {
-                method: "brent_ball_load_balance",
-                iterations: root.iterations,
-                residual,
-            });
-        }
-        Ok((
-            u,
-            report("brent_ball_load_balance", root.iterations, residual),
-        ))
-    }
-
-    /// Safeguarded Newton on Π: analytic Hessian, Levenberg shift when it is singular, a
-    /// gradient step where no ball is loaded, Armijo backtracking on Π.
-    fn newton(&self, ctx: &Context) -> Result<([f64; 2], SolverReport), CalcError> {
-        // Start with the ring pushed along the load by twice the characteristic deflection
-        // from the position where the unloaded balls touch.
-        let f = self.load[0].hypot(self.load[1]);
-        let push = 2.0 * self.delta_scale;
-        let mut u = match self.law {
-            Law::Varying { .. } => [push * self.load[0] / f, self.a0 + push * self.load[1] / f],
-            Law::Fixed { .. } => [push * self.load[0] / f, push * self.load[1] / f],
-        };
-        let mut here = self.local(u);
-        let mut residual = self.residual(here.gradient);
-        for iteration in 1..=MAX_ITERATIONS {
-            if residual <= TOLERANCE {
-                return Ok((
-                    u,
-                    report("newton_energy_line_search", iteration - 1, residual),
-                ));
-            }
-            if iteration % 8 == 0 {
-                ctx.check_deadline()?;
-            }
-            let g = here.gradient;
-            let [h_rr, h_ra, h_aa] = here.hessian;
-            let trace = h_rr + h_aa;
-            let step = if trace > 0.0 {
-                let shift = 1e-12 * trace;
-                let (a, b, c) = (h_rr + shift, h_ra, h_aa + shift);
-                let det = a * c - b * b;
-                [-(c * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det]
-            } else {
-                let norm = g[0].hypot(g[1]);
-                [-g[0] / norm * push, -g[1] / norm * push]
-            };
-            let slope = g[0] * step[0] + g[1] * step[1];
-            if slope >= 0.0 || slope.is_nan() {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            }
-            let mut t = 1.0;
-            let mut accepted = None;
-            for _ in 0..=MAX_HALVINGS {
-                let trial = [u[0] + t * step[0], u[1] + t * step[1]];
-                let next = self.local(trial);
-                // Armijo on Π; near the minimum Π's decrease (∝ residual²) sinks below its
-                // round-off, and a step that shrinks the force residual is taken instead.
-                let decreases = next.energy <= here.energy + 1e-4 * t * slope;
-                let balances = self.residual(next.gradient) <= (1.0 - 1e-4 * t) * residual;
-                if decreases || balances {
-                    accepted = Some((trial, next));
-                    break;
-                }
-                t *= 0.5;
-            }
-            let Some((trial, next)) = accepted else {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            };
-            u = trial;
-            here = next;
-            residual = self.residual(here.gradient);
-            if !residual.is_finite() {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            }
-        }
-        if residual <= TOLERANCE {
-            return Ok((
-                u,
-                report("newton_energy_line_search", MAX_ITERATIONS, residual),
-            ));
-        }
-        Err(CalcError::NotConverged {
-            method: "newton_energy_line_search",
-            iterations: MAX_ITERATIONS,
-            residual,
-        })
-    }
-
-    fn balls(&self, u: [f64; 2]) -> Vec<Ball> {
-        self.cosines
-            .iter()
-            .map(|&c| {
-                let delta = self.signed_deflection(u, c).max(0.0);
-                let angle = match self.law {
-                    Law::Varying { r0 } => u[1].atan2(r0 + u[0] * c),
-                    Law::Fixed { sin, cos, .. } => sin.atan2(cos),
-                };
-                Ball {
-                    load: self.k_n * delta * delta.sqrt(),
-                    angle,
-                }
-            })
-            .collect()
-    }
-
-    /// The curvature centres of a ball must stay on their own sides: r₀ + δ_r cos ψ > 0.
-    fn check_geometry(&self, u: [f64; 2]) -> Result<(), CalcError> {
-        if let Law::Varying { r0 } = self.law {
-            if u[0] >= r0 {
-                return Err(CalcError::impossible(
-                    "/radial_load_n",
-                    format!(
-                        "the radial displacement {:.4e} m would carry the raceway curvature centres past each other (r₀ = {r0:.4e} m): a load this large is far beyond the bearing's static capacity and the rigid-ring Hertz model",
-                        u[0]
-                    ),
-                ));
-            }
-        }
-        Ok(())
-    }
-
-    /// δ_a of the report: from a₀ in `varying` mode (u_a is the curvature centres' offset).
-    fn axial_displacement(&self, u: [f64; 2]) -> f64 {
-        match self.law {
-            Law::Varying { .. } => u[1] - self.a0,
-            Law::Fixed { .. } => u[1],
-        }
-    }
-
-    /// ψ_l where δ(ψ) = 0 on the continuous circle, rad, within [0, π]: varying,
-    /// (r₀ + δ_r cos ψ_l)² = B²D² − u_a²; fixed, A₀ + δ_a sin α + δ_r cos α cos ψ_l = BD.
-    fn load_zone_half_angle(&self, u: [f64; 2]) -> f64 {
-        let (d0, d_pi) = (
-            self.signed_deflection(u, 1.0),
-            self.signed_deflection(u, -1.0),
-        );
-        if d_pi >= 0.0 {
-            return std::f64::consts::PI;
-        }
-        if d0 <= 0.0 {
-            return 0.0;
-        }
-        // Here δ changes sign between ψ = 0 and π, so δ_r > 0 and, varying, |u_a| < BD.
-        let c = match self.law {
-            Law::Varying { r0 } => ((self.bd - u[1]) * (self.bd + u[1])).sqrt() - r0,
-            Law::Fixed { a0, sin, .. } => self.bd - a0 - u[1] * sin,
-        } / (u[0] * self.radial_projection());
-        c.clamp(-1.0, 1.0).acos()
-    }
-
-    /// cos α of the fixed law's radial term (1 for the varying law, whose cos ψ multiplies δ_r).
-    fn radial_projection(&self) -> f64 {
-        match self.law {
-            Law::Varying { .. } => 1.0,
-            Law::Fixed { cos, .. } => cos,
-        }
-    }
-}
-
-fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
-    SolverReport {
-        method: method.to_owned(),
-        fidelity: Level::Standard,
-        grid: None,
-        iterations,
-        iterations_unit: if method.starts_with("newton") {
-            IterationUnit::NewtonSteps
-        } else {
-            IterationUnit::RootSearchSteps
-        },
-        evaluations: None,
-        stop_reason: StopReason::Converged,
-        residual: Some(residual),
-        error_estimate: None,
-        elapsed_ms: 0.0,
-    }
-}
-
-/// The one-dimensional load balance: `force` is negative (or zero) at 0 and turns positive as the
-/// ring is pushed in; `hi` is doubled (at most 200 times) until it does, then Brent's method
-/// finds the root. `method` names the solve in a not-converged answer.
-pub(super) fn load_balance_root(
-    mut force: impl FnMut(f64) -> f64,
-    mut hi: f64,
-    method: &'static str,
-    ctx: &Context,
-) -> Result<Root, CalcError> {
-    let mut grown = 0;
-    while force(hi) <= 0.0 {
-        hi *= 2.0;
-        grown += 1;
-        if grown > 200 || !hi.is_finite() {
-            return Err(CalcError::Internal(format!("{method}: no bracket")));
-        }
-    }
-    ctx.check_deadline()?;
-    let stop = Stopping {
-        x_tolerance: 0.0,
-        max_iterations: MAX_BRENT_ITERATIONS,
-    };
-    brent(force, 0.0, hi, stop).map_err(|e| match e {
-        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-            method,
-            iterations,
-            residual: width,
-        },
-        other => CalcError::Internal(format!("{method} bracket: {other:?}")),
-    })
-}
-
 #[cfg(test)]
-mod tests {
-    use super::*;
-    use crate::calc::Failure;
-    use proptest::prelude::*;
-    use serde_json::{json, Value};
-
-    fn post(request: &Value) -> Result<Value, Failure> {
-        crate::calc::testing::post::<LoadDistribution>(request)
-    }
-
-    fn ok(request: &Value) -> Value {
-        crate::calc::testing::ok::<LoadDistribution>(request)
-    }
-
-    fn get(v: &Value, pointer: &str) -> f64 {
-        v.pointer(pointer)
-            .and_then(Value::as_f64)
-            .unwrap_or_else(|| panic!("{pointer} missing in {v}"))
-    }
-
-    fn assert_rel(got: f64, want: f64, tol: f64, what: &str) {
-        assert!(
-            ((got - want) / want).abs() <= tol,
-            "{what}: got {got}, want {want} ±{tol}"
-        );
-    }
-
-    fn steel(e: f64) -> Value {
-        json!({"elastic_modulus_pa": e, "poisson_ratio": 0.3})
-    }
-
-    /// A ball bearing, lengths in mm.
-    fn bearing(d: f64, dm: f64, z: u32, f: f64, clearance_mm: f64, e: f64) -> Value {
-        json!({
-            "ball_diameter_m": d * 1e-3, "pitch_diameter_m": dm * 1e-3, "ball_count": z,
-            "inner_groove_radius_m": f * d * 1e-3, "outer_groove_radius_m": f * d * 1e-3,
-            "diametral_clearance_m": clearance_mm * 1e-3, "ball": steel(e), "rings": steel(e)
-        })
-    }
-
-    /// Khonsari & Booser Ex 14.1: 6210, D = 12.7 mm, d_m = 70 mm, Z = 10, r = 6.6 mm,
-    /// P_d = 0.018 mm, E′ = 219 GPa.
-    fn bearing_6210(clearance_mm: f64) -> Value {
-        let mut b = bearing(12.7, 70.0, 10, 0.52, clearance_mm, 2.19e11 * 0.91);
-        b["inner_groove_radius_m"] = json!(6.6e-3);
-        b["outer_groove_radius_m"] = json!(6.6e-3);
-        b
-    }
-
-    fn request(bearing: Value, f_r: f64, f_a: f64, mode: &str) -> Value {
-        json!({"bearing": bearing, "radial_load_n": f_r, "axial_load_n": f_a, "contact_angle_mode": mode})
-    }
-
-    /// Σ Q cos α cos ψ and Σ Q sin α from the reported ball loads.
-    fn resultant(v: &Value) -> (f64, f64) {
-        let balls = v["result"]["ball_loads"].as_array().unwrap();
-        balls.iter().fold((0.0, 0.0), |(r, a), b| {
-            let q = b["load_n"].as_f64().unwrap();
-            let alpha = b["contact_angle_deg"].as_f64().unwrap().to_radians();
-            let psi = b["azimuth_deg"].as_f64().unwrap().to_radians();
-            (r + q * alpha.cos() * psi.cos(), a + q * alpha.sin())
-        })
-    }
-
-    fn loads(v: &Value) -> Vec<f64> {
-        v["result"]["ball_loads"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|b| b["load_n"].as_f64().unwrap())
-            .collect()
-    }
-
-    #[test]
-    fn zero_clearance_radial_load_gives_stribecks_constant() {
-        // Spec §2.4: Z/Σ(Q_j/Q_max) cos ψ_j = Z/Σ cos^{5/2} ψ_j over the loaded half.
-        for (z, want) in [
-            (8, 4.346),
-            (10, 4.379),
-            (12, 4.364),
-            (16, 4.368),
-            (20, 4.369),
-        ] {
-            let dm = 12.7 * z as f64 / 1.5;
-            for mode in ["varying", "fixed"] {
-                let v = ok(&request(
-                    bearing(12.7, dm, z, 0.52, 0.0, 2.08e11),
-                    5000.0,
-                    0.0,
-                    mode,
-                ));
-                let factor = get(&v, "/result/max_ball_load_n") * z as f64 / 5000.0;
-                assert!((factor - want).abs() < 6e-4, "Z {z} {mode}: {factor}");
-                assert_rel(get(&v, "/result/load_zone_factor"), 0.5, 1e-12, "ε");
-                assert_rel(
-                    get(&v, "/result/load_zone_half_angle_deg"),
-                    90.0,
-                    1e-12,
-                    "ψ_l",
-                );
-            }
-        }
-    }
-
-    #[test]
-    fn pure_axial_load_is_shared_equally() {
-        // Q = F_a/(Z sin α): at the free angle (fixed) or at the loaded angle (varying).
-        let mut b = bearing(23.81, 140.0, 16, 0.52, 0.0, 2.08e11);
-        b["free_contact_angle_deg"] = json!(40.0);
-        let fixed = ok(&request(b.clone(), 0.0, 24000.0, "fixed"));
-        for q in loads(&fixed) {
-            assert_rel(
-                q,
-                24000.0 / (16.0 * 40f64.to_radians().sin()),
-                1e-12,
-                "fixed Q",
-            );
-        }
-        assert!(fixed["result"].get("load_zone_factor").is_none());
-        assert_eq!(get(&fixed, "/result/load_zone_half_angle_deg"), 180.0);
-        let varying = ok(&request(b, 0.0, 24000.0, "varying"));
-        let alpha = get(&varying, "/result/ball_loads/0/contact_angle_deg");
-        assert!(
-            alpha > 40.0,
-            "the contact angle grows under thrust: {alpha}"
-        );
-        for q in loads(&varying) {
-            assert_rel(
-                q,
-                24000.0 / (16.0 * alpha.to_radians().sin()),
-                1e-12,
-                "varying Q",
-            );
-        }
-        // A deep-groove bearing with clearance carries thrust at angles above its free angle.
-        let v = ok(&request(bearing_6210(0.018), 0.0, 2000.0, "varying"));
-        let alpha = get(&v, "/result/ball_loads/3/contact_angle_deg");
-        assert!(alpha > get(&v, "/result/free_contact_angle_deg"));
-        assert_rel(
-            get(&v, "/result/max_ball_load_n"),
-            2000.0 / (10.0 * alpha.to_radians().sin()),
-            1e-12,
-            "Q",
-        );
-    }
-
-    #[test]
-    fn hamrock_deep_groove_example() {
-        // Spec A-R3: d_i = 52.291, d_o = 77.706, d = 12.7 mm, n = 9, r = 6.604 mm, P_d = 15 µm,
-        // E = 200 GPa, ν = 0.3, F_r = 8900 N. The handbook's Stribeck iteration (continuous
-        // integral, the older Hamrock–Dowson fits) converges to Z = 4.564, F_max = 4513 N; the
-        // same integral with exact Hertz gives 4515.5 N. The nine balls summed discretely carry
-        // 0.16 % more: 4522.6 N.
-        let mut b = bearing(12.7, 64.9985, 9, 0.52, 0.015, 2e11);
-        b["inner_groove_radius_m"] = json!(6.604e-3);
-        b["outer_groove_radius_m"] = json!(6.604e-3);
-        let v = ok(&request(b, 8900.0, 0.0, "varying"));
-        let q = get(&v, "/result/max_ball_load_n");
-        assert_rel(q, 4513.0, 3e-3, "F_max vs the handbook");
-        assert_rel(q, 4522.6, 2e-4, "F_max, discrete sum");
-        assert_rel(9.0 * q / 8900.0, 4.564, 3e-3, "Stribeck Z");
-        // Derived in the spec: β_f = 9.858°, P_e = 0.1739 mm; the contact angles fall to 0.
-        assert_rel(
-            get(&v, "/result/free_contact_angle_deg"),
-            9.858,
-            1e-3,
-            "β_f",
-        );
-        assert_rel(get(&v, "/result/end_play_m"), 1.739e-4, 2e-3, "P_e");
-        assert_eq!(get(&v, "/result/ball_loads/0/contact_angle_deg"), 0.0);
-        // δ = δ_i + δ_o at the most loaded ball: 5.438e-5 m printed (within 1 % exact).
-        let approach = get(&v, "/result/inner_contact/approach_m")
-            + get(&v, "/result/outer_contact/approach_m");
-        assert_rel(approach, 5.438e-5, 0.01, "δ");
-        assert_rel(
-            approach,
-            get(&v, "/result/radial_displacement_m") - 7.5e-6,
-            2e-3,
-            "δ = δ_r − P_d/2",
-        );
-    }
-
-    #[test]
-    fn khonsari_6210_chain() {
-        // Ex 14.1: end play P_e = 0.1889 mm (f = 6.6/12.7). Ex 14.2 (corrected, exact):
-        // Q = 1500 N gives inner/outer p = 2063/1747 MPa, a = 1.794/1.744 mm,
-        // b = 0.1935/0.2351 mm, δ = 0.01320/0.01276 mm; Hertz scales p, a, b ∝ Q^⅓, δ ∝ Q^⅔,
-        // checked here at the discrete equilibrium's Q_max under F_r = 3000 N.
-        let v = ok(&request(bearing_6210(0.018), 3000.0, 0.0, "varying"));
-        assert_rel(get(&v, "/result/end_play_m"), 0.1889e-3, 1e-3, "P_e");
-        let q = get(&v, "/result/max_ball_load_n");
-        // Between Stribeck's 4.37 F_r/Z (no clearance) and the classic design rule 5 F_r/Z.
-        assert!(q > 4.37 * 300.0 && q < 5.0 * 300.0, "Q_max = {q}");
-        let s = (q / 1500.0).cbrt();
-        for (race, p, a, b, delta) in [
-            ("inner", 2063e6, 1.794e-3, 0.1935e-3, 0.01320e-3),
-            ("outer", 1747e6, 1.744e-3, 0.2351e-3, 0.01276e-3),
-        ] {
-            let c = |f: &str| get(&v, &format!("/result/{race}_contact/{f}"));
-            assert_rel(c("max_pressure_pa"), p * s, 2e-3, race);
-            assert_rel(c("semi_major_axis_m"), a * s, 2e-3, race);
-            assert_rel(c("semi_minor_axis_m"), b * s, 2e-3, race);
-            assert_rel(c("approach_m"), delta * s * s, 2e-3, race);
-        }
-        // Clearance: ε = ½(1 − P_d/(2δ_r)) < ½.
-        let eps = get(&v, "/result/load_zone_factor");
-        let d_r = get(&v, "/result/radial_displacement_m");
-        assert_rel(eps, 0.5 * (1.0 - 0.018e-3 / (2.0 * d_r)), 1e-9, "ε");
-    }
-
-    /// Ex 14.5: 7220, F_r = 20 000 N, F_a = 24 000 N, Z = 16, α = 40° constant (D = 23.81 mm,
-    /// d_m = 140 mm from Ex 15.2; the groove radii do not enter at a fixed angle).
-    fn bearing_7220() -> Value {
-        let mut b = bearing(23.81, 140.0, 16, 0.52, 0.0, 2.08e11);
-        b["free_contact_angle_deg"] = json!(40.0);
-        b
-    }
-
-    #[test]
-    fn khonsari_7220_combined_load() {
-        let v = ok(&request(bearing_7220(), 20000.0, 24000.0, "fixed"));
-        assert_rel(get(&v, "/result/max_ball_load_n"), 6374.0, 5e-3, "Q_max");
-        assert_rel(get(&v, "/result/load_zone_factor"), 0.799, 5e-3, "ε");
-        let q = loads(&v);
-        for (j, want) in [5924.0, 4704.0, 3064.0, 1459.0, 315.0].iter().enumerate() {
-            let tol = if j == 4 { 0.03 } else { 0.01 };
-            assert_rel(q[j + 1], *want, tol, &format!("Q_{}", j + 1));
-            assert_rel(q[15 - j], q[j + 1], 1e-9, "symmetry");
-        }
-        assert!(q[6..=10].iter().all(|&x| x == 0.0));
-        // Ball loads follow Q_max [1 − (1 − cos ψ)/(2ε)]^{3/2} exactly at a fixed angle.
-        let eps = get(&v, "/result/load_zone_factor");
-        let psi = 2.0 * std::f64::consts::PI / 16.0;
-        assert_rel(
-            q[2],
-            q[0] * (1.0 - (1.0 - (2.0 * psi).cos()) / (2.0 * eps)).powf(1.5),
-            1e-9,
-            "Q(ψ)",
-        );
-        // Varying angles: the radial displacement tilts the curvature-centre lines, below 40° on
-        // the load line and above it opposite; at these small deflections Q_max moves by < 1 %.
-        let varying = ok(&request(bearing_7220(), 20000.0, 24000.0, "varying"));
-        assert!(get(&varying, "/result/ball_loads/0/contact_angle_deg") < 40.0);
-        assert!(get(&varying, "/result/ball_loads/8/contact_angle_deg") > 40.0);
-        assert_rel(
-            get(&varying, "/result/max_ball_load_n"),
-            q[0],
-            0.01,
-            "varying Q_max",
-        );
-    }
-
-    #[test]
-    fn a_preloaded_bearing_at_rest_loads_every_ball() {
-        let v = ok(&request(bearing_6210(-0.01), 0.0, 0.0, "varying"));
-        let q = loads(&v);
-        assert!(q.iter().all(|&x| x > 0.0 && (x - q[0]).abs() < 1e-9 * q[0]));
-        assert_eq!(get(&v, "/result/loaded_ball_count"), 10.0);
-        assert_eq!(get(&v, "/result/radial_displacement_m"), 0.0);
-        assert_eq!(get(&v, "/result/end_play_m"), 0.0);
-        let k = get(&v, "/result/contact_stiffness_n_m1_5");
-        assert_rel(q[0], k * 5e-6f64.powf(1.5), 1e-12, "Q = K (−P_d/2)^1.5");
-        // Under load the preload keeps every ball loaded.
-        let v = ok(&request(bearing_6210(-0.01), 500.0, 0.0, "varying"));
-        assert_eq!(get(&v, "/result/loaded_ball_count"), 10.0);
-        assert!(get(&v, "/result/load_zone_factor") > 1.0);
-        assert_eq!(get(&v, "/result/load_zone_half_angle_deg"), 180.0);
-    }
-
-    #[test]
-    fn a_light_radial_load_with_clearance_loads_one_ball() {
-        let v = ok(&request(bearing_6210(0.018), 1.0, 0.0, "varying"));
-        assert_eq!(get(&v, "/result/loaded_ball_count"), 1.0);
-        assert_rel(get(&v, "/result/max_ball_load_n"), 1.0, 1e-9, "Q = F_r");
-        // Combined, in both modes: a heavy thrust with a light radial load loads every ball.
-        for mode in ["varying", "fixed"] {
-            let v = ok(&request(bearing_7220(), 100.0, 50000.0, mode));
-            assert_eq!(get(&v, "/result/loaded_ball_count"), 16.0, "{mode}");
-            assert!(get(&v, "/result/load_zone_factor") > 1.0);
-        }
-    }
-
-    #[test]
-    fn loads_over_five_decades_converge() {
-        for mode in ["varying", "fixed"] {
-            for f in [1.0, 10.0, 100.0, 1e3, 1e4, 1e5] {
-                for (f_r, f_a) in [(f, 0.0), (0.0, f), (f, f), (f, 3.0 * f)] {
-                    if mode == "fixed" && f_a < f_r {
-                        continue;
-                    }
-                    let b = if mode == "fixed" {
-                        bearing_7220()
-                    } else {
-                        bearing_6210(0.018)
-                    };
-                    let v = ok(&request(b, f_r, f_a, mode));
-                    let (r, a) = resultant(&v);
-                    let scale = f_r.hypot(f_a);
-                    assert!(
-                        (r - f_r).hypot(a - f_a) <= 1e-9 * scale,
-                        "{mode} {f_r} {f_a}: {r} {a}"
-                    );
-                    assert!(get(&v, "/solver/residual") <= 1e-9);
-                }
-            }
-        }
-    }
-
-    #[test]
-    fn effects_are_reported_not_modelled() {
-        let v = ok(&request(bearing_6210(0.018), 3000.0, 500.0, "varying"));
-        for effect in ["centrifugal", "gyroscopic"] {
-            assert_eq!(v["effects"][effect]["applied"], false);
-        }
-    }
-
-    #[test]
-    fn a_heavy_load_warns_of_the_static_capacity() {
-        let v = ok(&request(bearing_6210(0.018), 60000.0, 0.0, "varying"));
-        assert!(v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w["code"] == "static_capacity_exceeded"));
-    }
-
-    fn pointer_of(request: &Value) -> String {
-        match post(request) {
-            Err(Failure::Invalid(errors)) => errors[0].pointer.clone(),
-            Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => pointer,
-            other => panic!("{request}: expected 422, got {other:?}"),
-        }
-    }
-
-    #[test]
-    fn bad_input_is_refused_with_its_pointer() {
-        let with = |field: &str, value: Value| {
-            let mut b = bearing_6210(0.018);
-            b[field] = value;
-            request(b, 1000.0, 0.0, "varying")
-        };
-        let rows: Vec<(Value, &str, &str)> = vec![
-            (
-                with("inner_groove_radius_m", json!(6.0e-3)),
-                "/bearing/inner_groove_radius_m",
-                "groove tighter than the ball",
-            ),
-            (
-                with("outer_groove_radius_m", json!(6.35e-3)),
-                "/bearing/outer_groove_radius_m",
-                "osculating groove",
-            ),
-            (
-                with("ball_count", json!(40)),
-                "/bearing/ball_count",
-                "balls overlap",
-            ),
-            (
-                with("ball_count", json!(2)),
-                "/bearing/ball_count",
-                "two balls",
-            ),
-            (
-                with("pitch_diameter_m", json!(0.01)),
-                "/bearing/ball_count",
-                "pitch below the ball",
-            ),
-            (
-                with("diametral_clearance_m", json!(-0.001)),
-                "/bearing/diametral_clearance_m",
-                "interference beyond 1 % D",
-            ),
-            (
-                with("diametral_clearance_m", json!(0.002)),
-                "/bearing/diametral_clearance_m",
-                "free angle beyond 80°",
-            ),
-            (
-                with("free_contact_angle_deg", json!(85.0)),
-                "/bearing/free_contact_angle_deg",
-                "thrust angle",
-            ),
-            (
-                with(
-                    "ball",
-                    json!({"elastic_modulus_pa": 0.0, "poisson_ratio": 0.3}),
-                ),
-                "/bearing/ball/elastic_modulus_pa",
-                "E = 0",
-            ),
-            (
-                with(
-                    "rings",
-                    json!({"elastic_modulus_pa": 2e11, "poisson_ratio": 0.6}),
-                ),
-                "/bearing/rings/poisson_ratio",
-                "ν > 0.5",
-            ),
-            (
-                with(
-                    "rings",
-                    json!({"elastic_modulus_pa": 2e14, "poisson_ratio": 0.3}),
-                ),
-                "/bearing/rings/elastic_modulus_pa",
-                "E beyond 1e13",
-            ),
-            (
-                request(bearing_6210(0.018), -1.0, 0.0, "varying"),
-                "/radial_load_n",
-                "negative load",
-            ),
-            (
-                request(bearing_6210(0.018), 0.0, 0.0, "varying"),
-                "/radial_load_n",
-                "no load, no preload",
-            ),
-            (
-                request(bearing_6210(0.018), 2e9, 0.0, "varying"),
-                "/radial_load_n",
-                "load beyond 1e9",
-            ),
-            (
-                json!({"bearing": bearing_6210(0.018), "radial_lood_n": 1.0, "axial_load_n": 0.0}),
-                "/radial_lood_n",
-                "typo",
-            ),
-            (
-                request(bearing_6210(0.018), 1000.0, 0.0, "fixed"),
-                "/axial_load_n",
-                "fixed angle, pure radial, α_f > 0",
-            ),
-            (
-                request(bearing_6210(0.0), 1000.0, 100.0, "fixed"),
-                "/axial_load_n",
-                "fixed angle 0 with thrust",
-            ),
-            (
-                request(bearing_7220(), 20000.0, 10000.0, "fixed"),
-                "/axial_load_n",
-                "F_a < F_r tan α",
-            ),
-        ];
-        for (request, pointer, why) in rows {
-            assert_eq!(pointer_of(&request), pointer, "{why}");
-        }
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(48))]
-
-        #[test]
-        fn equilibrium_holds_and_outputs_are_finite(
-            log_fr in -1.0f64..4.5,
-            log_ratio in -3.0f64..2.0,
-            clearance_um in -8.0f64..40.0,
-            z in 6u32..20,
-            angle in prop_oneof![Just(None), (5.0f64..45.0).prop_map(Some)],
-            fixed in any::<bool>(),
-        ) {
-            let f_r = 10f64.powf(log_fr);
-            let f_a = f_r * 10f64.powf(log_ratio);
-            let mut b = bearing(10.0, 10.0 * z as f64 / 2.0, z, 0.52, clearance_um * 1e-3, 2.08e11);
-            if let Some(a) = angle {
-                b["free_contact_angle_deg"] = json!(a);
-            }
-            let mode = if fixed { "fixed" } else { "varying" };
-            let v = match post(&request(b, f_r, f_a, mode)) {
-                Ok(v) => v,
-                // The fixed-angle existence condition, and only that, may refuse.
-                Err(Failure::Calc(CalcError::Impossible { pointer, .. })) if fixed => {
-                    prop_assert_eq!(pointer, "/axial_load_n");
-                    return Ok(());
-                }
-                Err(e) => panic!("{e:?}"),
-            };
-            let (r, a) = resultant(&v);
-            // The solver's load scale: max(|F|, Z Q₀); a preloaded bearing's ball loads bound Z Q₀.
-            let scale = f_r.hypot(f_a).max(loads(&v).iter().sum::<f64>());
-            prop_assert!((r - f_r).hypot(a - f_a) <= 1e-9 * scale, "{} {}: {} {}", f_r, f_a, r, a);
-            for p in ["/result/max_ball_load_n", "/result/radial_displacement_m", "/result/axial_displacement_m",
-                      "/result/load_zone_half_angle_deg", "/result/inner_contact/max_pressure_pa",
-                      "/result/outer_contact/approach_m", "/solver/residual"] {
-                prop_assert!(get(&v, p).is_finite(), "{}", p);
-            }
-        }
-
-        #[test]
-        fn max_ball_load_grows_with_radial_load(log_fr in 0.0f64..4.0, f_a in 0.0f64..2000.0, clearance_um in 0.0f64..30.0) {
-            let f_r = 10f64.powf(log_fr);
-            let q = |f: f64| get(&ok(&request(bearing_6210(clearance_um * 1e-3), f, f_a, "varying")), "/result/max_ball_load_n");
-            prop_assert!(q(1.1 * f_r) > q(f_r));
-        }
-
-        #[test]
-        fn load_zone_grows_with_axial_over_radial_load(log_ratio in -2.0f64..1.0, fixed in any::<bool>()) {
-            let f_r = 5000.0;
-            let (b, mode, base) = if fixed {
-                (bearing_7220(), "fixed", 5000.0 * 40f64.to_radians().tan())
-            } else {
-                (bearing_6210(0.018), "varying", 0.0)
-            };
-            let f_a = base + f_r * 10f64.powf(log_ratio);
-            let eps = |f: f64| get(&ok(&request(b.clone(), f_r, f, mode)), "/result/load_zone_factor");
-            prop_assert!(eps(1.2 * f_a) > eps(f_a));
-        }
-    }
-
-    /// The static safety factor is the cube of the pressure margin: at the load that brings the
-    /// most loaded contact to 4200 MPa it is 1, and it scales as 1/Q_max (p ∝ Q^⅓).
-    #[test]
-    fn static_safety_factor_is_the_cubed_pressure_margin() {
-        let example: Value = serde_json::from_str(LoadDistribution::EXAMPLE).unwrap();
-        let v = ok(&example);
-        let p = get(&v, "/result/inner_contact/max_pressure_pa")
-            .max(get(&v, "/result/outer_contact/max_pressure_pa"));
-        let s0 = get(&v, "/result/static_safety_factor");
-        assert!((s0 - (STATIC_LIMIT_PA / p).powi(3)).abs() < 1e-9 * s0);
-        assert!(s0 > 1.0);
-    }
-
-    /// ℜ = d_m/2 + (f_i − ½)D cos α_f of a result.
-    fn arm(v: &Value, b: &Value) -> f64 {
-        let d = b["ball_diameter_m"].as_f64().unwrap();
-        let f_i = b["inner_groove_radius_m"].as_f64().unwrap() / d;
-        let alpha = get(v, "/result/free_contact_angle_deg").to_radians();
-        0.5 * b["pitch_diameter_m"].as_f64().unwrap() + (f_i - 0.5) * d * alpha.cos()
-    }
-
-    /// Σ Q_j sin α_j ℜ cos ψ_j of a result.
-    fn moment_of(v: &Value, b: &Value) -> f64 {
-        let arm = arm(v, b);
-        v["result"]["ball_loads"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|x| {
-                let q = x["load_n"].as_f64().unwrap();
-                let alpha = x["contact_angle_deg"].as_f64().unwrap().to_radians();
-                let psi = x["azimuth_deg"].as_f64().unwrap().to_radians();
-                q * alpha.sin() * arm * psi.cos()
-            })
-            .sum()
-    }
-
-    /// The zero-moment limit: a ring held square takes the moment M* of its balls; given
-    /// M = M*, the free ring does not tilt and every ball load is the held ring's. Under pure
-    /// radial load on a deep-groove bearing M* = 0, so M = 0 gives the classic result.
-    #[test]
-    fn the_free_ring_under_the_held_rings_moment_does_not_tilt() {
-        for (b, f_r, f_a, mode) in [
-            (bearing_6210(0.018), 3000.0, 0.0, "varying"),
-            (bearing_6210(0.018), 3000.0, 1000.0, "varying"),
-            (bearing_7220(), 20000.0, 24000.0, "varying"),
-            (bearing_6210(-0.01), 500.0, 300.0, "varying"),
-        ] {
-            let held = ok(&request(b.clone(), f_r, f_a, mode));
-            let m = get(&held, "/result/tilting_moment_n_m");
-            assert!((m - moment_of(&held, &b)).abs() <= 1e-12 * f_r.hypot(f_a) * arm(&held, &b));
-            if f_a == 0.0 {
-                assert!(m.abs() <= 1e-12 * f_r, "{m}");
-            }
-            let mut r = request(b.clone(), f_r, f_a, mode);
-            r["moment_n_m"] = json!(m);
-            let free = ok(&r);
-            let scale = f_r.hypot(f_a).max(loads(&held).iter().sum::<f64>());
-            assert!(
-                get(&free, "/result/tilt_rad").abs() * arm(&free, &b)
-                    < 1e-7 * get(&held, "/result/radial_displacement_m").abs().max(1e-9),
-                "{mode} tilt"
-            );
-            for (q, p) in loads(&free).iter().zip(loads(&held)) {
-                assert!((q - p).abs() <= 1e-7 * scale, "{mode}: {q} vs {p}");
-            }
-            assert_rel(
-                get(&free, "/result/radial_displacement_m"),
-                get(&held, "/result/radial_displacement_m"),
-                1e-6,
-                "δ_r",
-            );
-        }
-    }
-
-    /// A tilting moment: forces and moment balance to 1e-9 and the ring tilts with M.
-    #[test]
-    fn a_tilting_moment_is_balanced() {
-        for (b, f_r, f_a, m, mode) in [
-            (bearing_6210(0.018), 3000.0, 1000.0, 40.0f64, "varying"),
-            (bearing_6210(0.018), 0.0, 0.0, 30.0, "varying"),
-            (bearing_6210(0.0), 2000.0, 0.0, -25.0, "varying"),
-            (bearing_7220(), 5000.0, 24000.0, -800.0, "varying"),
-        ] {
-            let mut r = request(b.clone(), f_r, f_a, mode);
-            r["moment_n_m"] = json!(m);
-            let v = ok(&r);
-            let (fr, fa) = resultant(&v);
-            let scale = f_r.hypot(f_a).max(m.abs() / arm(&v, &b));
-            assert!((fr - f_r).hypot(fa - f_a) <= 1e-9 * scale, "{fr} {fa}");
-            assert!((moment_of(&v, &b) - m).abs() <= 1e-9 * scale * arm(&v, &b));
-            assert_rel(get(&v, "/result/tilting_moment_n_m"), m, 1e-8, "M");
-            assert!(get(&v, "/result/tilt_rad") * m > 0.0, "tilt along M");
-            assert!(get(&v, "/solver/residual") <= 1e-9);
-        }
-        // A fixed angle ties the moment to the radial load: no free tilt.
-        let mut r = request(bearing_7220(), 20000.0, 24000.0, "fixed");
-        r["moment_n_m"] = json!(0.0);
-        assert_eq!(pointer_of(&r), "/moment_n_m");
-    }
-
-    fn at_speed(b: Value, f_r: f64, f_a: f64, rpm: f64, effects: Value) -> Value {
-        let mut r = request(b, f_r, f_a, "varying");
-        r["inner_ring_speed_rpm"] = json!(rpm);
-        r["effects"] = effects;
-        r
-    }
-
-    /// Per ball: Q_i n_i − Q_o n_o + F_c r̂ + f τ = 0 (axial, radial), n = (sin α, cos α),
-    /// τ = (−cos α_o, sin α_o); the largest residual over the balls.
-    fn ball_imbalance(v: &Value) -> f64 {
-        let f_c = get(v, "/result/centrifugal_force_n");
-        v["result"]["ball_loads"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|x| {
-                let qi = x["load_n"].as_f64().unwrap();
-                let ai = x["contact_angle_deg"].as_f64().unwrap().to_radians();
-                let qo = x["outer_load_n"].as_f64().unwrap();
-                let ao = x["outer_contact_angle_deg"].as_f64().unwrap().to_radians();
-                let f = x["gyroscopic_friction_n"].as_f64().unwrap_or(0.0);
-                let axial = qi * ai.sin() - qo * ao.sin() - f * ao.cos();
-                let radial = qi * ai.cos() - qo * ao.cos() + f_c + f * ao.sin();
-                axial.hypot(radial)
-            })
-            .fold(0.0, f64::max)
-    }
-
-    /// Centrifugal force on a deep-groove bearing under radial load: the contacts stay
-    /// collinear (α = 0), so every loaded ball has Q_o = Q_i + F_c and the balls outside the load
-    /// zone press the outer race with F_c alone; ring and balls balance to 1e-9.
-    #[test]
-    fn centrifugal_force_loads_the_outer_contacts() {
-        let v = ok(&at_speed(
-            bearing_6210(0.018),
-            3000.0,
-            0.0,
-            20000.0,
-            json!({"centrifugal": "on"}),
-        ));
-        assert_eq!(v["effects"]["centrifugal"]["applied"], true);
-        let f_c = get(&v, "/result/centrifugal_force_n");
-        // F_c = ½ m d_m ω_m², steel 7800 kg/m³, cage at ½(1 − D cos α_f/d_m) of 20 000 rpm.
-        let m = 7800.0 * std::f64::consts::PI * 0.0127f64.powi(3) / 6.0;
-        let cos = get(&v, "/result/free_contact_angle_deg").to_radians().cos();
-        let cage = 0.5 * (1.0 - 12.7 * cos / 70.0) * 20000.0 * std::f64::consts::TAU / 60.0;
-        assert_rel(f_c, 0.5 * m * 0.07 * cage * cage, 1e-12, "F_c");
-        for x in v["result"]["ball_loads"].as_array().unwrap() {
-            let (qi, qo) = (
-                x["load_n"].as_f64().unwrap(),
-                x["outer_load_n"].as_f64().unwrap(),
-            );
-            assert!((qo - qi - f_c).abs() <= 1e-9 * 3000.0, "{qi} {qo}");
-        }
-        assert!(get(&v, "/result/max_outer_ball_load_n") > get(&v, "/result/max_ball_load_n"));
-        let (fr, fa) = resultant(&v);
-        assert!((fr - 3000.0).hypot(fa) <= 1e-9 * 3000.0);
-        assert!(ball_imbalance(&v) <= 1e-9 * 3000.0);
-        assert!(v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .any(|w| w["code"] == "ball_density_assumed"));
-    }
-
-    /// An angular-contact bearing at speed: the centrifugal force turns the outer contact
-    /// angle below the inner one (Harris's high-speed result), everything balances, and the
-    /// gyroscopic friction closes each ball's balance.
-    #[test]
-    fn angular_contact_at_speed_parts_the_contact_angles() {
-        let mut b = bearing_7220();
-        b["inner_groove_radius_m"] = json!(0.52 * 23.81e-3);
-        b["outer_groove_radius_m"] = json!(0.53 * 23.81e-3);
-        b["ball"]["density_kg_m3"] = json!(7800.0);
-        for effects in [
-            json!({"centrifugal": "on", "gyroscopic": "off"}),
-            json!({"centrifugal": "on", "gyroscopic": "on"}),
-        ] {
-            let v = ok(&at_speed(
-                b.clone(),
-                5000.0,
-                20000.0,
-                15000.0,
-                effects.clone(),
-            ));
-            let scale = 5000f64.hypot(20000.0);
-            let (fr, fa) = resultant(&v);
-            assert!(
-                (fr - 5000.0).hypot(fa - 20000.0) <= 1e-9 * scale,
-                "{effects}"
-            );
-            assert!(
-                ball_imbalance(&v) <= 1e-9 * scale,
-                "{effects}: {}",
-                ball_imbalance(&v)
-            );
-            for x in v["result"]["ball_loads"].as_array().unwrap() {
-                let (ai, ao) = (
-                    x["contact_angle_deg"].as_f64().unwrap(),
-                    x["outer_contact_angle_deg"].as_f64().unwrap(),
-                );
-                assert!(ao < ai, "{effects}: α_o {ao} ≥ α_i {ai}");
-                assert!(x["outer_load_n"].as_f64().unwrap() > x["load_n"].as_f64().unwrap());
-            }
-            if effects["gyroscopic"] == "on" {
-                assert_eq!(v["effects"]["gyroscopic"]["applied"], true);
-                // f D/2 = J ω_R ω_m sin β: of the order of the estimate at the free angle.
-                assert!(get(&v, "/result/max_gyroscopic_friction_n") > 0.0);
-            }
-        }
-    }
-
-    /// `auto` decides by F_c against 1 % of the mean ball load, and `off` is the classic result.
-    #[test]
-    fn centrifugal_auto_follows_its_criterion() {
-        let slow = ok(&at_speed(
-            bearing_6210(0.018),
-            3000.0,
-            0.0,
-            1000.0,
-            json!({}),
-        ));
-        assert_eq!(slow["effects"]["centrifugal"]["applied"], false);
-        let c = get(&slow, "/effects/centrifugal/criterion/value");
-        assert!(c > 0.0 && c < CENTRIFUGAL_THRESHOLD);
-        assert_eq!(
-            slow["result"],
-            ok(&request(bearing_6210(0.018), 3000.0, 0.0, "varying"))["result"]
-        );
-        let fast = ok(&at_speed(
-            bearing_6210(0.018),
-            3000.0,
-            0.0,
-            30000.0,
-            json!({}),
-        ));
-        assert_eq!(fast["effects"]["centrifugal"]["applied"], true);
-        // F_c ∝ n²: the criterion scales by 30².
-        assert_rel(
-            get(&fast, "/effects/centrifugal/criterion/value"),
-            900.0 * c,
-            1e-9,
-            "∝ n²",
-        );
-        let off = ok(&at_speed(
-            bearing_6210(0.018),
-            3000.0,
-            0.0,
-            30000.0,
-            json!({"centrifugal": "off"}),
-        ));
-        assert_eq!(off["result"], slow["result"]);
-        // A deep-groove bearing's gyroscopic moment vanishes with its contact angle.
-        assert_eq!(fast["effects"]["gyroscopic"]["applied"], false);
-        // Without a speed both are not applicable; a silicon-nitride ball needs its density.
-        let mut b = bearing_6210(0.018);
-        b["ball"] = json!({"elastic_modulus_pa": 3.1e11, "poisson_ratio": 0.26});
-        let v = ok(&at_speed(b.clone(), 3000.0, 0.0, 30000.0, json!({})));
-        assert_eq!(v["effects"]["centrifugal"]["applied"], false);
-        b["ball"]["density_kg_m3"] = json!(3200.0);
-        let v = ok(&at_speed(b, 3000.0, 0.0, 30000.0, json!({})));
-        assert_eq!(v["effects"]["centrifugal"]["applied"], true);
-    }
-
-    #[test]
-    fn speed_inputs_are_checked() {
-        let rows: Vec<(Value, &str)> = vec![
-            (
-                json!({"bearing": bearing_6210(0.018), "radial_load_n": 1.0, "axial_load_n": 0.0, "effects": {"centrifugal": "on"}}),
-                "/inner_ring_speed_rpm",
-            ),
-            (
-                at_speed(bearing_6210(0.018), 1.0, 0.0, 2e6, json!({})),
-                "/inner_ring_speed_rpm",
-            ),
-            (
-                at_speed(
-                    bearing_6210(0.018),
-                    1.0,
-                    0.0,
-                    1e4,
-                    json!({"centrifugal": "off", "gyroscopic": "on"}),
-                ),
-                "/effects/gyroscopic",
-            ),
-            (
-                at_speed(
-                    bearing_6210(0.018),
-                    1.0,
-                    0.0,
-                    1e4,
-                    json!({"centrifugl": "on"}),
-                ),
-                "/effects/centrifugl",
-            ),
-        ];
-        for (r, pointer) in rows {
-            assert_eq!(pointer_of(&r), pointer, "{r}");
-        }
-        let mut r = at_speed(
-            bearing_7220(),
-            1000.0,
-            20000.0,
-            1e4,
-            json!({"centrifugal": "on"}),
-        );
-        r["contact_angle_mode"] = json!("fixed");
-        assert_eq!(pointer_of(&r), "/contact_angle_mode");
-        let mut r = request(bearing_6210(0.018), 1.0, 0.0, "varying");
-        r["moment_n_m"] = json!(f64::MAX);
-        assert_eq!(pointer_of(&r), "/moment_n_m");
-        let mut b = bearing_6210(0.018);
-        b["ball"]["density_kg_m3"] = json!(1e6);
-        assert_eq!(
-            pointer_of(&request(b, 1.0, 0.0, "varying")),
-            "/bearing/ball/density_kg_m3"
-        );
-    }
-
-    proptest! {
-        #![proptest_config(ProptestConfig::with_cases(32))]
-
-        /// Moments, speeds and combined loads over decades: every balance to 1e-9, all finite.
-        #[test]
-        fn the_general_equilibrium_balances(
-            log_fr in 0.0f64..4.5,
-            log_ratio in -2.0f64..1.0,
-            moment_arm_ratio in -0.5f64..0.5,
-            rpm in prop_oneof![Just(0.0), 1000.0f64..40000.0],
-            clearance_um in -5.0f64..30.0,
-            angle in prop_oneof![Just(None), (10.0f64..40.0).prop_map(Some)],
-        ) {
-            let f_r = 10f64.powf(log_fr);
-            let f_a = f_r * 10f64.powf(log_ratio);
-            let mut b = bearing(10.0, 60.0, 12, 0.52, clearance_um * 1e-3, 2.08e11);
-            if let Some(a) = angle {
-                b["free_contact_angle_deg"] = json!(a);
-                b["outer_groove_radius_m"] = json!(5.3e-3);
-            }
-            let m = moment_arm_ratio * f_r.hypot(f_a) * 0.03;
-            let mut r = at_speed(b.clone(), f_r, f_a, rpm, json!({"centrifugal": "auto", "gyroscopic": "auto"}));
-            r["moment_n_m"] = json!(m);
-            if rpm == 0.0 {
-                r.as_object_mut().unwrap().remove("inner_ring_speed_rpm");
-            }
-            let v = ok(&r);
-            let (fr, fa) = resultant(&v);
-            let preload = loads(&v).iter().sum::<f64>();
-            let mut scale = f_r.hypot(f_a).max(m.abs() / arm(&v, &b)).max(preload);
-            if v["result"].get("centrifugal_force_n").is_some() {
-                // At speed the forces in play are the outer contacts' (preload and F_c).
-                let outer: f64 = v["result"]["ball_loads"].as_array().unwrap().iter()
-                    .map(|x| x["outer_load_n"].as_f64().unwrap()).sum();
-                scale = scale.max(outer);
-                prop_assert!(ball_imbalance(&v) <= 1e-9 * scale, "{} vs {}", ball_imbalance(&v), scale);
-            }
-            prop_assert!((fr - f_r).hypot(fa - f_a) <= 1e-9 * scale, "{} {}: {} {}", f_r, f_a, fr, fa);
-            prop_assert!((moment_of(&v, &b) - m).abs() <= 1e-9 * scale * arm(&v, &b));
-            for p in ["/result/max_ball_load_n", "/result/tilt_rad", "/result/load_zone_half_angle_deg",
-                      "/result/inner_contact/max_pressure_pa", "/result/outer_contact/approach_m", "/solver/residual"] {
-                prop_assert!(get(&v, p).is_finite(), "{}", p);
-            }
-        }
-    }
-
-    /// A cylindrical roller bearing, lengths in mm (E′ = 219 GPa steel as in Khonsari Ex 14.3).
-    fn roller_bearing(d: f64, l: f64, dm: f64, z: u32, clearance_mm: f64) -> Value {
-        json!({
-            "roller_diameter_m": d * 1e-3, "roller_effective_length_m": l * 1e-3,
-            "pitch_diameter_m": dm * 1e-3, "roller_count": z,
-            "diametral_clearance_m": clearance_mm * 1e-3,
-            "rollers": steel(2.19e11 * 0.91), "rings": steel(2.19e11 * 0.91)
-        })
-    }
-
-    fn roller_request(b: Value, f_r: f64) -> Value {
-        json!({"bearing": b, "radial_load_n": f_r, "axial_load_n": 0.0})
-    }
-
-    /// Zero clearance: Stribeck's roller constant Z F_r/Q_max from the discrete sum with the
-    /// exponent 10/9, Khonsari & Booser T16 (spec: 4.077 for 8 rollers, 4.088 for 10). Hamrock's
-    /// A-R2 roller bearing (n = 9, F_r = 10 800 N) uses the linear law's continuous 4 F_r/n =
-    /// 4800 N; the 10/9 law lands between T16's 8- and 10-roller constants, about 2 % higher.
-    #[test]
-    fn roller_stribeck_constants() {
-        for (z, want) in [(8u32, 4.077), (10, 4.088)] {
-            let v = ok(&roller_request(
-                roller_bearing(10.0, 10.0, 80.0, z, 0.0),
-                10000.0,
-            ));
-            let q = get(&v, "/result/max_ball_load_n");
-            assert_rel(q * z as f64 / 10000.0, want, 5e-4, &format!("Z = {z}"));
-        }
-        // Hamrock A-R2: d_i = 64, d_o = 96 mm → d_m = 80, D = l = 16 mm, n = 9, E = 207.5 GPa.
-        let mut b = roller_bearing(16.0, 16.0, 80.0, 9, 0.0);
-        b["rollers"] = json!({"elastic_modulus_pa": 2.075e11, "poisson_ratio": 0.3});
-        b["rings"] = b["rollers"].clone();
-        let v = ok(&roller_request(b, 10800.0));
-        let q = get(&v, "/result/max_ball_load_n");
-        // Nine rollers, odd, have no roller opposite the load line: the 10/9 law's discrete
-        // constant is 4.11 here (derived), 2.8 % above the linear law's continuous 4.
-        assert_rel(q, 4800.0, 0.03, "Hamrock's 4 F_r/n");
-        // Hamrock's derived line contacts at 4800 N (spec A-R2): inner b = 0.146 mm,
-        // σ = 1.30 GPa; outer 0.179 mm, 1.07 GPa — scaled here by √(Q/4800).
-        let s = (q / 4800.0).sqrt();
-        assert_rel(
-            get(&v, "/result/inner_contact/semi_minor_axis_m"),
-            0.146e-3 * s,
-            5e-3,
-            "b_i",
-        );
-        assert_rel(
-            get(&v, "/result/inner_contact/max_pressure_pa"),
-            1.30e9 * s,
-            5e-3,
-            "σ_i",
-        );
-        assert_rel(
-            get(&v, "/result/outer_contact/semi_minor_axis_m"),
-            0.179e-3 * s,
-            5e-3,
-            "b_o",
-        );
-        assert_rel(
-            get(&v, "/result/outer_contact/max_pressure_pa"),
-            1.07e9 * s,
-            5e-3,
-            "σ_o",
-        );
-        assert_rel(
-            get(&v, "/result/inner_contact/semi_major_axis_m"),
-            8e-3,
-            1e-12,
-            "L/2",
-        );
-    }
-
-    /// Khonsari & Booser Ex 14.3, the 209 cylindrical roller bearing: d_i = 54.991,
-    /// d_o = 75.032 mm (P_d = 0.041 mm), D = 10, L = 9.601 mm, Z = 14, F_r = 6000 N. At the
-    /// book's Q = 2143 N: inner b = 0.10478 mm, σ = 1356 N/mm², Palmgren δ = 0.00626 mm per
-    /// contact (recomputed, spec). The book's outer contact (Σρ = 0.227 mm⁻¹, b = 0.1069 mm,
-    /// σ = 1329 N/mm²) adds the outer raceway's curvature as if convex; the concave raceway
-    /// gives Σρ = 2/D − 2/d_o = 0.17334 mm⁻¹ (Khonsari RI-1's "±"), so b = 0.10700·√(0.22666/0.17334)
-    /// = 0.12236 mm and σ = 1327.9·√(0.17334/0.22666) = 1161.2 N/mm² (corrected here; the
-    /// spec reproduces the printed sign). Checked at the distribution's own Q_max, scaled by
-    /// Hertz (b, σ ∝ Q^½) and Palmgren (δ ∝ Q^0.9).
-    #[test]
-    fn khonsari_209_roller_bearing() {
-        let b = roller_bearing(10.0, 9.601, 65.0115, 14, 0.041);
-        let v = ok(&roller_request(b, 6000.0));
-        let q = get(&v, "/result/max_ball_load_n");
-        // The clearance narrows the load zone: above Stribeck's 4.08 F_r/Z, and here (P_d
-        // about 3 × the contact approach) above the design rule's 5 F_r/Z = 2143 N as well.
-        assert!(q > 5.0 * 6000.0 / 14.0, "{q}");
-        let s = (q / 2142.9).sqrt();
-        for (race, b_want, p_want) in [
-            ("inner", 0.10478e-3, 1356.0e6),
-            ("outer", 0.12236e-3, 1161.2e6),
-        ] {
-            let c = |f: &str| get(&v, &format!("/result/{race}_contact/{f}"));
-            assert_rel(c("semi_minor_axis_m"), b_want * s, 2e-3, race);
-            assert_rel(c("max_pressure_pa"), p_want * s, 2e-3, race);
-        }
-        // The load law: Q_max = K_n (δ_r − P_d/2)^{10/9} with K_n from two Palmgren contacts.
-        let k = get(&v, "/result/roller_contact_stiffness_n_m10_9");
-        let delta = get(&v, "/result/radial_displacement_m") - 0.0205e-3;
-        assert_rel(q, k * delta.powf(10.0 / 9.0), 1e-12, "Q = K δ^10/9");
-        let per_contact = 0.00626e-3 * (q / 2142.9).powf(0.9);
-        assert_rel(delta, 2.0 * per_contact, 5e-3, "δ = 2 × Palmgren");
-        // Force balance, ε and the load zone.
-        let (fr, fa) = resultant(&v);
-        assert!((fr - 6000.0).abs() <= 1e-9 * 6000.0 && fa == 0.0);
-        let d_r = get(&v, "/result/radial_displacement_m");
-        assert_rel(
-            get(&v, "/result/load_zone_factor"),
-            0.5 * (1.0 - 0.041e-3 / (2.0 * d_r)),
-            1e-12,
-            "ε",
-        );
-        assert_rel(
-            get(&v, "/result/load_zone_half_angle_deg")
-                .to_radians()
-                .cos(),
-            0.0205e-3 / d_r,
-            1e-12,
-            "ψ_l",
-        );
-        assert!(v["result"].get("contact_stiffness_n_m1_5").is_none());
-        assert_eq!(v["effects"]["centrifugal"]["applied"], false);
-    }
-
-    #[test]
-    fn roller_edge_cases_and_refusals() {
-        // A light load with clearance: one roller; a preload at rest: every roller alike.
-        let v = ok(&roller_request(
-            roller_bearing(10.0, 10.0, 65.0, 14, 0.04),
-            1.0,
-        ));
-        assert_eq!(get(&v, "/result/loaded_ball_count"), 1.0);
-        assert_rel(get(&v, "/result/max_ball_load_n"), 1.0, 1e-9, "Q = F_r");
-        let v = ok(&roller_request(
-            roller_bearing(10.0, 10.0, 65.0, 14, -0.01),
-            0.0,
-        ));
-        let q = loads(&v);
-        assert!(q
-            .iter()
-            .all(|&x| x > 0.0 && (x - q[0]).abs() <= 1e-12 * q[0]));
-        assert_eq!(get(&v, "/result/load_zone_half_angle_deg"), 180.0);
-        // Loads over five decades balance.
-        for f in [1.0, 10.0, 1e2, 1e3, 1e4, 1e5] {
-            let v = ok(&roller_request(
-                roller_bearing(10.0, 10.0, 65.0, 14, 0.02),
-                f,
-            ));
-            assert!((resultant(&v).0 - f).abs() <= 1e-9 * f);
-        }
-        let with = |field: &str, value: Value| {
-            let mut b = roller_bearing(10.0, 10.0, 65.0, 14, 0.02);
-            b[field] = value;
-            roller_request(b, 1000.0)
-        };
-        let mut axial = roller_request(roller_bearing(10.0, 10.0, 65.0, 14, 0.02), 1000.0);
-        axial["axial_load_n"] = json!(10.0);
-        let mut moment = roller_request(roller_bearing(10.0, 10.0, 65.0, 14, 0.02), 1000.0);
-        moment["moment_n_m"] = json!(1.0);
-        let rows: Vec<(Value, &str)> = vec![
-            (with("roller_count", json!(30)), "/bearing/roller_count"),
-            (
-                with("diametral_clearance_m", json!(-1e-3)),
-                "/bearing/diametral_clearance_m",
-            ),
-            (with("roller_count", json!(-1)), "/bearing/roller_count"),
-            (
-                with("roler_length_m", json!(1.0)),
-                "/bearing/roler_length_m",
-            ),
-            (axial, "/axial_load_n"),
-            (moment, "/moment_n_m"),
-            (
-                roller_request(roller_bearing(10.0, 10.0, 65.0, 14, 0.02), 0.0),
-                "/radial_load_n",
-            ),
-        ];
-        for (r, pointer) in rows {
-            assert_eq!(pointer_of(&r), pointer, "{r}");
-        }
-        let mut missing = roller_bearing(10.0, 10.0, 65.0, 14, 0.02);
-        missing.as_object_mut().unwrap().remove("roller_count");
-        assert_eq!(
-            pointer_of(&roller_request(missing, 1.0)),
-            "/bearing/roller_count"
-        );
-        // A ball bearing's serde errors keep their pointers under /bearing.
-        let mut b = bearing_6210(0.018);
-        b["ball_count"] = json!(-3);
-        assert_eq!(
-            pointer_of(&request(b, 1.0, 0.0, "varying")),
-            "/bearing/ball_count"
-        );
-    }
-
-    /// Crowned rollers, sliced into laminae: a very flat crown is the straight roller; a crown
-    /// of 100 D (Hamrock A.1.8) touches only the middle at light load, spreads along the roller
-    /// as the load grows, and presses harder than the straight roller at the same load.
-    #[test]
-    fn crowned_rollers() {
-        let crowned = |r: f64| {
-            let mut b = roller_bearing(10.0, 10.0, 65.0, 14, 0.02);
-            b["profile"] = json!({"crown_radius_m": r});
-            b
-        };
-        let straight = ok(&roller_request(
-            roller_bearing(10.0, 10.0, 65.0, 14, 0.02),
-            10000.0,
-        ));
-        let flat = ok(&roller_request(crowned(1e4), 10000.0));
-        assert_rel(
-            get(&flat, "/result/max_ball_load_n"),
-            get(&straight, "/result/max_ball_load_n"),
-            1e-3,
-            "R → ∞",
-        );
-        assert_rel(
-            get(&straight, "/result/inner_contact/semi_major_axis_m"),
-            5e-3,
-            1e-12,
-            "L/2",
-        );
-        let light = ok(&roller_request(crowned(1.0), 50.0));
-        let heavy = ok(&roller_request(crowned(1.0), 50000.0));
-        let reach = |v: &Value| get(v, "/result/inner_contact/semi_major_axis_m");
-        assert!(reach(&light) < 0.5 * 5e-3, "{}", reach(&light));
-        assert!(reach(&heavy) > reach(&light));
-        let crowned_10k = ok(&roller_request(crowned(1.0), 10000.0));
-        assert!(
-            get(&crowned_10k, "/result/inner_contact/max_pressure_pa")
-                > get(&straight, "/result/inner_contact/max_pressure_pa")
-        );
-        for v in [&light, &heavy, &crowned_10k] {
-            let f = get(v, "/result/ball_loads/0/load_n");
-            assert!(f > 0.0);
-        }
-        for (v, f) in [(&light, 50.0), (&heavy, 50000.0), (&crowned_10k, 10000.0)] {
-            assert!((resultant(v).0 - f).abs() <= 1e-9 * f);
-        }
-        let r = roller_request(crowned(0.005), 1000.0);
-        assert_eq!(pointer_of(&r), "/bearing/profile/crown_radius_m");
-    }
-
-    /// Denormal speeds, moments and densities stay finite (or answer 422), never NaN or a 500.
-    #[test]
-    fn denormal_inputs_stay_finite() {
-        let tiny = 5e-324;
-        let mut rows = vec![
-            at_speed(
-                bearing_6210(0.018),
-                3000.0,
-                500.0,
-                tiny,
-                json!({"centrifugal": "on"}),
-            ),
-            at_speed(
-                bearing_7220(),
-                3000.0,
-                20000.0,
-                1e4,
-                json!({"centrifugal": "on", "gyroscopic": "on"}),
-            ),
-        ];
-        let mut m = request(bearing_6210(0.018), 3000.0, 0.0, "varying");
-        m["moment_n_m"] = json!(tiny);
-        rows.push(m);
-        let mut d = bearing_6210(0.018);
-        d["ball"]["density_kg_m3"] = json!(tiny);
-        rows.push(at_speed(d, tiny, 0.0, 3e4, json!({"centrifugal": "on"})));
-        let mut r = roller_bearing(10.0, 10.0, 65.0, 14, 0.0);
-        r["profile"] = json!({"crown_radius_m": 1e4});
-        rows.push(roller_request(r, tiny));
-        rows.push(roller_request(
-            roller_bearing(10.0, 10.0, 65.0, 14, 0.0),
-            tiny,
-        ));
-        for r in rows {
-            match post(&r) {
-                Ok(v) => {
-                    for p in [
-                        "/result/max_ball_load_n",
-                        "/result/radial_displacement_m",
-                        "/result/tilt_rad",
-                        "/result/inner_contact/max_pressure_pa",
-                        "/result/static_safety_factor",
-                    ] {
-                        assert!(get(&v, p).is_finite(), "{p} in {r}");
-                    }
-                }
-                // A 422: refused, or (loads and forces all denormal) no converged balance.
-                Err(Failure::Invalid(_))
-                | Err(Failure::Calc(CalcError::Impossible { .. }))
-                | Err(Failure::Calc(CalcError::NotConverged { .. })) => {}
-                Err(e) => panic!("{r}: {e:?}"),
-            }
-        }
-    }
-}
+#[path = "load_distribution_tests.rs"]
+mod tests;

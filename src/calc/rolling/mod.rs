@@ -9,6 +9,12 @@
 //! Weibull reliability relation), Khonsari & Booser chapters 13–14 (RB-3…RB-7, RI-7, Ex 13.1–13.4,
 //! the 6210 defect frequencies), and ISO 281:2007 for a_ISO and the rated viscosity ν1 (outside
 //! the texts; each constant cites where it was checked).
+//!
+//! Layout: `analysis`, `friction`, `grease_life`, `kinematics`, `life`, `load_distribution`,
+//! `static_capacity` are the rooms' wire files (each with its description in `<room>.md` and
+//! long tests in `<room>_tests.rs`); `ring_equilibrium` and `ball_equilibrium` solve the ball
+//! bearing's equilibrium, `roller` the roller bearing's, `geometry` holds the ball bearing's
+//! internal geometry and raceway contacts.
 
 pub mod analysis;
 mod ball_equilibrium;
@@ -18,5 +24,6 @@ pub mod grease_life;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;
+mod ring_equilibrium;
 pub mod roller;
 pub mod static_capacity;

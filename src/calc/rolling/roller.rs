@@ -31,7 +31,7 @@ use serde::Deserialize;
 use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
-use super::load_distribution::load_balance_root;
+use super::ring_equilibrium::load_balance_root;
 use crate::calc::contact::hertz::{Body, Contact, HertzOutput, Method, Shape, Solution};
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, Context, FieldError};

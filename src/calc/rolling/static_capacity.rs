@@ -51,9 +51,9 @@ use utoipa::ToSchema;
 
 use serde_json::Value;
 
-use super::geometry::BallBearingSpec;
+use super::geometry::{BallBearing, BallBearingSpec};
 use super::load_distribution::{parse_at, LoadDistributionBearing};
-use super::roller::{RollerBearingSpec, ROLLER_STATIC_LIMIT_PA};
+use super::roller::{RollerBearing, RollerBearingSpec, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::{Body, Contact, Invalid, Method, Shape};
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -183,19 +183,56 @@ fn iso_factors(deg: f64) -> Option<(f64, f64)> {
     })
 }
 
+/// The request's loads and operation, typed: everything but the bearing. The pointers of its
+/// errors are the static-capacity request's, which the analysis request shares.
+#[derive(Debug, Clone, Copy)]
+pub(super) struct StaticLoading {
+    pub radial_load_n: NonNegative,
+    pub axial_load_n: Option<NonNegative>,
+    pub x0_factor: Option<NonNegative>,
+    pub y0_factor: Option<NonNegative>,
+    pub static_load_rating_n: Option<Positive>,
+    pub rotating: Option<bool>,
+    pub operation: StaticCapacityOperation,
+    pub quiet_running: StaticCapacityQuietRunning,
+}
+
 impl Validate for StaticCapacityInput {
     type Valid = StaticCapacityCase;
     fn validate(self) -> Result<StaticCapacityCase, Vec<FieldError>> {
+        let loading = StaticLoading {
+            radial_load_n: self.radial_load_n,
+            axial_load_n: self.axial_load_n,
+            x0_factor: self.x0_factor,
+            y0_factor: self.y0_factor,
+            static_load_rating_n: self.static_load_rating_n,
+            rotating: self.rotating,
+            operation: self.operation,
+            quiet_running: self.quiet_running,
+        };
         if self.bearing.get("roller_diameter_m").is_some() {
-            return self.validate_roller();
+            return loading.roller(
+                parse_at::<RollerBearingSpec>(self.bearing, "/bearing")
+                    .and_then(|b| b.validate_at("/bearing")),
+            );
         }
-        let spec = parse_at::<BallBearingSpec>(self.bearing.clone(), "/bearing");
+        let spec = parse_at::<BallBearingSpec>(self.bearing, "/bearing");
         let deg = spec
             .as_ref()
             .ok()
             .and_then(|b| b.free_contact_angle_deg)
             .unwrap_or(0.0);
-        let bearing = spec.and_then(|b| b.validate_at("/bearing"));
+        loading.ball(deg, spec.and_then(|b| b.validate_at("/bearing")))
+    }
+}
+
+impl StaticLoading {
+    /// A ball bearing's case at its nominal contact angle `deg`, degrees.
+    pub(super) fn ball(
+        self,
+        deg: f64,
+        bearing: Result<BallBearing, Vec<FieldError>>,
+    ) -> Result<StaticCapacityCase, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
         let f_a = self.axial_load_n.map_or(0.0, NonNegative::get);
@@ -288,12 +325,13 @@ impl Validate for StaticCapacityInput {
     }
 }
 
-impl StaticCapacityInput {
+impl StaticLoading {
     /// A radial cylindrical roller bearing: P0 = F_r (X0 = 1, Y0 = 0, ISO 76 for α = 0), no
     /// axial load.
-    fn validate_roller(self) -> Result<StaticCapacityCase, Vec<FieldError>> {
-        let bearing = parse_at::<RollerBearingSpec>(self.bearing, "/bearing")
-            .and_then(|b| b.validate_at("/bearing"));
+    pub(super) fn roller(
+        self,
+        bearing: Result<RollerBearing, Vec<FieldError>>,
+    ) -> Result<StaticCapacityCase, Vec<FieldError>> {
         let mut errors = bearing.as_ref().err().cloned().unwrap_or_default();
         let f_r = self.radial_load_n.get();
         if f_r > MAX_LOAD_N || (f_r > 0.0 && f_r < MIN_LOAD_N) {
@@ -416,16 +454,7 @@ impl Calculation for StaticCapacity {
     const PATH: &'static str = "/v1/rolling-bearings/static-capacity";
     const SUMMARY: &'static str =
         "Static capacity of ball and cylindrical roller bearings: ISO 76 basic static load rating C0, static equivalent load P0 and safety factor s0";
-    const DESCRIPTION: &'static str = "Basic static radial load rating of a radial (deep-groove or single-row angular-contact) \
-ball bearing from its geometry: the radial load at which the most loaded ball, carrying Q_max = 5 F_r/(Z cos α) (Stribeck's \
-practical rule, Khonsari & Booser RI-6), presses its raceway at 4200 MPa, where the permanent deformation is about 1e-4 D \
-(Khonsari & Booser RB-8, ISO 76). C0 = f0 Z D² cos α with f0 = Q₀/(5 D²) from the exact Hertz contact on ISO's reference grooves \
-(r_i = 0.52 D, r_o = 0.53 D, or the bearing's own where looser) in bearing steel (E = 207 GPa, ν = 0.3), a function of \
-γ = D cos α/d_m. Static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r): X0 = 0.6, Y0 = 0.5 deep groove; X0 = 0.5 and Y0 from \
-0.46 (15°) to 0.22 (45°) single-row angular contact; or given. s0 = C0/P0 (or a catalogue C0), with warnings against the \
-guideline minimum for the operation (rotating: 0.5/1/2 for low/normal/high demands on quiet running, 1.5/1.5/2 with shock \
-loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0. A cylindrical roller `bearing` is rated by the same definition at \
-4000 MPa on line contacts over the effective length (C0 = 44.2 (1 − γ) Z L D, ISO's 44), P0 = F_r, with the roller guidelines.";
+    const DESCRIPTION: &'static str = include_str!("static_capacity.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"bearing": {"ball_diameter_m": 0.0127, "pitch_diameter_m": 0.07, "ball_count": 10, "inner_groove_radius_m": 0.0066, "outer_groove_radius_m": 0.0066, "diametral_clearance_m": 1.8e-5, "ball": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}, "rings": {"elastic_modulus_pa": 2.08e11, "poisson_ratio": 0.3}}, "radial_load_n": 3000, "axial_load_n": 1000}"#;
@@ -434,67 +463,76 @@ loads; non-rotating 0.4/0.5/1) and beyond 1, 4 and 8 C0. A cylindrical roller `b
     type Output = StaticCapacityOutput;
 
     fn run(case: StaticCapacityCase, ctx: &mut Context) -> Result<StaticCapacityOutput, CalcError> {
-        let d = case.ball_diameter_m;
-        let cos = case.contact_angle.cos();
-        let (inner, outer) = (
-            rating_ball_load(&case, true)?,
-            rating_ball_load(&case, false)?,
-        );
-        let (q0, governing) = if inner <= outer {
-            (inner, "inner")
-        } else {
-            (outer, "outer")
-        };
-        let z = case.ball_count as f64;
-        let c0 = z * q0 * cos / STRIBECK_FACTOR;
-        let roller = case.roller_length_m;
-        // Balls: f0 = Q₀/(5 D²); rollers: ISO's 44 = Q₀/(5 L D (1 − γ)), both in N/mm².
-        let f0_n_m2 = match roller {
-            None => q0 / (STRIBECK_FACTOR * d * d),
-            Some(l) => q0 / (STRIBECK_FACTOR * l * d * (1.0 - d * cos / case.pitch_diameter_m)),
-        };
-        let (limit_pa, pressure_exponent) = match roller {
-            None => (STATIC_RATING_PRESSURE_PA, 1.0 / 3.0),
-            Some(_) => (ROLLER_STATIC_LIMIT_PA, 0.5),
-        };
-        let (f_r, f_a) = (case.radial_load_n, case.axial_load_n);
-        let p0 = (case.x0 * f_r + case.y0 * f_a).max(f_r);
-        if p0.is_nan() || p0 < MIN_EQUIVALENT_LOAD_N {
-            return Err(CalcError::impossible(
+        solve(&case, ctx)
+    }
+}
+
+/// The rating and safety factor of a validated case (the room's answer; the analysis calls it
+/// too).
+pub(super) fn solve(
+    case: &StaticCapacityCase,
+    ctx: &mut Context,
+) -> Result<StaticCapacityOutput, CalcError> {
+    let d = case.ball_diameter_m;
+    let cos = case.contact_angle.cos();
+    let (inner, outer) = (
+        rating_ball_load(case, true)?,
+        rating_ball_load(case, false)?,
+    );
+    let (q0, governing) = if inner <= outer {
+        (inner, "inner")
+    } else {
+        (outer, "outer")
+    };
+    let z = case.ball_count as f64;
+    let c0 = z * q0 * cos / STRIBECK_FACTOR;
+    let roller = case.roller_length_m;
+    // Balls: f0 = Q₀/(5 D²); rollers: ISO's 44 = Q₀/(5 L D (1 − γ)), both in N/mm².
+    let f0_n_m2 = match roller {
+        None => q0 / (STRIBECK_FACTOR * d * d),
+        Some(l) => q0 / (STRIBECK_FACTOR * l * d * (1.0 - d * cos / case.pitch_diameter_m)),
+    };
+    let (limit_pa, pressure_exponent) = match roller {
+        None => (STATIC_RATING_PRESSURE_PA, 1.0 / 3.0),
+        Some(_) => (ROLLER_STATIC_LIMIT_PA, 0.5),
+    };
+    let (f_r, f_a) = (case.radial_load_n, case.axial_load_n);
+    let p0 = (case.x0 * f_r + case.y0 * f_a).max(f_r);
+    if p0.is_nan() || p0 < MIN_EQUIVALENT_LOAD_N {
+        return Err(CalcError::impossible(
                 if f_r > 0.0 { "/radial_load_n" } else { "/axial_load_n" },
                 format!(
                     "the static equivalent load P0 = max(X0 F_r + Y0 F_a, F_r) = {p0:e} N is below {MIN_EQUIVALENT_LOAD_N:e} N: s0 = C0/P0 would exceed any meaningful bound (with Y0 = 0 an axial load alone gives P0 = 0)"
                 ),
             ));
-        }
-        let rating = case.catalogue_rating_n.unwrap_or(c0);
-        let s0 = rating / p0;
-        let minimum = guideline_minimum(
-            roller.is_some(),
-            case.rotating,
-            case.operation,
-            case.quiet_running,
-        );
-        warn_on(ctx, s0, minimum);
-        Ok(StaticCapacityOutput {
-            contact_angle_deg: case.contact_angle.to_degrees(),
-            gamma: d * cos / case.pitch_diameter_m,
-            static_rating_factor_f0: f0_n_m2 * 1e-6,
-            rating_conformities: roller
-                .is_none()
-                .then_some([case.conformity.0, case.conformity.1]),
-            ball_load_at_rating_pressure_n: q0,
-            governing_raceway: governing,
-            basic_static_load_rating_n: c0,
-            rating_used_n: rating,
-            x0_factor: case.x0,
-            y0_factor: case.y0,
-            equivalent_static_load_n: p0,
-            static_safety_factor: s0,
-            recommended_min_static_safety_factor: minimum,
-            max_contact_pressure_pa: limit_pa * (p0 / rating).powf(pressure_exponent),
-        })
     }
+    let rating = case.catalogue_rating_n.unwrap_or(c0);
+    let s0 = rating / p0;
+    let minimum = guideline_minimum(
+        roller.is_some(),
+        case.rotating,
+        case.operation,
+        case.quiet_running,
+    );
+    warn_on(ctx, s0, minimum);
+    Ok(StaticCapacityOutput {
+        contact_angle_deg: case.contact_angle.to_degrees(),
+        gamma: d * cos / case.pitch_diameter_m,
+        static_rating_factor_f0: f0_n_m2 * 1e-6,
+        rating_conformities: roller
+            .is_none()
+            .then_some([case.conformity.0, case.conformity.1]),
+        ball_load_at_rating_pressure_n: q0,
+        governing_raceway: governing,
+        basic_static_load_rating_n: c0,
+        rating_used_n: rating,
+        x0_factor: case.x0,
+        y0_factor: case.y0,
+        equivalent_static_load_n: p0,
+        static_safety_factor: s0,
+        recommended_min_static_safety_factor: minimum,
+        max_contact_pressure_pa: limit_pa * (p0 / rating).powf(pressure_exponent),
+    })
 }
 
 /// Q₀ of one raceway: the ball load at which its exact Hertz pressure is 4200 MPa, from the
