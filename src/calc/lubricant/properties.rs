@@ -105,9 +105,7 @@ impl Calculation for Properties {
     const PATH: &'static str = "/v1/lubricants/properties";
     const SUMMARY: &'static str =
         "Density, thermal properties and pressure–viscosity estimates of a lubricant";
-    const DESCRIPTION: &'static str = "Density (Khonsari & Booser Eq. 2.19), specific heat and conductivity (Eq. 2.24, 2.25, for petroleum oils, \
-or the lubricant's given constants), diffusivity, the viscosity–temperature coefficient, and pressure–viscosity estimates: \
-Fein's Roelands Z (Eq. 2.11) with the EHL α of Eq. 2.13, and Wooster's α (Stachowiak & Batchelor §2.5).";
+    const DESCRIPTION: &'static str = include_str!("properties.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str = r#"{"lubricant": {"kinematic_viscosity_40c_mm2_s": 31.0, "kinematic_viscosity_100c_mm2_s": 5.4, "density_15c_kg_m3": 863.0}, "temperatures_c": [40.0, 65.0, 100.0]}"#;

@@ -146,9 +146,7 @@ impl Calculation for Viscosity {
     const PATH: &'static str = "/v1/lubricants/viscosity";
     const SUMMARY: &'static str =
         "Viscosity and density of a lubricant against temperature and pressure";
-    const DESCRIPTION: &'static str = "Dynamic and kinematic viscosity and density at every requested temperature and gauge pressure. \
-Temperature laws: constant, Walther/ASTM D341 two-point (Khonsari & Booser Eq. 2.3), Vogel three-point (Stachowiak & Batchelor Table 2.1), exponential (Khonsari & Booser Eq. 2.5), ISO VG presets. \
-Pressure: Barus (Eq. 2.9, valid to about 70 MPa) or Roelands (Eq. 2.10); density with temperature Eq. 2.19 and with pressure Dowson–Higginson (Eq. 2.20).";
+    const DESCRIPTION: &'static str = include_str!("viscosity.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &["piezoviscosity", "compressibility"];
     const EXAMPLE: &'static str = r#"{"lubricant": {"kinematic_viscosity_40c_mm2_s": 31.0, "kinematic_viscosity_100c_mm2_s": 5.4, "density_15c_kg_m3": 863.0, "roelands_pressure_viscosity_index": 0.68}, "temperatures_c": [40.0, 65.0, 100.0], "pressures_pa": [0.0, 1.0e8]}"#;

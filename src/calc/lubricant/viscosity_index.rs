@@ -95,8 +95,7 @@ pub struct ViscosityIndexOutput {
 impl Calculation for ViscosityIndex {
     const PATH: &'static str = "/v1/lubricants/viscosity-index";
     const SUMMARY: &'static str = "Viscosity index by ASTM D2270 (procedures A and B)";
-    const DESCRIPTION: &'static str = "Viscosity index from ν40 and ν100 by ASTM D2270: procedure A (VI ≤ 100) and B (VI > 100), \
-with the reference-oil viscosities L and H over the standard's whole ν100 range (2 mm²/s upward; the quadratic laws above 70 mm²/s).";
+    const DESCRIPTION: &'static str = include_str!("viscosity_index.md");
     const FIDELITY: &'static [Level] = &[Level::ClosedForm];
     const EFFECTS: &'static [&'static str] = &[];
     const EXAMPLE: &'static str =
