@@ -9,13 +9,9 @@ use super::dynamics::{self, Coefficients};
 use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel, Port, Supply};
 use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
-use super::plain::{
-    CavitationMode, DynamicCoefficients, FilmMoment, JournalEffects, PlainOutput, ProfilePoint,
-    Stability,
-};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
-use crate::calc::{Budget, CalcError, Context};
+use crate::calc::{Budget, CalcError, Warning};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::SolverReport;
 use crate::numerics::roots::{brent, RootError, Stopping};
@@ -69,11 +65,192 @@ pub struct Case {
     /// Shaft stiffness in series with the film, N/m (None: rigid).
     pub shaft_stiffness_n_m: Option<f64>,
     pub method: Method,
-    pub effects: JournalEffects,
+    pub effects: Effects,
     pub dynamics: bool,
     pub include_field: bool,
     /// Decided in [`solve`] from the film Reynolds number: the Ng–Pan turbulent film applies.
     pub turbulent: bool,
+}
+
+/// How the film cavitates: the model's reading of the request's cavitation mode.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Cavitation {
+    /// The Reynolds condition.
+    #[default]
+    Auto,
+    /// The Reynolds condition.
+    On,
+    /// No cavitation: the full Sommerfeld film.
+    Off,
+    /// The Reynolds (Swift–Stieber) condition, p ≥ 0.
+    Reynolds,
+    /// Mass-conserving Jakobsson–Floberg–Olsson cavitation.
+    Jfo,
+}
+
+impl Cavitation {
+    /// The auto/on/off mode an effect report carries.
+    pub fn mode(self) -> Mode {
+        match self {
+            Cavitation::Auto => Mode::Auto,
+            Cavitation::Off => Mode::Off,
+            _ => Mode::On,
+        }
+    }
+}
+
+/// The effect modes the plain bearing understands (misalignment is decided from the geometry).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Effects {
+    pub thermal: Mode,
+    pub cavitation: Cavitation,
+    pub turbulence: Mode,
+    pub inertia: Mode,
+}
+
+/// What the model says beside its numbers, in the order it said it: the decision on each effect
+/// and the warnings (the caller records them).
+#[derive(Debug, Clone, Default)]
+pub struct Notes {
+    pub decisions: Vec<(&'static str, Decision)>,
+    pub warnings: Vec<Warning>,
+}
+
+impl Notes {
+    fn decide(&mut self, effect: &'static str, decision: Decision) {
+        self.decisions.push((effect, decision));
+    }
+    fn warn(&mut self, code: &'static str, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            code,
+            message: message.into(),
+        });
+    }
+}
+
+/// The plain bearing solved: dimensional results in SI units, angles in radians from h_max in
+/// the direction of rotation (Table 8.6 conventions; S and P̄ with N_s in rev/s).
+#[derive(Debug, Clone)]
+pub struct Solution {
+    /// Steady load W, N (the whole bearing's).
+    pub load_n: f64,
+    pub sommerfeld_number: f64,
+    pub eccentricity_ratio: f64,
+    /// φ, between the load line and the line of centres, rad.
+    pub attitude_angle: f64,
+    pub min_film_thickness_m: f64,
+    /// Peak film pressure, Pa gauge (with the supply pressure unless the film holds it).
+    pub max_pressure_pa: f64,
+    /// P̄_max = p_max (C/R)²/(μ N_s).
+    pub max_pressure_nd: f64,
+    /// Angle of the peak, rad.
+    pub max_pressure_angle: f64,
+    /// Film rupture angle, rad; None for a full film.
+    pub cavitation_start_angle: Option<f64>,
+    pub cavitated_area_fraction: Option<f64>,
+    pub petroff_friction_coefficient: f64,
+    pub friction_coefficient: f64,
+    /// (R/C) f.
+    pub friction_parameter: f64,
+    pub friction_torque_n_m: f64,
+    pub power_loss_w: f64,
+    pub side_leakage_m3_s: f64,
+    /// Q_L/((π/2) N_s D L C).
+    pub side_leakage_nd: f64,
+    pub inlet_flow_m3_s: Option<f64>,
+    pub temperature_rise_k: Option<f64>,
+    /// Jang & Khonsari's THD temperatures, for temperature-dependent lubricants.
+    pub bush_temperatures: Option<BushTemperatures>,
+    /// Martin's flows, with a feed (not for a JFO film fed through ports).
+    pub flows: Option<Flows>,
+    pub effective_temperature_c: f64,
+    pub effective_viscosity_pa_s: f64,
+    /// Film Reynolds number ρ U C/μ.
+    pub reynolds_number: f64,
+    /// The closed form used, by name; None for the numerical solution.
+    pub approximation: Option<&'static str>,
+    pub approximation_note: Option<String>,
+    /// Mid-plane pressure profile, when asked and numerical.
+    pub pressure_profile: Option<Vec<ProfileNode>>,
+    /// The film's moment on a misaligned journal.
+    pub moment: Option<Moment>,
+    /// Stiffness, damping and stability, when asked and available.
+    pub dynamics: Option<Dynamics>,
+    pub report: SolverReport,
+    pub notes: Notes,
+}
+
+/// Jang & Khonsari's maximum bush and shaft temperatures, °C.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct BushTemperatures {
+    pub max_c: f64,
+    pub shaft_c: f64,
+}
+
+/// One node of the mid-plane pressure profile.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct ProfileNode {
+    /// θ from h_max, rad.
+    pub angle: f64,
+    /// Film pressure, Pa.
+    pub pressure_pa: f64,
+    /// Film content θ_f (mass-conserving films).
+    pub film_content: Option<f64>,
+}
+
+/// The film's moment on a misaligned journal, about the bearing centre, in the load frame (x
+/// along the static load, y 90° ahead in the rotation, z along the spin).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Moment {
+    pub mx_n_m: f64,
+    pub my_n_m: f64,
+    pub magnitude_n_m: f64,
+    /// (M_x, M_y)/(μ N_s (R/C)² R L²).
+    pub nd: [f64; 2],
+    /// The component against the tilt, N·m (positive: the film resists the misalignment).
+    pub restoring_n_m: f64,
+}
+
+/// Stiffness and damping in the load frame, [xx, xy, yx, yy], and the rotor's stability.
+#[derive(Debug, Clone)]
+pub struct Dynamics {
+    pub stiffness_n_m: [f64; 4],
+    pub damping_n_s_m: [f64; 4],
+    /// K_ij C/W.
+    pub stiffness_nd: [f64; 4],
+    /// C_ij C ω/W.
+    pub damping_nd: [f64; 4],
+    pub method: CoefficientsMethod,
+    pub stability: RotorStability,
+}
+
+/// How the dynamic coefficients were obtained.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum CoefficientsMethod {
+    /// The short (Ocvirk) bearing's closed form with the half-Sommerfeld film.
+    ShortBearing,
+    /// Perturbation of the converged Reynolds film.
+    Perturbation,
+    /// Perturbation of the converged mass-conserving (JFO) film.
+    PerturbationMassConserving,
+}
+
+/// Rigid-rotor stability (Lund's linearised threshold).
+#[derive(Debug, Clone)]
+pub struct RotorStability {
+    pub stable_at_operating_speed: bool,
+    pub threshold_speed_rpm: Option<f64>,
+    pub whirl_frequency_ratio: Option<f64>,
+    /// m C ω²/W at the threshold.
+    pub critical_mass_parameter: Option<f64>,
+    pub critical_speed_rad_s: Option<f64>,
+    /// ω_c (C/g)^½.
+    pub critical_speed_nd: Option<f64>,
+    /// The rotor's m C ω²/W at the operating speed.
+    pub mass_parameter: f64,
+    pub rotor_mass_kg: f64,
+    /// The verdict in words.
+    pub statement: String,
 }
 
 /// A solved operating point at one viscosity.
@@ -97,7 +274,7 @@ impl Case {
         mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
     }
     fn cavitation(&self) -> bool {
-        self.effects.cavitation != CavitationMode::Off
+        self.effects.cavitation != Cavitation::Off
     }
 
     /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
@@ -105,7 +282,7 @@ impl Case {
     /// pressure; a hole or axial groove(s) as ports at supply pressure in a periodic film,
     /// where the feed sits (opposite the load, at h_max, or two grooves at ±90°).
     fn supply(&self, t: f64) -> Option<Supply> {
-        if self.effects.cavitation != CavitationMode::Jfo {
+        if self.effects.cavitation != Cavitation::Jfo {
             return None;
         }
         let g = self.geometry;
@@ -164,7 +341,7 @@ impl Case {
     }
 
     fn mass_conserving(&self) -> bool {
-        self.cavitation() && self.effects.cavitation == CavitationMode::Jfo
+        self.cavitation() && self.effects.cavitation == Cavitation::Jfo
     }
 
     /// Whether the film's pressures are above ambient with the supply in them (JFO ports)
@@ -317,19 +494,22 @@ impl Case {
     }
 }
 
-pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
-    let budget = ctx.budget();
+/// The plain bearing at its operating point: every effect decided, the equilibrium, the
+/// dimensional outputs and (when asked) the dynamics; `budget` stops a late request.
+pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
+    let mut notes = Notes::default();
+    let notes = &mut notes;
     let lub = &case.lubricant;
     let t_in = case.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
     let temperature_dependent = !matches!(lub.temperature_law, TemperatureLaw::Constant { .. });
     if case.inlet_temperature_c.is_none() && temperature_dependent {
-        ctx.warn(
+        notes.warn(
             "inlet_temperature_assumed",
             format!("inlet_temperature_c not given: {DEFAULT_INLET_C} °C assumed"),
         );
     }
     for (code, message) in &lub.assumptions {
-        ctx.warn(code, message.clone());
+        notes.warn(code, message.clone());
     }
     let mu_in = lub.viscosity_pa_s(t_in);
     if !(mu_in.is_finite() && mu_in > 0.0) {
@@ -340,20 +520,20 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     }
 
     let mut case = case.clone();
-    case.turbulent = decide_turbulence(ctx, &case, case.film_reynolds(t_in));
+    case.turbulent = decide_turbulence(notes, &case, case.film_reynolds(t_in));
     let case = &case;
-    let isothermal = case.operate(t_in, &budget)?;
+    let isothermal = case.operate(t_in, budget)?;
     let mut op = isothermal.clone();
     let k = case.effective_fraction();
     match (temperature_dependent, case.temperature_rise(&isothermal)) {
-        (false, _) => ctx.decide(
+        (false, _) => notes.decide(
             "thermal",
             Decision::not_applicable(
                 case.effects.thermal,
                 "the lubricant's viscosity does not depend on temperature",
             ),
         ),
-        (true, None) => ctx.decide(
+        (true, None) => notes.decide(
             "thermal",
             Decision::not_applicable(
                 case.effects.thermal,
@@ -369,14 +549,14 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             };
             let decision = Decision::decide(case.effects.thermal, criterion, "thermal");
             if decision.applied {
-                op = effective_temperature(case, t_in, k * rise, &budget)?;
+                op = effective_temperature(case, t_in, k * rise, budget)?;
             }
-            ctx.decide("thermal", decision);
+            notes.decide("thermal", decision);
         }
     }
 
     let thd = if temperature_dependent {
-        thd_temperatures(ctx, case, t_in, isothermal.point.eccentricity_ratio)
+        thd_temperatures(notes, case, t_in, isothermal.point.eccentricity_ratio)
     } else {
         None
     };
@@ -387,7 +567,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let rho = lub.density_kg_m3(op.temperature_c);
     let u = PI * g.diameter_m * n_s;
     let reynolds = rho * u * g.radial_clearance_m / mu;
-    decide_inertia(ctx, case.effects, reynolds, g);
+    decide_inertia(notes, case.effects, reynolds, g);
     let cavitation = Decision {
         applied: case.cavitation(),
         mode: case.effects.cavitation.mode(),
@@ -418,10 +598,10 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             .then_some(if case.mass_conserving() { "jfo" } else { "reynolds" }),
     };
     if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
-        ctx.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
+        notes.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
     }
-    ctx.decide("cavitation", cavitation);
-    ctx.decide(
+    notes.decide("cavitation", cavitation);
+    notes.decide(
         "misalignment",
         match case.misalignment {
             None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
@@ -439,7 +619,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         },
     );
 
-    validity_warnings(ctx, case, point);
+    validity_warnings(notes, case, point);
 
     let power = case.power_loss(&op);
     let flows = case.flows(&op);
@@ -454,42 +634,40 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     let friction = point.friction_parameter / g.r_over_c();
     let rise = case.temperature_rise(&op);
     if rise.is_none() {
-        ctx.warn("no_temperature_rise", "the long-bearing closed form has no side leakage, so no adiabatic temperature rise; use a numerical fidelity");
+        notes.warn("no_temperature_rise", "the long-bearing closed form has no side leakage, so no adiabatic temperature rise; use a numerical fidelity");
     }
     let pressure_scale = mu * n_s * g.r_over_c().powi(2);
     let flow_scale = 0.5 * PI * n_s * g.diameter_m * g.length_m * g.radial_clearance_m;
 
     let dynamics = if case.dynamics {
-        dynamic_coefficients(case, &op, ctx)?
+        dynamic_coefficients(case, &op, budget, notes)?
     } else {
         None
     };
-    let mut output = PlainOutput {
+    let mut solution = Solution {
         load_n: halves * op.load_n,
         sommerfeld_number: point.sommerfeld_number,
         eccentricity_ratio: point.eccentricity_ratio,
-        attitude_angle_deg: point.attitude_angle.to_degrees(),
+        attitude_angle: point.attitude_angle,
         min_film_thickness_m: g.radial_clearance_m * point.min_film_bar,
         max_pressure_pa: point.max_pressure_bar * pressure_scale + supply_pressure,
-        max_pressure_dimensionless: point.max_pressure_bar,
-        max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
-        cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
+        max_pressure_nd: point.max_pressure_bar,
+        max_pressure_angle: point.max_pressure_angle,
+        cavitation_start_angle: point.cavitation_angle,
         cavitated_area_fraction: point.cavitated_fraction,
         friction_coefficient: friction,
         friction_parameter: point.friction_parameter,
         friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
         power_loss_w: halves * power,
         side_leakage_m3_s: point.side_leakage_bar * flow_scale,
-        side_leakage_dimensionless: point.side_leakage_bar,
+        side_leakage_nd: point.side_leakage_bar,
         inlet_flow_m3_s: point
             .inlet_flow_bar
             .filter(|_| halves == 1.0)
             .map(|q| q * flow_scale),
         temperature_rise_k: rise,
-        max_temperature_c: thd.map(|t| t.0),
-        shaft_temperature_c: thd.map(|t| t.1),
-        supply_flow_m3_s: flows.map(|f| f.pressure_fed),
-        total_flow_m3_s: flows.map(|f| f.total),
+        bush_temperatures: thd,
+        flows,
         effective_temperature_c: op.temperature_c,
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,
@@ -500,8 +678,8 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             point.midplane.as_ref().map(|m| {
                 m.iter()
                     .enumerate()
-                    .map(|(i, &(theta, p))| ProfilePoint {
-                        angle_deg: theta.to_degrees(),
+                    .map(|(i, &(theta, p))| ProfileNode {
+                        angle: theta,
                         pressure_pa: p * pressure_scale,
                         film_content: point
                             .midplane_content
@@ -513,7 +691,7 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         } else {
             None
         },
-        misalignment_moment: point.moment_bar.map(|m| {
+        moment: point.moment_bar.map(|m| {
             let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
             let (mx, my) = (m[0] * scale, m[1] * scale);
             // The tilt direction u in the load frame; the tilt is a rotation about z × u.
@@ -525,44 +703,49 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
                 dir
             };
             let axis = [-towards.sin(), towards.cos()];
-            FilmMoment {
-                frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+            Moment {
                 mx_n_m: mx,
                 my_n_m: my,
                 magnitude_n_m: mx.hypot(my),
-                dimensionless: m,
+                nd: m,
                 restoring_n_m: -(mx * axis[0] + my * axis[1]),
             }
         }),
-        dynamic_coefficients: None,
-        stability: None,
+        dynamics: None,
+        report: report(case, point, op.evaluations),
+        notes: Notes::default(),
     };
     if let Some((coefficients, stability)) = dynamics {
         let (w, c, omega) = (halves * op.load_n, g.radial_clearance_m, 2.0 * PI * n_s);
-        let [kxx, kxy, kyx, kyy] = coefficients.stiffness.map(|v| v * w / c);
-        let [cxx, cxy, cyx, cyy] = coefficients.damping.map(|v| v * w / (c * omega));
-        output.dynamic_coefficients = Some(DynamicCoefficients {
-            frame: "x along the static load, y perpendicular to it, 90° ahead in the direction of rotation".into(),
-            kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy,
-            stiffness_dimensionless: coefficients.stiffness,
-            damping_dimensionless: coefficients.damping,
+        solution.dynamics = Some(Dynamics {
+            stiffness_n_m: coefficients.stiffness.map(|v| v * w / c),
+            damping_n_s_m: coefficients.damping.map(|v| v * w / (c * omega)),
+            stiffness_nd: coefficients.stiffness,
+            damping_nd: coefficients.damping,
             method: match case.method {
-                Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
-                Method::Numerical { .. } if case.mass_conserving() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
-                Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
+                Method::ClosedForm(_) => CoefficientsMethod::ShortBearing,
+                Method::Numerical { .. } if case.mass_conserving() => {
+                    CoefficientsMethod::PerturbationMassConserving
+                }
+                Method::Numerical { .. } => CoefficientsMethod::Perturbation,
             },
+            stability,
         });
-        output.stability = Some(stability);
     }
-    ctx.report(report(case, point, op.evaluations));
-    Ok(output)
+    solution.notes = std::mem::take(notes);
+    Ok(solution)
 }
 
 /// Jang & Khonsari's THD fits for the maximum bush and the shaft temperature (Khonsari & Booser
 /// Eq. 8.65, Table 8.11): T̄ = β (T − T_in), κ1 = (α_t μ_i β U/(k R))(R/C)², κ2 = U (μ_i β/k)^½,
 /// T̄_max = exp[a + b/√κ1 + c/√κ2], T̄_shaft = 1/[a + b/√κ1 + c/κ2²], the region by the isothermal ε.
 /// β is −d ln μ/dT at the inlet (exact for the exponential law).
-fn thd_temperatures(ctx: &mut Context, case: &Case, t_in: f64, eps: f64) -> Option<(f64, f64)> {
+fn thd_temperatures(
+    notes: &mut Notes,
+    case: &Case,
+    t_in: f64,
+    eps: f64,
+) -> Option<BushTemperatures> {
     let lub = &case.lubricant;
     let g = case.geometry;
     let mu = lub.viscosity_pa_s(t_in);
@@ -587,13 +770,15 @@ fn thd_temperatures(ctx: &mut Context, case: &Case, t_in: f64, eps: f64) -> Opti
         && (0.01..=5.0).contains(&kappa2)
         && (0.1..=0.9).contains(&eps);
     if !in_range || (g.l_over_d() - 1.0).abs() > 0.5 {
-        ctx.warn(
+        notes.warn(
             "thd_fit_outside_range",
             format!("Jang–Khonsari's THD fits hold for L/D ≈ 1, 0.001 ≤ κ1 ≤ 0.5, 0.01 ≤ κ2 ≤ 5, 0.1 ≤ ε ≤ 0.9; here L/D = {:.2}, κ1 = {kappa1:.3e}, κ2 = {kappa2:.3e}, ε = {eps:.3}", g.l_over_d()),
         );
     }
-    (t_max.is_finite() && t_shaft.is_finite() && t_shaft > 0.0)
-        .then(|| (t_in + t_max / beta, t_in + t_shaft / beta))
+    (t_max.is_finite() && t_shaft.is_finite() && t_shaft > 0.0).then(|| BushTemperatures {
+        max_c: t_in + t_max / beta,
+        shaft_c: t_in + t_shaft / beta,
+    })
 }
 
 /// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]
@@ -657,7 +842,7 @@ fn effective_temperature(
 
 /// Turbulence: `auto` applies the Ng–Pan film above a film Reynolds number of 1000 (at the
 /// inlet temperature); the closed forms are laminar only.
-fn decide_turbulence(ctx: &mut Context, case: &Case, reynolds: f64) -> bool {
+fn decide_turbulence(notes: &mut Notes, case: &Case, reynolds: f64) -> bool {
     let criterion = Criterion {
         name: "film_reynolds_number",
         value: reynolds,
@@ -665,11 +850,11 @@ fn decide_turbulence(ctx: &mut Context, case: &Case, reynolds: f64) -> bool {
     };
     let decision = Decision::decide(case.effects.turbulence, criterion, "turbulence");
     if decision.applied && matches!(case.method, Method::ClosedForm(_)) {
-        ctx.warn(
+        notes.warn(
             "turbulent_film",
             format!("film Reynolds number {reynolds:.0}: the film is turbulent, but the closed forms are laminar and underestimate friction and load capacity; use a numerical fidelity"),
         );
-        ctx.decide(
+        notes.decide(
             "turbulence",
             Decision {
                 applied: false,
@@ -688,11 +873,11 @@ fn decide_turbulence(ctx: &mut Context, case: &Case, reynolds: f64) -> bool {
     } else {
         decision.reason.clone()
     };
-    ctx.decide("turbulence", Decision { reason, ..decision });
+    notes.decide("turbulence", Decision { reason, ..decision });
     applied
 }
 
-fn decide_inertia(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
+fn decide_inertia(notes: &mut Notes, effects: Effects, reynolds: f64, g: Geometry) {
     let reduced = reynolds * g.radial_clearance_m / (0.5 * g.diameter_m);
     let inertia = Decision::decide(
         effects.inertia,
@@ -704,9 +889,9 @@ fn decide_inertia(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: 
         "inertia",
     );
     if inertia.applied {
-        ctx.warn("fluid_inertia", format!("reduced Reynolds number {reduced:.2} exceeds 1: fluid inertia matters and is not modelled"));
+        notes.warn("fluid_inertia", format!("reduced Reynolds number {reduced:.2} exceeds 1: fluid inertia matters and is not modelled"));
     }
-    ctx.decide(
+    notes.decide(
         "inertia",
         Decision {
             applied: false,
@@ -715,25 +900,19 @@ fn decide_inertia(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: 
     );
 }
 
-fn approximation_name(case: &Case) -> Option<String> {
+fn approximation_name(case: &Case) -> Option<&'static str> {
     let cav = case.cavitation();
     match case.method {
-        Method::ClosedForm(Approximation::Short) => Some(
-            if cav {
-                "short_half_sommerfeld"
-            } else {
-                "short_full_sommerfeld"
-            }
-            .into(),
-        ),
-        Method::ClosedForm(Approximation::Long) => Some(
-            if cav {
-                "long_reynolds"
-            } else {
-                "long_full_sommerfeld"
-            }
-            .into(),
-        ),
+        Method::ClosedForm(Approximation::Short) => Some(if cav {
+            "short_half_sommerfeld"
+        } else {
+            "short_full_sommerfeld"
+        }),
+        Method::ClosedForm(Approximation::Long) => Some(if cav {
+            "long_reynolds"
+        } else {
+            "long_full_sommerfeld"
+        }),
         Method::Numerical { .. } => None,
     }
 }
@@ -755,21 +934,21 @@ fn approximation_note(case: &Case) -> Option<String> {
     }
 }
 
-fn validity_warnings(ctx: &mut Context, case: &Case, point: &Point) {
+fn validity_warnings(notes: &mut Notes, case: &Case, point: &Point) {
     let ld = case.geometry.l_over_d();
     match case.method {
-        Method::ClosedForm(Approximation::Short) if ld > 0.5 => ctx.warn(
+        Method::ClosedForm(Approximation::Short) if ld > 0.5 => notes.warn(
             "short_bearing_outside_validity",
             format!("the short-bearing approximation holds for L/D ≤ 0.5 (trends to 1); L/D = {ld:.3}: use a numerical fidelity"),
         ),
-        Method::ClosedForm(Approximation::Long) if ld < 2.0 => ctx.warn(
+        Method::ClosedForm(Approximation::Long) if ld < 2.0 => notes.warn(
             "long_bearing_outside_validity",
             format!("the long-bearing approximation overestimates load capacity below L/D ≈ 2; L/D = {ld:.3}: use a numerical fidelity"),
         ),
         _ => {}
     }
     if point.eccentricity_ratio > 0.95 {
-        ctx.warn(
+        notes.warn(
             "very_high_eccentricity",
             format!("ε = {:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", point.eccentricity_ratio, 100.0 * (1.0 - point.eccentricity_ratio)),
         );
@@ -834,20 +1013,20 @@ fn coefficients_at(
 fn dynamic_coefficients(
     case: &Case,
     op: &Operating,
-    ctx: &mut Context,
-) -> Result<Option<(Coefficients, Stability)>, CalcError> {
+    budget: &Budget,
+    notes: &mut Notes,
+) -> Result<Option<(Coefficients, RotorStability)>, CalcError> {
     if !case.cavitation() {
-        ctx.warn(
+        notes.warn(
             "no_dynamics_full_film",
             "stiffness and damping are given for the cavitating film only",
         );
         return Ok(None);
     }
-    let budget = ctx.budget();
     let eps = op.point.eccentricity_ratio;
     let physics = case.physics(op.temperature_c);
-    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, &budget)? else {
-        ctx.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
+    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, budget)? else {
+        notes.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
     };
     let g = case.geometry;
@@ -927,7 +1106,7 @@ fn dynamic_coefficients(
     };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, &budget)) {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, budget)) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
@@ -994,7 +1173,7 @@ fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, locus_physics(e)?, &budget)?
+            coefficients_at(case, search, e, locus_physics(e)?, budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),
@@ -1008,9 +1187,9 @@ fn dynamic_coefficients(
         (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
     };
     if !stable_now {
-        ctx.warn("oil_whirl", statement.clone());
+        notes.warn("oil_whirl", statement.clone());
     }
-    let stability = Stability {
+    let stability = RotorStability {
         stable_at_operating_speed: stable_now,
         threshold_speed_rpm: threshold_rpm,
         whirl_frequency_ratio: whirl.whirl_frequency_ratio,
@@ -1018,7 +1197,7 @@ fn dynamic_coefficients(
         critical_speed_rad_s: whirl
             .critical_mass_parameter
             .map(|mc| (mc * w / (mass * g.radial_clearance_m)).sqrt()),
-        critical_speed_dimensionless: whirl
+        critical_speed_nd: whirl
             .critical_mass_parameter
             .map(|mc| (mc * w / (mass * GRAVITY)).sqrt()),
         mass_parameter: mass_parameter(omega),
