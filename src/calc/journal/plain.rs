@@ -650,12 +650,7 @@ pub struct PlainOutput {
 impl Calculation for PlainJournal {
     const PATH: &'static str = "/v1/journal-bearings/plain";
     const SUMMARY: &'static str = "Plain 360° journal bearing: equilibrium, film, friction, flow, temperature, K and C, stability";
-    const DESCRIPTION: &'static str = "Finite-length Reynolds equation by flux-conservative finite volumes with Reynolds cavitation (projected SOR), \
-nodes clustered towards h_min, film starting at h_max (Khonsari & Booser §8.12, Table 8.6 conventions: S = μ N_s L D (R/C)²/W with N_s in rev/s, \
-angles from h_max in the direction of rotation, friction from the journal-surface shear over the full circumference). \
-Equilibrium from the load by Brent's method on ln S against ln(ε/(1−ε)). `fidelity: closed_form` gives the infinitely short (Ocvirk) or long \
-(Sommerfeld / half-Sommerfeld / Reynolds) bearing. Stiffness and damping by perturbation of the converged film (feed line fixed at the \
-equilibrium h_max, cavitation re-solved in every perturbed film); rigid-rotor threshold by Lund's method.";
+    const DESCRIPTION: &'static str = include_str!("plain.md");
     const FIDELITY: &'static [Level] =
         &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
     const EFFECTS: &'static [&'static str] = &[
