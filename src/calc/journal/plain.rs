@@ -760,3 +760,6 @@ impl From<Solution> for PlainOutput {
         }
     }
 }
+
+#[cfg(test)]
+mod tests;
