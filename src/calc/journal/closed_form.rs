@@ -40,13 +40,13 @@ pub struct Performance {
     /// (ε/2) sin φ + 2π² S / √(1 − ε²) (G5).
     pub friction_parameter: f64,
     /// (p_max − p_s)(C/R)²/(μ N_s), N_s in rev/s: 2π × Table 8.4's ω-based P̄_max.
-    pub max_pressure_bar: f64,
+    pub max_pressure_nd: f64,
     /// Angle of the peak pressure from h_max, rad.
     pub max_pressure_angle_rad: f64,
     /// Film rupture angle from h_max, rad; `None` for the full Sommerfeld film.
     pub cavitation_angle_rad: Option<f64>,
     /// Q_L / ((π/2) N_s D L C), both ends: 0 for the long bearing, 2ε for the short bearing.
-    pub side_leakage_bar: f64,
+    pub side_leakage_nd: f64,
 }
 
 /// Infinitely long bearing (ILA, §8.2–8.8).
@@ -205,7 +205,7 @@ const OMEGA_TO_REV_PER_S: f64 = 2.0 * PI;
 
 /// The peak film pressure in Table 8.6's N_s-based scale, and its angle from h_max (rad).
 struct PressurePeak {
-    bar: f64,
+    nd: f64,
     angle_rad: f64,
 }
 
@@ -218,17 +218,17 @@ fn assemble(
     attitude_angle_rad: f64,
     peak: PressurePeak,
     cavitation_angle_rad: Option<f64>,
-    side_leakage_bar: f64,
+    side_leakage_nd: f64,
 ) -> Performance {
     Performance {
         sommerfeld_number,
         attitude_angle_rad,
         friction_parameter: 0.5 * eps * attitude_angle_rad.sin()
             + petroff_friction_parameter(sommerfeld_number) / (1.0 - eps * eps).sqrt(),
-        max_pressure_bar: peak.bar,
+        max_pressure_nd: peak.nd,
         max_pressure_angle_rad: peak.angle_rad,
         cavitation_angle_rad,
-        side_leakage_bar,
+        side_leakage_nd,
     }
 }
 
@@ -236,10 +236,10 @@ fn assemble(
 /// 4 − 5ε² + ε⁴ is written (1 − ε²)(4 − ε²).
 fn sommerfeld_long_peak(eps: f64) -> PressurePeak {
     let e2 = eps * eps;
-    let bar_omega = 3.0 * eps * (4.0 - e2) * ((1.0 - e2) * (4.0 - e2)).sqrt()
+    let nd_omega = 3.0 * eps * (4.0 - e2) * ((1.0 - e2) * (4.0 - e2)).sqrt()
         / (2.0 * (1.0 - e2).powi(2) * (2.0 + e2));
     PressurePeak {
-        bar: OMEGA_TO_REV_PER_S * bar_omega,
+        nd: OMEGA_TO_REV_PER_S * nd_omega,
         angle_rad: (-3.0 * eps / (2.0 + e2)).acos(),
     }
 }
@@ -252,7 +252,7 @@ fn ocvirk_peak(eps: f64, l_over_d: f64) -> PressurePeak {
     let cos_peak = -6.0 * eps / (1.0 + (1.0 + 24.0 * eps * eps).sqrt());
     let sin_peak = (1.0 - cos_peak * cos_peak).sqrt();
     PressurePeak {
-        bar: 6.0 * PI * l_over_d * l_over_d * eps * sin_peak / (1.0 + eps * cos_peak).powi(3),
+        nd: 6.0 * PI * l_over_d * l_over_d * eps * sin_peak / (1.0 + eps * cos_peak).powi(3),
         angle_rad: cos_peak.acos(),
     }
 }
@@ -281,7 +281,7 @@ fn reynolds_long_bearing(eps: f64) -> Performance {
     let attitude_angle_rad = ((1.0 - e2).sqrt() * arc).atan2(opening);
     let gamma_peak = 2.0 * PI - gamma_cav;
     let peak = PressurePeak {
-        bar: OMEGA_TO_REV_PER_S * reynolds_pressure_bar(eps, gamma_peak, gamma_cav),
+        nd: OMEGA_TO_REV_PER_S * reynolds_pressure_nd(eps, gamma_peak, gamma_cav),
         angle_rad: theta_from_gamma(eps, gamma_peak),
     };
     assemble(
@@ -317,7 +317,7 @@ fn reynolds_rupture_gamma(eps: f64) -> f64 {
 /// Long-bearing pressure with the film's flow set by γ_c (G2, §8.7), ω-based:
 /// P̄(γ) = 6(1 − ε²)^{−3/2} {γ − ε sin γ − [(2 + ε²)γ − 4ε sin γ + ε² sin γ cos γ]/[2(1 − ε cos γ_c)]},
 /// from ∫dθ/h̄² and ∫dθ/h̄³ in the Sommerfeld variable, with P̄(0) = 0 and dP̄/dθ = 0 at γ_c.
-fn reynolds_pressure_bar(eps: f64, gamma: f64, gamma_cav: f64) -> f64 {
+fn reynolds_pressure_nd(eps: f64, gamma: f64, gamma_cav: f64) -> f64 {
     let e2 = eps * eps;
     let (sin_g, cos_g) = gamma.sin_cos();
     let flow_film = 1.0 - eps * gamma_cav.cos();

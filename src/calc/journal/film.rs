@@ -75,14 +75,14 @@ pub struct FilmSolution {
     pub load_radial: f64,
     pub load_tangential: f64,
     /// P̄_max and its angle from h_max, rad (mid-plane).
-    pub max_pressure_bar: f64,
+    pub max_pressure_nd: f64,
     pub max_pressure_angle: f64,
     /// Film rupture angle from h_max on the mid-plane, rad (2π when the film never ruptures).
     pub cavitation_angle: f64,
     /// Q_L/((π/2) N_s D L C), both ends.
-    pub side_leakage_bar: f64,
+    pub side_leakage_nd: f64,
     /// Q_i/((π/2) N_s D L C) at the feed line θ = 0.
-    pub inlet_flow_bar: f64,
+    pub inlet_flow_nd: f64,
     /// The film's extent (θ start, θ end).
     pub span: (f64, f64),
     /// The smallest film thickness h̄_min = h_min/C.
@@ -292,7 +292,7 @@ pub struct Port {
     /// Angular width, rad (w_g/R, or D_H/R for a hole); at least one node column.
     pub width: f64,
     /// Supply pressure above ambient, P̄_s = p_s (C/R)²/(μ N_s).
-    pub pressure_bar: f64,
+    pub pressure_nd: f64,
 }
 
 impl FilmModel {
@@ -463,7 +463,7 @@ pub fn solve(
                 for j in 0..=g.ny {
                     for i in 0..=g.nx() {
                         if held(g.x[i], g.y(j)) {
-                            p[at(&g, i, j)] = port.pressure_bar;
+                            p[at(&g, i, j)] = port.pressure_nd;
                             content[at(&g, i, j)] = 1.0;
                         }
                     }
@@ -559,7 +559,7 @@ fn integrate(
         .enumerate()
         .max_by(|a, b| a.1.total_cmp(b.1))
         .map_or(0, |m| m.0);
-    let (mut max_pressure_bar, mut max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
+    let (mut max_pressure_nd, mut max_pressure_angle) = parabolic_peak(&g.x, &mid, imax);
     if !g.symmetric {
         // A tilted film peaks towards an end: take the row that holds the largest pressure.
         let (k, _) = p
@@ -570,7 +570,7 @@ fn integrate(
         let row_index = k / (g.nx() + 1);
         if row_index != mid_row {
             let row: Vec<f64> = (0..=g.nx()).map(|i| p[at(g, i, row_index)]).collect();
-            (max_pressure_bar, max_pressure_angle) = parabolic_peak(&g.x, &row, k % (g.nx() + 1));
+            (max_pressure_nd, max_pressure_angle) = parabolic_peak(&g.x, &row, k % (g.nx() + 1));
         }
     }
     let cavitation_angle = match (imax..=g.nx()).find(|&i| mid[i] <= 0.0) {
@@ -620,7 +620,7 @@ fn integrate(
     } else {
         edge_flow(1, 2, 0.0) + edge_flow(g.ny - 1, g.ny - 2, 1.0)
     };
-    let side_leakage_bar = edges / (48.0 * PI * l_over_d * l_over_d);
+    let side_leakage_nd = edges / (48.0 * PI * l_over_d * l_over_d);
 
     // Inlet flow at θ = 0: ∫ [h̄ − h̄³ ∂θP̄/(12π)] dȳ, second-order one-sided derivative.
     let (d1, d2) = (g.x[1] - g.x[0], g.x[2] - g.x[1]);
@@ -636,11 +636,11 @@ fn integrate(
     let mut solution = FilmSolution {
         load_radial: radial,
         load_tangential: tangential,
-        max_pressure_bar,
+        max_pressure_nd,
         max_pressure_angle,
         cavitation_angle,
-        side_leakage_bar,
-        inlet_flow_bar: inlet,
+        side_leakage_nd,
+        inlet_flow_nd: inlet,
         span: (g.x[0], g.x[g.nx()]),
         min_thickness: film.min_thickness(),
         pressure_shear,
@@ -665,7 +665,7 @@ fn integrate(
                 side: fluxes.side * scale,
             });
             if g.periodic {
-                solution.inlet_flow_bar = solution.side_leakage_bar;
+                solution.inlet_flow_nd = solution.side_leakage_nd;
             }
             // Couette shear carried by the liquid only: θ_f G_f/h̄ (streamers in the cavitated
             // zone, Stachowiak & Batchelor §5.3: τ* = h_cav/h² there), by the nodes' volumes.

@@ -178,7 +178,7 @@ impl Case {
         let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
             length_ratio,
             width: 2.0 * width_m / g.diameter_m,
-            pressure_bar: p_s / pressure_scale,
+            pressure_nd: p_s / pressure_scale,
         };
         Some(match self.feed {
             _ if self.arc.is_some() => Supply::line(FeedLine::MaxFilm),
@@ -308,7 +308,7 @@ impl Case {
 
     fn side_leakage(&self, op: &Operating) -> f64 {
         let g = self.geometry;
-        op.point.side_leakage_bar
+        op.point.side_leakage_nd
             * 0.5
             * PI
             * self.speed_rps()
@@ -539,9 +539,9 @@ fn outputs(
         sommerfeld_number: point.sommerfeld_number,
         eccentricity_ratio: point.eccentricity_ratio,
         attitude_angle: point.attitude_angle,
-        min_film_thickness_m: g.radial_clearance_m * point.min_film_bar,
-        max_pressure_pa: point.max_pressure_bar * pressure_scale + supply_pressure,
-        max_pressure_nd: point.max_pressure_bar,
+        min_film_thickness_m: g.radial_clearance_m * point.min_film_nd,
+        max_pressure_pa: point.max_pressure_nd * pressure_scale + supply_pressure,
+        max_pressure_nd: point.max_pressure_nd,
         max_pressure_angle: point.max_pressure_angle,
         cavitation_start_angle: point.cavitation_angle,
         cavitated_area_fraction: point.cavitated_fraction,
@@ -549,10 +549,10 @@ fn outputs(
         friction_parameter: point.friction_parameter,
         friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
         power_loss_w: halves * power,
-        side_leakage_m3_s: point.side_leakage_bar * flow_scale,
-        side_leakage_nd: point.side_leakage_bar,
+        side_leakage_m3_s: point.side_leakage_nd * flow_scale,
+        side_leakage_nd: point.side_leakage_nd,
         inlet_flow_m3_s: point
-            .inlet_flow_bar
+            .inlet_flow_nd
             .filter(|_| halves == 1.0)
             .map(|q| q * flow_scale),
         temperature_rise_k: rise,
@@ -581,7 +581,7 @@ fn outputs(
         } else {
             None
         },
-        moment: point.moment_bar.map(|m| {
+        moment: point.moment_nd.map(|m| {
             let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
             let (mx, my) = (m[0] * scale, m[1] * scale);
             // The tilt direction u in the load frame; the tilt is a rotation about z × u.

@@ -78,7 +78,7 @@ fn reynolds_long_bearing_reproduces_table_8_4() {
         );
         assert_close(
             &format!("P̄_max (ω-based) at {at}"),
-            got.max_pressure_bar / OMEGA_TO_REV_PER_S,
+            got.max_pressure_nd / OMEGA_TO_REV_PER_S,
             column(row, "P_max_bar"),
             digits4,
         );
@@ -123,11 +123,11 @@ fn reynolds_long_bearing_reproduces_table_8_4() {
 fn reynolds_peak_is_the_maximum_of_the_pressure_curve() {
     for eps in [0.01, 0.3, 0.7, 0.95] {
         let gamma_cav = reynolds_rupture_gamma(eps);
-        let pressure = |gamma: f64| reynolds_pressure_bar(eps, gamma, gamma_cav);
+        let pressure = |gamma: f64| reynolds_pressure_nd(eps, gamma, gamma_cav);
         let gamma_max = golden_section_max(pressure, 0.0, gamma_cav);
         let got = long_bearing(eps, Boundary::Reynolds);
         let want = OMEGA_TO_REV_PER_S * pressure(gamma_max);
-        assert_close("P̄_max", got.max_pressure_bar, want, 1e-9 * want);
+        assert_close("P̄_max", got.max_pressure_nd, want, 1e-9 * want);
         assert_close(
             "θ_max",
             got.max_pressure_angle_rad,
@@ -139,7 +139,7 @@ fn reynolds_peak_is_the_maximum_of_the_pressure_curve() {
 }
 
 /// Full-Sommerfeld long-bearing pressure, ω-based (Table 8.2).
-fn sommerfeld_pressure_bar(eps: f64, theta: f64) -> f64 {
+fn sommerfeld_pressure_nd(eps: f64, theta: f64) -> f64 {
     let (sin_t, cos_t) = theta.sin_cos();
     6.0 * eps * sin_t * (2.0 + eps * cos_t) / ((2.0 + eps * eps) * (1.0 + eps * cos_t).powi(2))
 }
@@ -147,11 +147,11 @@ fn sommerfeld_pressure_bar(eps: f64, theta: f64) -> f64 {
 #[test]
 fn full_sommerfeld_peak_is_the_maximum_of_the_pressure_curve() {
     for eps in [0.01, 0.3, 0.7, 0.95] {
-        let theta_max = golden_section_max(|t| sommerfeld_pressure_bar(eps, t), 0.0, PI);
-        let want = OMEGA_TO_REV_PER_S * sommerfeld_pressure_bar(eps, theta_max);
+        let theta_max = golden_section_max(|t| sommerfeld_pressure_nd(eps, t), 0.0, PI);
+        let want = OMEGA_TO_REV_PER_S * sommerfeld_pressure_nd(eps, theta_max);
         for boundary in [Boundary::FullSommerfeld, Boundary::HalfSommerfeld] {
             let got = long_bearing(eps, boundary);
-            assert_close("P̄_max", got.max_pressure_bar, want, 1e-9 * want);
+            assert_close("P̄_max", got.max_pressure_nd, want, 1e-9 * want);
             assert_close("θ_max", got.max_pressure_angle_rad, theta_max, 1e-4);
         }
     }
@@ -183,17 +183,17 @@ fn long_bearing_reproduces_example_8_1() {
         .x
     };
     // P_max = μ ω (R/C)² P̄(ω) = μ N_s (R/C)² P̄(N_s).
-    let psi_per_bar = viscosity_reyn * speed_rps * radius_over_clearance.powi(2);
+    let psi_per_nd = viscosity_reyn * speed_rps * radius_over_clearance.powi(2);
 
     let eps = eccentricity_for(Boundary::FullSommerfeld);
     let full = long_bearing(eps, Boundary::FullSommerfeld);
     assert_close("full ε", eps, 0.0433, 0.005 * 0.0433);
     assert_close("full φ", full.attitude_angle_rad.to_degrees(), 90.0, 1e-12);
-    let p_bar_omega = full.max_pressure_bar / OMEGA_TO_REV_PER_S;
-    assert_close("full P̄_max", p_bar_omega, 0.260, 0.005 * 0.260);
+    let p_nd_omega = full.max_pressure_nd / OMEGA_TO_REV_PER_S;
+    assert_close("full P̄_max", p_nd_omega, 0.260, 0.005 * 0.260);
     assert_close(
         "full P_max",
-        psi_per_bar * full.max_pressure_bar,
+        psi_per_nd * full.max_pressure_nd,
         63.7,
         0.005 * 63.7,
     );
@@ -210,7 +210,7 @@ fn long_bearing_reproduces_example_8_1() {
     assert_close("half φ", half.attitude_angle_rad.to_degrees(), 86.8, 0.05);
     assert_close(
         "half P_max",
-        psi_per_bar * half.max_pressure_bar,
+        psi_per_nd * half.max_pressure_nd,
         127.7,
         0.005 * 127.7,
     );
@@ -266,9 +266,9 @@ fn long_bearing_load_and_friction_match_the_integrated_pressure() {
                     let gamma = ((1.0 - eps * eps).sqrt() * t.sin())
                         .atan2(t.cos() + eps)
                         .rem_euclid(2.0 * PI);
-                    reynolds_pressure_bar(eps, gamma, gamma_cav)
+                    reynolds_pressure_nd(eps, gamma, gamma_cav)
                 }
-                _ => sommerfeld_pressure_bar(eps, t),
+                _ => sommerfeld_pressure_nd(eps, t),
             };
             let along = simpson(|t| pressure(t) * t.cos(), 0.0, active_end, n);
             let across = simpson(|t| pressure(t) * t.sin(), 0.0, active_end, n);
@@ -345,7 +345,7 @@ fn short_bearing_load_and_friction_match_the_integrated_pressure() {
             let theta_max = golden_section_max(|t| eps * t.sin() / film(t).powi(3), 0.0, PI);
             let peak =
                 6.0 * PI * l_over_d * l_over_d * eps * theta_max.sin() / film(theta_max).powi(3);
-            assert_close("P̄_max", got.max_pressure_bar, peak, 1e-9 * peak);
+            assert_close("P̄_max", got.max_pressure_nd, peak, 1e-9 * peak);
             assert_close("θ_max", got.max_pressure_angle_rad, theta_max, 1e-4);
         }
     }
@@ -392,7 +392,7 @@ fn short_half_sommerfeld_attitude_and_leakage() {
         let got = short_bearing(eps, 0.25, Boundary::HalfSommerfeld).unwrap();
         let want = (PI * (1.0 - eps * eps).sqrt() / (4.0 * eps)).atan();
         assert_close("φ", got.attitude_angle_rad, want, 1e-12);
-        assert_eq!(got.side_leakage_bar, 2.0 * eps);
+        assert_eq!(got.side_leakage_nd, 2.0 * eps);
         assert_eq!(got.cavitation_angle_rad, Some(PI));
     }
 }
@@ -465,7 +465,7 @@ fn short_bearing_tracks_table_8_6_at_quarter_length() {
         let q = column(row, "Q_L_bar");
         assert_close(
             &format!("Q̄_L at ε = {eps}"),
-            got.side_leakage_bar,
+            got.side_leakage_nd,
             q,
             0.02 * q,
         );
@@ -505,13 +505,13 @@ fn everything_is_finite_and_in_range_over_the_eccentricity_range() {
                 row.sommerfeld_number,
                 row.attitude_angle_rad,
                 row.friction_parameter,
-                row.max_pressure_bar,
+                row.max_pressure_nd,
                 row.max_pressure_angle_rad,
-                row.side_leakage_bar,
+                row.side_leakage_nd,
             ];
             assert!(fields.iter().all(|v| v.is_finite()), "ε = {eps}: {row:?}");
             assert!(
-                row.sommerfeld_number > 0.0 && row.max_pressure_bar > 0.0,
+                row.sommerfeld_number > 0.0 && row.max_pressure_nd > 0.0,
                 "{row:?}"
             );
             assert!(row.attitude_angle_rad > 0.0 && row.attitude_angle_rad <= PI / 2.0);

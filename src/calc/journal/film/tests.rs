@@ -135,7 +135,7 @@ fn the_reformation_case_converges_under_refinement() {
         let f = positioned_film(0.5, 1.0, model, mesh, STOP, None, &mut || true)
             .unwrap()
             .1;
-        (f.sommerfeld_number(), f.inlet_flow_bar)
+        (f.sommerfeld_number(), f.inlet_flow_nd)
     };
     // S settles within 0.1 % from 48 × 6 on (0.18402, 0.18393, 0.18393, 0.18404: the port's
     // node set changes with the mesh); its supply flow converges more slowly (0.610, 0.650,
@@ -179,9 +179,9 @@ fn finite_from_light_to_heavy_load() {
                 let s = j.sommerfeld_number();
                 assert!(s.is_finite() && s > 0.0, "L/D {ld} ε {eps} {feed:?}");
                 for v in [
-                    j.max_pressure_bar,
-                    j.side_leakage_bar,
-                    j.inlet_flow_bar,
+                    j.max_pressure_nd,
+                    j.side_leakage_nd,
+                    j.inlet_flow_nd,
                     j.couette_shear,
                     j.pressure_shear,
                     j.cavitated_fraction.unwrap(),
@@ -211,14 +211,14 @@ fn coarse_meshes_and_their_ratios() {
     assert_eq!(m(96, 2).refinement_ratio(), 2.0);
 }
 
-fn ported(position: FeedLine, length_ratio: f64, width: f64, pressure_bar: f64) -> FilmModel {
+fn ported(position: FeedLine, length_ratio: f64, width: f64, pressure_nd: f64) -> FilmModel {
     FilmModel {
         mass_conserving: Some(Supply {
             position,
             port: Some(Port {
                 length_ratio,
                 width,
-                pressure_bar,
+                pressure_nd,
             }),
         }),
         ..FilmModel::REYNOLDS
@@ -254,7 +254,7 @@ fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
         assert!(flows.imbalance().abs() < 1e-6, "{flows:?}");
         // The reported supply is the leakage, within the discrete edge fluxes' first order.
         assert!(
-            (f.inlet_flow_bar / flows.supply - 1.0).abs() < 0.1,
+            (f.inlet_flow_nd / flows.supply - 1.0).abs() < 0.1,
             "{flows:?}"
         );
     }
@@ -284,7 +284,7 @@ fn more_supply_pressure_floods_more_of_the_film() {
         )
         .unwrap();
         if let Some(prev) = &last {
-            assert!(f.inlet_flow_bar > prev.inlet_flow_bar, "P̄_s {p}");
+            assert!(f.inlet_flow_nd > prev.inlet_flow_nd, "P̄_s {p}");
             assert!(f.cavitated_fraction < prev.cavitated_fraction, "P̄_s {p}");
         }
         last = Some(f);

@@ -142,7 +142,7 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
                             FeedLine::OppositeLoad => "the top, opposite the load",
                             FeedLine::TwoGrooves => "±90° to the load line",
                         },
-                        port.pressure_bar
+                        port.pressure_nd
                     ),
                     (FeedLine::TwoGrooves, None) => "through two grooves".to_string(),
                 }
