@@ -238,16 +238,24 @@ pub struct FilmModel {
     /// A partial bearing: its arc, rad, centred on the load line (None: the full 360° bearing,
     /// fed at h_max).
     pub arc: Option<f64>,
-    /// A misaligned journal (Khonsari & Booser Eq. 8.70): ε′ = (difference of the journal-centre
-    /// displacements at the two ends)/C, and the direction of that tilt from the load line in
-    /// the direction of rotation, rad. None: aligned.
-    /// The third member: the direction is measured from the line of centres instead (a tilt
-    /// that follows the journal). Stachowiak & Batchelor's PARTIAL and STABILITY programs tilt
-    /// in the load plane: load line, direction 0.
-    pub misalignment: Option<(f64, f64, bool)>,
+    /// A misaligned journal (Khonsari & Booser Eq. 8.70); None: aligned.
+    pub misalignment: Option<Misalignment>,
     /// Mass-conserving (JFO) cavitation in place of the Reynolds condition, with the supply
     /// that feeds it (requires `cavitation`).
     pub mass_conserving: Option<Supply>,
+}
+
+/// A tilted journal (Khonsari & Booser Eq. 8.70). Stachowiak & Batchelor's PARTIAL and
+/// STABILITY programs tilt in the load plane: load line, direction 0.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Misalignment {
+    /// ε′ = (difference of the journal-centre displacements at the two ends)/C, dimensionless.
+    pub tilt: f64,
+    /// Direction of the tilt in the direction of rotation, rad, from the load line (or from the
+    /// line of centres when `from_line_of_centres`).
+    pub direction: f64,
+    /// The direction is measured from the line of centres (a tilt that follows the journal).
+    pub from_line_of_centres: bool,
 }
 
 /// Where a mass-conserving film is fed.

@@ -16,7 +16,7 @@ pub use solution::{
 use self::decisions::{approximation_name, approximation_note};
 use super::dynamics::Coefficients;
 use super::feed::{self, Feed, Flows};
-use super::film::{FeedLine, FilmModel, Port, Supply};
+use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
 use super::performance::{self, Method, Point};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
@@ -67,8 +67,8 @@ pub struct Case {
     pub feed: Option<Feed>,
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
-    /// (ε′, direction of the tilt from the load line, rad); None when aligned.
-    pub misalignment: Option<(f64, f64, bool)>,
+    /// The journal's tilt; None when aligned.
+    pub misalignment: Option<Misalignment>,
     pub rotor_mass_kg: Option<f64>,
     /// Shaft stiffness in series with the film, N/m (None: rigid).
     pub shaft_stiffness_n_m: Option<f64>,
@@ -585,7 +585,11 @@ fn outputs(
             let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
             let (mx, my) = (m[0] * scale, m[1] * scale);
             // The tilt direction u in the load frame; the tilt is a rotation about z × u.
-            let (_, dir, from_centres) = case.misalignment.unwrap_or_default();
+            let Misalignment {
+                direction: dir,
+                from_line_of_centres: from_centres,
+                ..
+            } = case.misalignment.unwrap_or_default();
             let towards = if from_centres {
                 // From the line of centres (h_min lies φ ahead of the load line).
                 dir + point.attitude_angle

@@ -124,7 +124,8 @@ pub fn positioned_film(
             Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
             None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
         },
-        tilt: model.misalignment.map(|(e, dir, from_centres)| {
+        tilt: model.misalignment.map(|m| {
+            let (e, dir, from_centres) = (m.tilt, m.direction, m.from_line_of_centres);
             (
                 e,
                 if from_centres {

@@ -7,6 +7,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::feed::FeedSpec;
+use super::film::Misalignment;
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::lubricant::LubricantSpec;
@@ -337,11 +338,11 @@ impl Validate for PlainInput {
                         "the closed forms are for an aligned journal; use a numerical fidelity",
                     ));
                 }
-                (tilt > 0.0).then_some((
+                (tilt > 0.0).then_some(Misalignment {
                     tilt,
-                    m.direction_deg.to_radians(),
-                    m.measured_from == MisalignmentReference::LineOfCentres,
-                ))
+                    direction: m.direction_deg.to_radians(),
+                    from_line_of_centres: m.measured_from == MisalignmentReference::LineOfCentres,
+                })
             }
         };
         if misalignment.is_some()

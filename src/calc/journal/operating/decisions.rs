@@ -3,7 +3,7 @@
 
 use super::{Case, Effects, Geometry, Notes, TURBULENT_REYNOLDS};
 use crate::calc::journal::feed::Feed;
-use crate::calc::journal::film::FeedLine;
+use crate::calc::journal::film::{FeedLine, Misalignment};
 use crate::calc::journal::performance::{Approximation, Method, Point};
 use crate::effects::{Criterion, Decision, Mode};
 
@@ -165,7 +165,11 @@ pub(super) fn decide_misalignment(notes: &mut Notes, case: &Case) {
         "misalignment",
         match case.misalignment {
             None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
-            Some((e, dir, from_centres)) => Decision {
+            Some(Misalignment {
+                tilt: e,
+                direction: dir,
+                from_line_of_centres: from_centres,
+            }) => Decision {
                 applied: true,
                 mode: Mode::On,
                 reason: format!(
