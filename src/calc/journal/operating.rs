@@ -13,7 +13,6 @@ pub use solution::{
     BushTemperatures, CoefficientsMethod, Dynamics, Moment, ProfileNode, RotorStability, Solution,
 };
 
-use self::decisions::{approximation_name, approximation_note};
 use super::dynamics::Coefficients;
 use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
@@ -561,8 +560,8 @@ fn outputs(
         effective_temperature_c: op.temperature_c,
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,
-        approximation: approximation_name(case),
-        approximation_note: approximation_note(case),
+        approximation: decisions::approximation_name(case),
+        approximation_note: decisions::approximation_note(case),
         petroff_friction_coefficient: 2.0 * PI * PI * point.sommerfeld_number / g.r_over_c(),
         pressure_profile: if case.include_field {
             point.midplane.as_ref().map(|m| {
@@ -644,7 +643,7 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
         Method::ClosedForm(_) => SolverReport {
             method: format!(
                 "closed_form_{}",
-                approximation_name(case).unwrap_or_default()
+                decisions::approximation_name(case).unwrap_or_default()
             ),
             iterations: evaluations,
             ..SolverReport::closed_form("closed_form")
