@@ -4,21 +4,24 @@
 
 use std::f64::consts::PI;
 
-use super::closed_form;
-use super::dynamics::{self, Coefficients};
-use super::feed::{self, Feed, Flows};
-use super::film::{FeedLine, FilmModel, Port, Supply};
-use super::performance::{self, Approximation, Method, Point, MAX_ECCENTRICITY};
-use super::plain::{
-    CavitationMode, DynamicCoefficients, FilmMoment, JournalEffects, PlainOutput, ProfilePoint,
-    Stability,
+mod decisions;
+mod solution;
+mod stability;
+mod thermal;
+
+pub use solution::{
+    BushTemperatures, CoefficientsMethod, Dynamics, Moment, ProfileNode, RotorStability, Solution,
 };
+
+use super::dynamics::Coefficients;
+use super::feed::{self, Feed, Flows};
+use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
+use super::performance::{self, Method, Point};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
-use crate::calc::{Budget, CalcError, Context};
+use crate::calc::{Budget, CalcError, Warning};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{IterationUnit, SolverReport, StopReason};
-use crate::numerics::roots::{brent, RootError, Stopping};
 
 /// Standard gravity, m/s² (the default rotor mass is W/g).
 const GRAVITY: f64 = 9.80665;
@@ -63,17 +66,73 @@ pub struct Case {
     pub feed: Option<Feed>,
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
-    /// (ε′, direction of the tilt from the load line, rad); None when aligned.
-    pub misalignment: Option<(f64, f64, bool)>,
+    /// The journal's tilt; None when aligned.
+    pub misalignment: Option<Misalignment>,
     pub rotor_mass_kg: Option<f64>,
     /// Shaft stiffness in series with the film, N/m (None: rigid).
     pub shaft_stiffness_n_m: Option<f64>,
     pub method: Method,
-    pub effects: JournalEffects,
+    pub effects: Effects,
     pub dynamics: bool,
     pub include_field: bool,
     /// Decided in [`solve`] from the film Reynolds number: the Ng–Pan turbulent film applies.
     pub turbulent: bool,
+}
+
+/// How the film cavitates: the model's reading of the request's cavitation mode.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum Cavitation {
+    /// The Reynolds condition.
+    #[default]
+    Auto,
+    /// The Reynolds condition.
+    On,
+    /// No cavitation: the full Sommerfeld film.
+    Off,
+    /// The Reynolds (Swift–Stieber) condition, p ≥ 0.
+    Reynolds,
+    /// Mass-conserving Jakobsson–Floberg–Olsson cavitation.
+    Jfo,
+}
+
+impl Cavitation {
+    /// The auto/on/off mode an effect report carries.
+    pub fn mode(self) -> Mode {
+        match self {
+            Cavitation::Auto => Mode::Auto,
+            Cavitation::Off => Mode::Off,
+            _ => Mode::On,
+        }
+    }
+}
+
+/// The effect modes the plain bearing understands (misalignment is decided from the geometry).
+#[derive(Debug, Clone, Copy, Default)]
+pub struct Effects {
+    pub thermal: Mode,
+    pub cavitation: Cavitation,
+    pub turbulence: Mode,
+    pub inertia: Mode,
+}
+
+/// What the model says beside its numbers, in the order it said it: the decision on each effect
+/// and the warnings (the caller records them).
+#[derive(Debug, Clone, Default)]
+pub struct Notes {
+    pub decisions: Vec<(&'static str, Decision)>,
+    pub warnings: Vec<Warning>,
+}
+
+impl Notes {
+    fn decide(&mut self, effect: &'static str, decision: Decision) {
+        self.decisions.push((effect, decision));
+    }
+    fn warn(&mut self, code: &'static str, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            code,
+            message: message.into(),
+        });
+    }
 }
 
 /// A solved operating point at one viscosity.
@@ -97,7 +156,7 @@ impl Case {
         mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
     }
     fn cavitation(&self) -> bool {
-        self.effects.cavitation != CavitationMode::Off
+        self.effects.cavitation != Cavitation::Off
     }
 
     /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
@@ -105,7 +164,7 @@ impl Case {
     /// pressure; a hole or axial groove(s) as ports at supply pressure in a periodic film,
     /// where the feed sits (opposite the load, at h_max, or two grooves at ±90°).
     fn supply(&self, t: f64) -> Option<Supply> {
-        if self.effects.cavitation != CavitationMode::Jfo {
+        if self.effects.cavitation != Cavitation::Jfo {
             return None;
         }
         let g = self.geometry;
@@ -118,7 +177,7 @@ impl Case {
         let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
             length_ratio,
             width: 2.0 * width_m / g.diameter_m,
-            pressure_bar: p_s / pressure_scale,
+            pressure_nd: p_s / pressure_scale,
         };
         Some(match self.feed {
             _ if self.arc.is_some() => Supply::line(FeedLine::MaxFilm),
@@ -164,7 +223,7 @@ impl Case {
     }
 
     fn mass_conserving(&self) -> bool {
-        self.cavitation() && self.effects.cavitation == CavitationMode::Jfo
+        self.cavitation() && self.effects.cavitation == Cavitation::Jfo
     }
 
     /// Whether the film's pressures are above ambient with the supply in them (JFO ports)
@@ -248,7 +307,7 @@ impl Case {
 
     fn side_leakage(&self, op: &Operating) -> f64 {
         let g = self.geometry;
-        op.point.side_leakage_bar
+        op.point.side_leakage_nd
             * 0.5
             * PI
             * self.speed_rps()
@@ -317,19 +376,63 @@ impl Case {
     }
 }
 
-pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
-    let budget = ctx.budget();
+/// The plain bearing at its operating point: every effect decided, the equilibrium, the
+/// dimensional outputs and (when asked) the dynamics; `budget` stops a late request.
+pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
+    let mut notes = Notes::default();
+    let notes = &mut notes;
+    let inlet = inlet_conditions(case, notes)?;
+    let mut case = case.clone();
+    case.turbulent = decisions::decide_turbulence(notes, &case, case.film_reynolds(inlet.t_in));
+    let case = &case;
+    let (isothermal, op) = equilibrium_at_effective_temperature(case, &inlet, budget, notes)?;
+    let thd = if inlet.temperature_dependent {
+        thermal::thd_temperatures(notes, case, inlet.t_in, isothermal.point.eccentricity_ratio)
+    } else {
+        None
+    };
+    let reynolds = film_reynolds_at(case, &op);
+    decisions::decide_inertia(notes, case.effects, reynolds, case.geometry);
+    decisions::decide_cavitation(notes, case, op.temperature_c);
+    decisions::decide_misalignment(notes, case);
+    decisions::validity_warnings(notes, case, &op.point);
+    let rise = case.temperature_rise(&op);
+    if rise.is_none() {
+        notes.warn("no_temperature_rise", "the long-bearing closed form has no side leakage, so no adiabatic temperature rise; use a numerical fidelity");
+    }
+    let dynamics = if case.dynamics {
+        stability::dynamic_coefficients(case, &op, budget, notes)?
+    } else {
+        None
+    };
+    let mut solution = outputs(case, &op, rise, thd, reynolds);
+    solution.dynamics = dynamics
+        .map(|(coefficients, stability)| dimensional_dynamics(case, &op, coefficients, stability));
+    solution.notes = std::mem::take(notes);
+    Ok(solution)
+}
+
+/// The inlet: its temperature (assumed when not given), whether the viscosity depends on it,
+/// and the viscosity there.
+struct Inlet {
+    t_in: f64,
+    mu_in: f64,
+    temperature_dependent: bool,
+}
+
+/// The inlet temperature and viscosity, with the lubricant's assumptions as warnings.
+fn inlet_conditions(case: &Case, notes: &mut Notes) -> Result<Inlet, CalcError> {
     let lub = &case.lubricant;
     let t_in = case.inlet_temperature_c.unwrap_or(DEFAULT_INLET_C);
     let temperature_dependent = !matches!(lub.temperature_law, TemperatureLaw::Constant { .. });
     if case.inlet_temperature_c.is_none() && temperature_dependent {
-        ctx.warn(
+        notes.warn(
             "inlet_temperature_assumed",
             format!("inlet_temperature_c not given: {DEFAULT_INLET_C} °C assumed"),
         );
     }
     for (code, message) in &lub.assumptions {
-        ctx.warn(code, message.clone());
+        notes.warn(code, message.clone());
     }
     let mu_in = lub.viscosity_pa_s(t_in);
     if !(mu_in.is_finite() && mu_in > 0.0) {
@@ -338,22 +441,39 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             "the lubricant's viscosity law has no value at this temperature",
         ));
     }
+    Ok(Inlet {
+        t_in,
+        mu_in,
+        temperature_dependent,
+    })
+}
 
-    let mut case = case.clone();
-    case.turbulent = decide_turbulence(ctx, &case, case.film_reynolds(t_in));
-    let case = &case;
-    let isothermal = case.operate(t_in, &budget)?;
+/// The equilibrium at the inlet temperature (isothermal) and, when the thermal effect applies,
+/// at the effective temperature: (isothermal, operating).
+fn equilibrium_at_effective_temperature(
+    case: &Case,
+    inlet: &Inlet,
+    budget: &Budget,
+    notes: &mut Notes,
+) -> Result<(Operating, Operating), CalcError> {
+    let lub = &case.lubricant;
+    let Inlet {
+        t_in,
+        mu_in,
+        temperature_dependent,
+    } = *inlet;
+    let isothermal = case.operate(t_in, budget)?;
     let mut op = isothermal.clone();
     let k = case.effective_fraction();
     match (temperature_dependent, case.temperature_rise(&isothermal)) {
-        (false, _) => ctx.decide(
+        (false, _) => notes.decide(
             "thermal",
             Decision::not_applicable(
                 case.effects.thermal,
                 "the lubricant's viscosity does not depend on temperature",
             ),
         ),
-        (true, None) => ctx.decide(
+        (true, None) => notes.decide(
             "thermal",
             Decision::not_applicable(
                 case.effects.thermal,
@@ -369,80 +489,39 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
             };
             let decision = Decision::decide(case.effects.thermal, criterion, "thermal");
             if decision.applied {
-                op = effective_temperature(case, t_in, k * rise, &budget)?;
+                op = thermal::effective_temperature(case, t_in, k * rise, budget)?;
             }
-            ctx.decide("thermal", decision);
+            notes.decide("thermal", decision);
         }
     }
 
-    let thd = if temperature_dependent {
-        thd_temperatures(ctx, case, t_in, isothermal.point.eccentricity_ratio)
-    } else {
-        None
-    };
+    Ok((isothermal, op))
+}
+
+/// Film Reynolds number ρ U C/μ at the operating point's temperature and viscosity.
+fn film_reynolds_at(case: &Case, op: &Operating) -> f64 {
+    let g = case.geometry;
+    let n_s = case.speed_rps();
+    let mu = op.viscosity_pa_s;
+    let rho = case.lubricant.density_kg_m3(op.temperature_c);
+    let u = PI * g.diameter_m * n_s;
+    rho * u * g.radial_clearance_m / mu
+}
+
+/// The dimensional outputs at the operating point (dynamics aside).
+fn outputs(
+    case: &Case,
+    op: &Operating,
+    rise: Option<f64>,
+    thd: Option<BushTemperatures>,
+    reynolds: f64,
+) -> Solution {
     let g = case.geometry;
     let point = &op.point;
     let n_s = case.speed_rps();
     let mu = op.viscosity_pa_s;
-    let rho = lub.density_kg_m3(op.temperature_c);
-    let u = PI * g.diameter_m * n_s;
-    let reynolds = rho * u * g.radial_clearance_m / mu;
-    decide_inertia(ctx, case.effects, reynolds, g);
-    let cavitation = Decision {
-        applied: case.cavitation(),
-        mode: case.effects.cavitation.mode(),
-        reason: match (case.cavitation(), case.supply(op.temperature_c)) {
-            (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
-            (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish (auto keeps it; `jfo` conserves mass through rupture and reformation)".into(),
-            (true, Some(supply)) => format!(
-                "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed {}",
-                match (supply.position, supply.port) {
-                    (FeedLine::MaxFilm, None) => "flooded along a line at h_max".to_string(),
-                    (FeedLine::OppositeLoad, None) => "flooded along a line opposite the load".to_string(),
-                    (position, Some(port)) => format!(
-                        "through the feed at {} at P̄_s = {:.4} (supply pressure), a periodic 360° film elsewhere",
-                        match position {
-                            FeedLine::MaxFilm => "h_max",
-                            FeedLine::OppositeLoad => "the top, opposite the load",
-                            FeedLine::TwoGrooves => "±90° to the load line",
-                        },
-                        port.pressure_bar
-                    ),
-                    (FeedLine::TwoGrooves, None) => "through two grooves".to_string(),
-                }
-            ),
-        },
-        criterion: None,
-        model: case
-            .cavitation()
-            .then_some(if case.mass_conserving() { "jfo" } else { "reynolds" }),
-    };
-    if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
-        ctx.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");
-    }
-    ctx.decide("cavitation", cavitation);
-    ctx.decide(
-        "misalignment",
-        match case.misalignment {
-            None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
-            Some((e, dir, from_centres)) => Decision {
-                applied: true,
-                mode: Mode::On,
-                reason: format!(
-                    "journal tilted {:.1}° from the {}: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
-                    dir.to_degrees(),
-                    if from_centres { "line of centres" } else { "load line" }
-                ),
-                criterion: None,
-                model: None,
-            },
-        },
-    );
-
-    validity_warnings(ctx, case, point);
-
-    let power = case.power_loss(&op);
-    let flows = case.flows(&op);
+    let power = case.power_loss(op);
+    let flows = case.flows(op);
     // The Reynolds film's pressures are relative to the supply's; a ported JFO film holds it.
     let supply_pressure = if case.ported() {
         0.0
@@ -452,56 +531,44 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
     // A circumferential groove makes two half-bearings: the solve is of one half.
     let halves = case.halves();
     let friction = point.friction_parameter / g.r_over_c();
-    let rise = case.temperature_rise(&op);
-    if rise.is_none() {
-        ctx.warn("no_temperature_rise", "the long-bearing closed form has no side leakage, so no adiabatic temperature rise; use a numerical fidelity");
-    }
     let pressure_scale = mu * n_s * g.r_over_c().powi(2);
     let flow_scale = 0.5 * PI * n_s * g.diameter_m * g.length_m * g.radial_clearance_m;
-
-    let dynamics = if case.dynamics {
-        dynamic_coefficients(case, &op, ctx)?
-    } else {
-        None
-    };
-    let mut output = PlainOutput {
+    Solution {
         load_n: halves * op.load_n,
         sommerfeld_number: point.sommerfeld_number,
         eccentricity_ratio: point.eccentricity_ratio,
-        attitude_angle_deg: point.attitude_angle.to_degrees(),
-        min_film_thickness_m: g.radial_clearance_m * point.min_film_bar,
-        max_pressure_pa: point.max_pressure_bar * pressure_scale + supply_pressure,
-        max_pressure_dimensionless: point.max_pressure_bar,
-        max_pressure_angle_deg: point.max_pressure_angle.to_degrees(),
-        cavitation_start_angle_deg: point.cavitation_angle.map(f64::to_degrees),
+        attitude_angle: point.attitude_angle,
+        min_film_thickness_m: g.radial_clearance_m * point.min_film_nd,
+        max_pressure_pa: point.max_pressure_nd * pressure_scale + supply_pressure,
+        max_pressure_nd: point.max_pressure_nd,
+        max_pressure_angle: point.max_pressure_angle,
+        cavitation_start_angle: point.cavitation_angle,
         cavitated_area_fraction: point.cavitated_fraction,
         friction_coefficient: friction,
         friction_parameter: point.friction_parameter,
         friction_torque_n_m: halves * friction * op.load_n * 0.5 * g.diameter_m,
         power_loss_w: halves * power,
-        side_leakage_m3_s: point.side_leakage_bar * flow_scale,
-        side_leakage_dimensionless: point.side_leakage_bar,
+        side_leakage_m3_s: point.side_leakage_nd * flow_scale,
+        side_leakage_nd: point.side_leakage_nd,
         inlet_flow_m3_s: point
-            .inlet_flow_bar
+            .inlet_flow_nd
             .filter(|_| halves == 1.0)
             .map(|q| q * flow_scale),
         temperature_rise_k: rise,
-        max_temperature_c: thd.map(|t| t.0),
-        shaft_temperature_c: thd.map(|t| t.1),
-        supply_flow_m3_s: flows.map(|f| f.pressure_fed),
-        total_flow_m3_s: flows.map(|f| f.total),
+        bush_temperatures: thd,
+        flows,
         effective_temperature_c: op.temperature_c,
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,
-        approximation: approximation_name(case),
-        approximation_note: approximation_note(case),
+        approximation: decisions::approximation_name(case),
+        approximation_note: decisions::approximation_note(case),
         petroff_friction_coefficient: 2.0 * PI * PI * point.sommerfeld_number / g.r_over_c(),
         pressure_profile: if case.include_field {
             point.midplane.as_ref().map(|m| {
                 m.iter()
                     .enumerate()
-                    .map(|(i, &(theta, p))| ProfilePoint {
-                        angle_deg: theta.to_degrees(),
+                    .map(|(i, &(theta, p))| ProfileNode {
+                        angle: theta,
                         pressure_pa: p * pressure_scale,
                         film_content: point
                             .midplane_content
@@ -513,11 +580,15 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         } else {
             None
         },
-        misalignment_moment: point.moment_bar.map(|m| {
+        moment: point.moment_nd.map(|m| {
             let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
             let (mx, my) = (m[0] * scale, m[1] * scale);
             // The tilt direction u in the load frame; the tilt is a rotation about z × u.
-            let (_, dir, from_centres) = case.misalignment.unwrap_or_default();
+            let Misalignment {
+                direction: dir,
+                from_line_of_centres: from_centres,
+                ..
+            } = case.misalignment.unwrap_or_default();
             let towards = if from_centres {
                 // From the line of centres (h_min lies φ ahead of the load line).
                 dir + point.attitude_angle
@@ -525,254 +596,45 @@ pub fn solve(case: &Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
                 dir
             };
             let axis = [-towards.sin(), towards.cos()];
-            FilmMoment {
-                frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+            Moment {
                 mx_n_m: mx,
                 my_n_m: my,
                 magnitude_n_m: mx.hypot(my),
-                dimensionless: m,
+                nd: m,
                 restoring_n_m: -(mx * axis[0] + my * axis[1]),
             }
         }),
-        dynamic_coefficients: None,
-        stability: None,
-    };
-    if let Some((coefficients, stability)) = dynamics {
-        let (w, c, omega) = (halves * op.load_n, g.radial_clearance_m, 2.0 * PI * n_s);
-        let [kxx, kxy, kyx, kyy] = coefficients.stiffness.map(|v| v * w / c);
-        let [cxx, cxy, cyx, cyy] = coefficients.damping.map(|v| v * w / (c * omega));
-        output.dynamic_coefficients = Some(DynamicCoefficients {
-            frame: "x along the static load, y perpendicular to it, 90° ahead in the direction of rotation".into(),
-            kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy,
-            stiffness_dimensionless: coefficients.stiffness,
-            damping_dimensionless: coefficients.damping,
-            method: match case.method {
-                Method::ClosedForm(_) => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film".into(),
-                Method::Numerical { .. } if case.mass_conserving() => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)".into(),
-                Method::Numerical { .. } => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film".into(),
-            },
-        });
-        output.stability = Some(stability);
+        dynamics: None,
+        report: report(case, point, op.evaluations),
+        notes: Notes::default(),
     }
-    ctx.report(report(case, point, op.evaluations));
-    Ok(output)
 }
 
-/// Jang & Khonsari's THD fits for the maximum bush and the shaft temperature (Khonsari & Booser
-/// Eq. 8.65, Table 8.11): T̄ = β (T − T_in), κ1 = (α_t μ_i β U/(k R))(R/C)², κ2 = U (μ_i β/k)^½,
-/// T̄_max = exp[a + b/√κ1 + c/√κ2], T̄_shaft = 1/[a + b/√κ1 + c/κ2²], the region by the isothermal ε.
-/// β is −d ln μ/dT at the inlet (exact for the exponential law).
-fn thd_temperatures(ctx: &mut Context, case: &Case, t_in: f64, eps: f64) -> Option<(f64, f64)> {
-    let lub = &case.lubricant;
-    let g = case.geometry;
-    let mu = lub.viscosity_pa_s(t_in);
-    let beta = (lub.viscosity_pa_s(t_in - 0.5) / lub.viscosity_pa_s(t_in + 0.5)).ln();
-    let k = lub.thermal_conductivity_w_m_k(t_in);
-    let diffusivity = k / (lub.density_kg_m3(t_in) * lub.specific_heat_j_kg_k(t_in));
-    let u = PI * g.diameter_m * case.speed_rps();
-    let r = 0.5 * g.diameter_m;
-    let kappa1 = diffusivity * mu * beta * u / (k * r) * g.r_over_c().powi(2);
-    let kappa2 = u * (mu * beta / k).sqrt();
-    if !(beta > 0.0 && kappa1.is_finite() && kappa2.is_finite()) {
-        return None;
-    }
-    let (max, shaft) = match eps {
-        e if e < 0.3 => ((1.63105, -0.20250, -0.84050), (0.14092, 0.24303, 0.10054)),
-        e if e <= 0.7 => ((1.68517, -0.19962, -1.04999), (0.04734, 0.39751, 0.11007)),
-        _ => ((1.79973, -0.13627, -1.25216), (0.06200, 0.38264, 0.10102)),
-    };
-    let t_max = (max.0 + max.1 / kappa1.sqrt() + max.2 / kappa2.sqrt()).exp();
-    let t_shaft = 1.0 / (shaft.0 + shaft.1 / kappa1.sqrt() + shaft.2 / (kappa2 * kappa2));
-    let in_range = (0.001..=0.5).contains(&kappa1)
-        && (0.01..=5.0).contains(&kappa2)
-        && (0.1..=0.9).contains(&eps);
-    if !in_range || (g.l_over_d() - 1.0).abs() > 0.5 {
-        ctx.warn(
-            "thd_fit_outside_range",
-            format!("Jang–Khonsari's THD fits hold for L/D ≈ 1, 0.001 ≤ κ1 ≤ 0.5, 0.01 ≤ κ2 ≤ 5, 0.1 ≤ ε ≤ 0.9; here L/D = {:.2}, κ1 = {kappa1:.3e}, κ2 = {kappa2:.3e}, ε = {eps:.3}", g.l_over_d()),
-        );
-    }
-    (t_max.is_finite() && t_shaft.is_finite() && t_shaft > 0.0)
-        .then(|| (t_in + t_max / beta, t_in + t_shaft / beta))
-}
-
-/// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]
-/// (the rise falls as the oil thins, so the bracket holds).
-fn effective_temperature(
+/// Stiffness and damping in N/m and N·s/m (whole bearing), with the rotor's stability.
+fn dimensional_dynamics(
     case: &Case,
-    t_in: f64,
-    rise_iso: f64,
-    budget: &Budget,
-) -> Result<Operating, CalcError> {
-    let k = case.effective_fraction();
-    let mut failure = None;
-    let mut last: Option<Operating> = None;
-    let f = |t: f64| -> f64 {
-        match case.operate(t, budget) {
-            Ok(op) => {
-                let rise = case.temperature_rise(&op).unwrap_or(0.0);
-                let g = t - t_in - k * rise;
-                last = Some(op);
-                g
-            }
-            // Too hot for the model (the thinned oil cannot carry the load, or the viscosity law
-            // has no value there): the effective temperature lies below.
-            Err(CalcError::Impossible { .. }) if t > t_in => 1e3,
-            Err(e) => {
-                failure.get_or_insert(e);
-                f64::NAN
-            }
-        }
-    };
-    let root = brent(
-        f,
-        t_in,
-        t_in + rise_iso.min(MAX_TEMPERATURE_RISE_K),
-        Stopping {
-            x_tolerance: 1e-3,
-            max_iterations: 60,
-        },
+    op: &Operating,
+    coefficients: Coefficients,
+    stability: RotorStability,
+) -> Dynamics {
+    let (w, c, omega) = (
+        case.halves() * op.load_n,
+        case.geometry.radial_clearance_m,
+        2.0 * PI * case.speed_rps(),
     );
-    if let Some(e) = failure {
-        return Err(e);
-    }
-    match root {
-        Ok(r) => case
-            .operate(r.x, budget)
-            .or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
-        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
-            method: "brent_effective_temperature",
-            iterations,
-            residual: width,
-        }),
-        Err(e) => Err(CalcError::impossible(
-            "/inlet_temperature_c",
-            format!(
-                "no effective temperature in [{t_in:.2}, {:.2}] °C: {e:?}",
-                t_in + rise_iso
-            ),
-        )),
-    }
-}
-
-/// Turbulence: `auto` applies the Ng–Pan film above a film Reynolds number of 1000 (at the
-/// inlet temperature); the closed forms are laminar only.
-fn decide_turbulence(ctx: &mut Context, case: &Case, reynolds: f64) -> bool {
-    let criterion = Criterion {
-        name: "film_reynolds_number",
-        value: reynolds,
-        threshold: TURBULENT_REYNOLDS,
-    };
-    let decision = Decision::decide(case.effects.turbulence, criterion, "turbulence");
-    if decision.applied && matches!(case.method, Method::ClosedForm(_)) {
-        ctx.warn(
-            "turbulent_film",
-            format!("film Reynolds number {reynolds:.0}: the film is turbulent, but the closed forms are laminar and underestimate friction and load capacity; use a numerical fidelity"),
-        );
-        ctx.decide(
-            "turbulence",
-            Decision {
-                applied: false,
-                reason: format!("{}; closed forms are laminar", decision.reason),
-                ..decision
-            },
-        );
-        return false;
-    }
-    let applied = decision.applied;
-    let reason = if applied {
-        format!(
-            "{}: linearised turbulent film (Ng–Pan coefficients, Khonsari & Booser Eq. 6.26–6.31)",
-            decision.reason
-        )
-    } else {
-        decision.reason.clone()
-    };
-    ctx.decide("turbulence", Decision { reason, ..decision });
-    applied
-}
-
-fn decide_inertia(ctx: &mut Context, effects: JournalEffects, reynolds: f64, g: Geometry) {
-    let reduced = reynolds * g.radial_clearance_m / (0.5 * g.diameter_m);
-    let inertia = Decision::decide(
-        effects.inertia,
-        Criterion {
-            name: "reduced_reynolds_number",
-            value: reduced,
-            threshold: 1.0,
-        },
-        "inertia",
-    );
-    if inertia.applied {
-        ctx.warn("fluid_inertia", format!("reduced Reynolds number {reduced:.2} exceeds 1: fluid inertia matters and is not modelled"));
-    }
-    ctx.decide(
-        "inertia",
-        Decision {
-            applied: false,
-            ..inertia
-        },
-    );
-}
-
-fn approximation_name(case: &Case) -> Option<String> {
-    let cav = case.cavitation();
-    match case.method {
-        Method::ClosedForm(Approximation::Short) => Some(
-            if cav {
-                "short_half_sommerfeld"
-            } else {
-                "short_full_sommerfeld"
+    Dynamics {
+        stiffness_n_m: coefficients.stiffness.map(|v| v * w / c),
+        damping_n_s_m: coefficients.damping.map(|v| v * w / (c * omega)),
+        stiffness_nd: coefficients.stiffness,
+        damping_nd: coefficients.damping,
+        method: match case.method {
+            Method::ClosedForm(_) => CoefficientsMethod::ShortBearing,
+            Method::Numerical { .. } if case.mass_conserving() => {
+                CoefficientsMethod::PerturbationMassConserving
             }
-            .into(),
-        ),
-        Method::ClosedForm(Approximation::Long) => Some(
-            if cav {
-                "long_reynolds"
-            } else {
-                "long_full_sommerfeld"
-            }
-            .into(),
-        ),
-        Method::Numerical { .. } => None,
-    }
-}
-
-fn approximation_note(case: &Case) -> Option<String> {
-    let ld = case.geometry.l_over_d();
-    match case.method {
-        Method::ClosedForm(Approximation::Short) => Some(if ld <= 0.5 {
-            format!("infinitely short bearing (Ocvirk): axial pressure flow dominates; valid for L/D ≤ 0.5, and L/D = {ld:.3} fits")
-        } else {
-            format!("infinitely short bearing (Ocvirk): chosen for L/D ≤ 1 but valid only to L/D = 0.5; at L/D = {ld:.3} it gives trends, not numbers")
-        }),
-        Method::ClosedForm(Approximation::Long) => Some(if ld >= 2.0 {
-            format!("infinitely long bearing: circumferential flow dominates; it suits L/D ≥ 2 or end-sealed bearings, and L/D = {ld:.3} fits")
-        } else {
-            format!("infinitely long bearing: it suits L/D ≥ 2; at L/D = {ld:.3} it overestimates the load capacity")
-        }),
-        Method::Numerical { .. } => None,
-    }
-}
-
-fn validity_warnings(ctx: &mut Context, case: &Case, point: &Point) {
-    let ld = case.geometry.l_over_d();
-    match case.method {
-        Method::ClosedForm(Approximation::Short) if ld > 0.5 => ctx.warn(
-            "short_bearing_outside_validity",
-            format!("the short-bearing approximation holds for L/D ≤ 0.5 (trends to 1); L/D = {ld:.3}: use a numerical fidelity"),
-        ),
-        Method::ClosedForm(Approximation::Long) if ld < 2.0 => ctx.warn(
-            "long_bearing_outside_validity",
-            format!("the long-bearing approximation overestimates load capacity below L/D ≈ 2; L/D = {ld:.3}: use a numerical fidelity"),
-        ),
-        _ => {}
-    }
-    if point.eccentricity_ratio > 0.95 {
-        ctx.warn(
-            "very_high_eccentricity",
-            format!("ε = {:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", point.eccentricity_ratio, 100.0 * (1.0 - point.eccentricity_ratio)),
-        );
+            Method::Numerical { .. } => CoefficientsMethod::Perturbation,
+        },
+        stability,
     }
 }
 
@@ -781,7 +643,7 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
         Method::ClosedForm(_) => SolverReport {
             method: format!(
                 "closed_form_{}",
-                approximation_name(case).unwrap_or_default()
+                decisions::approximation_name(case).unwrap_or_default()
             ),
             iterations: evaluations,
             iterations_unit: IterationUnit::RootSearchSteps,
@@ -807,229 +669,4 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
             elapsed_ms: 0.0,
         },
     }
-}
-
-/// Coefficients at ε for the case's method (None for the long closed form), and S there.
-fn coefficients_at(
-    case: &Case,
-    method: Method,
-    eps: f64,
-    physics: FilmModel,
-    budget: &Budget,
-) -> Result<Option<Coefficients>, CalcError> {
-    let ld = case.geometry.l_over_d();
-    match method {
-        Method::ClosedForm(Approximation::Short) => {
-            let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
-            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld)
-                .map_or(f64::NAN, |p| p.sommerfeld_number);
-            Ok(Some(Coefficients {
-                stiffness,
-                damping,
-                sommerfeld_number: s,
-            }))
-        }
-        Method::ClosedForm(Approximation::Long) => Ok(None),
-        Method::Numerical { mesh, stop, .. } => {
-            let mut alive = || budget.alive();
-            dynamics::perturbation(eps, ld, physics, mesh, stop, &mut alive).map(Some)
-        }
-    }
-}
-
-fn dynamic_coefficients(
-    case: &Case,
-    op: &Operating,
-    ctx: &mut Context,
-) -> Result<Option<(Coefficients, Stability)>, CalcError> {
-    if !case.cavitation() {
-        ctx.warn(
-            "no_dynamics_full_film",
-            "stiffness and damping are given for the cavitating film only",
-        );
-        return Ok(None);
-    }
-    let budget = ctx.budget();
-    let eps = op.point.eccentricity_ratio;
-    let physics = case.physics(op.temperature_c);
-    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, &budget)? else {
-        ctx.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
-        return Ok(None);
-    };
-    let g = case.geometry;
-    let w = op.load_n;
-    // Per half-bearing with a circumferential groove: half the rotor on half the load.
-    let mass = case
-        .rotor_mass_kg
-        .map_or(w / GRAVITY, |m| m / case.halves());
-    let omega = 2.0 * PI * case.speed_rps();
-    let s_op = coefficients.sommerfeld_number;
-    let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
-    // γ = W/(k_s C) with the whole bearing's load and shaft (per half-bearing with a
-    // circumferential groove both halve: the same γ).
-    let flexibility = case
-        .shaft_stiffness_n_m
-        .map_or(0.0, |k| case.halves() * w / (k * g.radial_clearance_m));
-    let whirl = dynamics::whirl_on_shaft(&coefficients, flexibility);
-    let stable_now = whirl
-        .critical_mass_parameter
-        .is_none_or(|mc| mass_parameter(omega) < mc);
-
-    // Threshold: along the equilibrium locus at fixed load and viscosity, speed is ω(ε) =
-    // ω_op S(ε)/S_op; stability margin ln(m̄_c/m̄) changes sign at the threshold.
-    // The threshold search walks the locus on the `fast` mesh (a few per cent on the
-    // threshold speed, a fraction of the cost); S_op is taken on the same mesh.
-    let search = match case.method {
-        Method::Numerical { level, stop, .. } => {
-            Method::numerical(crate::fidelity::Level::Fast, None, None).with_stop(stop, level)
-        }
-        m => m,
-    };
-    // S_op on the search mesh: one film solve, not a set of perturbations.
-    let s_op = match search {
-        Method::Numerical { mesh, stop, .. } => {
-            let mut alive = || budget.alive();
-            let ld = case.geometry.l_over_d();
-            let (_, film, _) =
-                performance::positioned_film(eps, ld, physics, mesh, stop, None, &mut alive)?;
-            film.sommerfeld_number()
-        }
-        _ => s_op,
-    };
-    // Along the locus the speed changes, and with it a turbulent film's Reynolds number
-    // (Re ∝ speed at fixed viscosity): the film at ε has Re = Re_op S(ε; Re)/S_op, a fixed point
-    // found from single film solves (S changes little with Re, so it settles in a few steps)
-    // before the coefficients are taken there. The turbulence decision itself stays the
-    // operating point's (the Ng–Pan factors tend to laminar as Re falls).
-    let locus_physics = |e: f64| -> Result<FilmModel, CalcError> {
-        let (Some(re_op), Method::Numerical { mesh, stop, .. }) =
-            (physics.turbulence_reynolds, search)
-        else {
-            return Ok(physics);
-        };
-        let ld = case.geometry.l_over_d();
-        let mut re = re_op;
-        // 10⁻⁴ in Re moves the Ng–Pan factors by far less than the mesh error; a contraction
-        // this mild settles in three or four solves, and twelve bound the cost.
-        for _ in 0..12 {
-            let mut alive = || budget.alive();
-            let with = FilmModel {
-                turbulence_reynolds: Some(re),
-                ..physics
-            };
-            let (_, film, _) =
-                performance::positioned_film(e, ld, with, mesh, stop, None, &mut alive)?;
-            let next = re_op * film.sommerfeld_number() / s_op;
-            let settled = (next / re - 1.0).abs() < 1e-4;
-            re = next;
-            if settled {
-                break;
-            }
-        }
-        Ok(FilmModel {
-            turbulence_reynolds: Some(re),
-            ..physics
-        })
-    };
-    let failure = std::cell::RefCell::new(None);
-    let mut margin = |e: f64| -> f64 {
-        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, &budget)) {
-            Ok(Some(c)) => {
-                let speed = omega * c.sommerfeld_number / s_op;
-                match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
-                    Some(mc) => (mc / mass_parameter(speed)).ln(),
-                    None => 50.0,
-                }
-            }
-            Ok(None) => 50.0,
-            // Lighter than this a ported supply outweighs the film: the locus ends here.
-            Err(CalcError::Impossible { pointer, .. })
-                if pointer == performance::SUPPLY_DOMINATES =>
-            {
-                f64::NAN
-            }
-            Err(err) => {
-                failure.borrow_mut().get_or_insert(err);
-                f64::NAN
-            }
-        }
-    };
-    let m0 = if stable_now { 1.0 } else { -1.0 };
-    let mut bracket = None;
-    let mut previous = eps;
-    let mut lightest = eps;
-    for k in 1..=10 {
-        let next = if stable_now {
-            (eps * 0.6f64.powi(k)).max(1e-3)
-        } else {
-            (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
-        };
-        let m = margin(next);
-        if m.is_nan() {
-            break;
-        }
-        lightest = lightest.min(next);
-        if m.signum() != m0 {
-            bracket = Some((previous, next));
-            break;
-        }
-        previous = next;
-        if next <= 1e-3 || next >= MAX_ECCENTRICITY {
-            break;
-        }
-    }
-    if let Some(e) = failure.borrow_mut().take() {
-        return Err(e);
-    }
-    let threshold_eps = match bracket {
-        Some((a, b)) => brent(
-            &mut margin,
-            a.min(b),
-            a.max(b),
-            Stopping {
-                x_tolerance: 1e-5,
-                max_iterations: 40,
-            },
-        )
-        .ok()
-        .map(|r| r.x),
-        None => None,
-    };
-    if let Some(e) = failure.into_inner() {
-        return Err(e);
-    }
-    let threshold_rpm = match threshold_eps {
-        Some(e) => Some(
-            coefficients_at(case, search, e, locus_physics(e)?, &budget)?
-                .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
-        )
-        .filter(|v| v.is_finite()),
-        None => None,
-    };
-    let statement = match (stable_now, threshold_rpm) {
-        (true, Some(t)) => format!("stable at {:.0} rev/min; oil whirl sets in at about {t:.0} rev/min (rigid rotor of {mass:.3} kg, load and viscosity held)", case.speed_rpm),
-        (true, None) if whirl.critical_mass_parameter.is_none() => format!("stable at every speed: at ε = {eps:.3} the film cannot sustain whirl for any rotor mass"),
-        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = {lightest:.4})", case.speed_rpm),
-        (false, Some(t)) => format!("UNSTABLE: oil whirl above about {t:.0} rev/min, below the operating speed {:.0} rev/min", case.speed_rpm),
-        (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
-    };
-    if !stable_now {
-        ctx.warn("oil_whirl", statement.clone());
-    }
-    let stability = Stability {
-        stable_at_operating_speed: stable_now,
-        threshold_speed_rpm: threshold_rpm,
-        whirl_frequency_ratio: whirl.whirl_frequency_ratio,
-        critical_mass_parameter: whirl.critical_mass_parameter,
-        critical_speed_rad_s: whirl
-            .critical_mass_parameter
-            .map(|mc| (mc * w / (mass * g.radial_clearance_m)).sqrt()),
-        critical_speed_dimensionless: whirl
-            .critical_mass_parameter
-            .map(|mc| (mc * w / (mass * GRAVITY)).sqrt()),
-        mass_parameter: mass_parameter(omega),
-        rotor_mass_kg: mass * case.halves(),
-        statement,
-    };
-    Ok(Some((coefficients, stability)))
 }

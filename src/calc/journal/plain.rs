@@ -7,7 +7,8 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::feed::FeedSpec;
-use super::operating::{self, Case, Geometry};
+use super::film::Misalignment;
+use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
@@ -62,13 +63,14 @@ pub enum CavitationMode {
     Jfo,
 }
 
-impl CavitationMode {
-    /// The auto/on/off mode an effect report carries.
-    pub fn mode(self) -> Mode {
-        match self {
-            CavitationMode::Auto => Mode::Auto,
-            CavitationMode::Off => Mode::Off,
-            _ => Mode::On,
+impl From<CavitationMode> for Cavitation {
+    fn from(mode: CavitationMode) -> Cavitation {
+        match mode {
+            CavitationMode::Auto => Cavitation::Auto,
+            CavitationMode::On => Cavitation::On,
+            CavitationMode::Off => Cavitation::Off,
+            CavitationMode::Reynolds => Cavitation::Reynolds,
+            CavitationMode::Jfo => Cavitation::Jfo,
         }
     }
 }
@@ -110,6 +112,17 @@ pub struct JournalEffects {
     /// Fluid inertia: reported from the reduced Reynolds number Re·C/R against 1; not modelled.
     #[serde(default)]
     pub inertia: Mode,
+}
+
+impl From<JournalEffects> for Effects {
+    fn from(e: JournalEffects) -> Effects {
+        Effects {
+            thermal: e.thermal,
+            cavitation: e.cavitation.into(),
+            turbulence: e.turbulence,
+            inertia: e.inertia,
+        }
+    }
 }
 
 /// Request. Give exactly one of `load_n` (the equilibrium is solved) and `eccentricity_ratio`.
@@ -325,11 +338,11 @@ impl Validate for PlainInput {
                         "the closed forms are for an aligned journal; use a numerical fidelity",
                     ));
                 }
-                (tilt > 0.0).then_some((
+                (tilt > 0.0).then_some(Misalignment {
                     tilt,
-                    m.direction_deg.to_radians(),
-                    m.measured_from == MisalignmentReference::LineOfCentres,
-                ))
+                    direction: m.direction_deg.to_radians(),
+                    from_line_of_centres: m.measured_from == MisalignmentReference::LineOfCentres,
+                })
             }
         };
         if misalignment.is_some()
@@ -391,7 +404,7 @@ impl Validate for PlainInput {
                 rotor_mass_kg: self.rotor_mass_kg.map(Positive::get),
                 shaft_stiffness_n_m: self.shaft_stiffness_n_m.map(Positive::get),
                 method,
-                effects: self.effects,
+                effects: self.effects.into(),
                 dynamics: self.dynamics,
                 include_field: self.include_field,
                 turbulent: false,
@@ -638,12 +651,7 @@ pub struct PlainOutput {
 impl Calculation for PlainJournal {
     const PATH: &'static str = "/v1/journal-bearings/plain";
     const SUMMARY: &'static str = "Plain 360° journal bearing: equilibrium, film, friction, flow, temperature, K and C, stability";
-    const DESCRIPTION: &'static str = "Finite-length Reynolds equation by flux-conservative finite volumes with Reynolds cavitation (projected SOR), \
-nodes clustered towards h_min, film starting at h_max (Khonsari & Booser §8.12, Table 8.6 conventions: S = μ N_s L D (R/C)²/W with N_s in rev/s, \
-angles from h_max in the direction of rotation, friction from the journal-surface shear over the full circumference). \
-Equilibrium from the load by Brent's method on ln S against ln(ε/(1−ε)). `fidelity: closed_form` gives the infinitely short (Ocvirk) or long \
-(Sommerfeld / half-Sommerfeld / Reynolds) bearing. Stiffness and damping by perturbation of the converged film (feed line fixed at the \
-equilibrium h_max, cavitation re-solved in every perturbed film); rigid-rotor threshold by Lund's method.";
+    const DESCRIPTION: &'static str = include_str!("plain.md");
     const FIDELITY: &'static [Level] =
         &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
     const EFFECTS: &'static [&'static str] = &[
@@ -659,6 +667,100 @@ equilibrium h_max, cavitation re-solved in every perturbed film); rigid-rotor th
     type Output = PlainOutput;
 
     fn run(case: Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
-        operating::solve(&case, ctx)
+        let solution = operating::solve(&case, &ctx.budget())?;
+        for (effect, decision) in &solution.notes.decisions {
+            ctx.decide(effect, decision.clone());
+        }
+        for warning in &solution.notes.warnings {
+            ctx.warn(warning.code, warning.message.clone());
+        }
+        ctx.report(solution.report.clone());
+        Ok(PlainOutput::from(solution))
     }
 }
+
+impl From<Solution> for PlainOutput {
+    fn from(s: Solution) -> PlainOutput {
+        PlainOutput {
+            load_n: s.load_n,
+            sommerfeld_number: s.sommerfeld_number,
+            eccentricity_ratio: s.eccentricity_ratio,
+            attitude_angle_deg: s.attitude_angle.to_degrees(),
+            min_film_thickness_m: s.min_film_thickness_m,
+            max_pressure_pa: s.max_pressure_pa,
+            max_pressure_dimensionless: s.max_pressure_nd,
+            max_pressure_angle_deg: s.max_pressure_angle.to_degrees(),
+            cavitation_start_angle_deg: s.cavitation_start_angle.map(f64::to_degrees),
+            cavitated_area_fraction: s.cavitated_area_fraction,
+            petroff_friction_coefficient: s.petroff_friction_coefficient,
+            friction_coefficient: s.friction_coefficient,
+            friction_parameter: s.friction_parameter,
+            friction_torque_n_m: s.friction_torque_n_m,
+            power_loss_w: s.power_loss_w,
+            side_leakage_m3_s: s.side_leakage_m3_s,
+            side_leakage_dimensionless: s.side_leakage_nd,
+            inlet_flow_m3_s: s.inlet_flow_m3_s,
+            temperature_rise_k: s.temperature_rise_k,
+            max_temperature_c: s.bush_temperatures.map(|t| t.max_c),
+            shaft_temperature_c: s.bush_temperatures.map(|t| t.shaft_c),
+            supply_flow_m3_s: s.flows.map(|f| f.pressure_fed),
+            total_flow_m3_s: s.flows.map(|f| f.total),
+            effective_temperature_c: s.effective_temperature_c,
+            effective_viscosity_pa_s: s.effective_viscosity_pa_s,
+            reynolds_number: s.reynolds_number,
+            approximation: s.approximation.map(String::from),
+            approximation_note: s.approximation_note,
+            pressure_profile: s.pressure_profile.map(|nodes| {
+                nodes
+                    .into_iter()
+                    .map(|n| ProfilePoint {
+                        angle_deg: n.angle.to_degrees(),
+                        pressure_pa: n.pressure_pa,
+                        film_content: n.film_content,
+                    })
+                    .collect()
+            }),
+            misalignment_moment: s.moment.map(|m| FilmMoment {
+                frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+                mx_n_m: m.mx_n_m,
+                my_n_m: m.my_n_m,
+                magnitude_n_m: m.magnitude_n_m,
+                dimensionless: m.nd,
+                restoring_n_m: m.restoring_n_m,
+            }),
+            dynamic_coefficients: s.dynamics.as_ref().map(|d| {
+                let [kxx, kxy, kyx, kyy] = d.stiffness_n_m;
+                let [cxx, cxy, cyx, cyy] = d.damping_n_s_m;
+                DynamicCoefficients {
+                    frame: "x along the static load, y perpendicular to it, 90° ahead in the direction of rotation".into(),
+                    kxx, kxy, kyx, kyy, cxx, cxy, cyx, cyy,
+                    stiffness_dimensionless: d.stiffness_nd,
+                    damping_dimensionless: d.damping_nd,
+                    method: match d.method {
+                        CoefficientsMethod::ShortBearing => "closed form of the short (Ocvirk) bearing with the half-Sommerfeld film",
+                        CoefficientsMethod::PerturbationMassConserving => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed where the equilibrium film is fed, pressure and film content re-solved (JFO) in each perturbed film, the squeeze term weighted by the film content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t)",
+                        CoefficientsMethod::Perturbation => "perturbation of the converged film: ±δ displacement and ±δ̇ velocity along each axis, central differences, feed line fixed at the equilibrium h_max, cavitation re-solved in each perturbed film",
+                    }
+                    .into(),
+                }
+            }),
+            stability: s.dynamics.map(|d| {
+                let t = d.stability;
+                Stability {
+                    stable_at_operating_speed: t.stable_at_operating_speed,
+                    threshold_speed_rpm: t.threshold_speed_rpm,
+                    whirl_frequency_ratio: t.whirl_frequency_ratio,
+                    critical_mass_parameter: t.critical_mass_parameter,
+                    critical_speed_rad_s: t.critical_speed_rad_s,
+                    critical_speed_dimensionless: t.critical_speed_nd,
+                    mass_parameter: t.mass_parameter,
+                    rotor_mass_kg: t.rotor_mass_kg,
+                    statement: t.statement,
+                }
+            }),
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests;

@@ -1,0 +1,237 @@
+//! Stiffness and damping at the operating point and the whirl threshold along the equilibrium
+//! locus (Lund's rigid-rotor analysis, Jeffcott shaft by Hori's threshold).
+
+use std::f64::consts::PI;
+
+use super::{Case, Notes, Operating, RotorStability, GRAVITY};
+use crate::calc::journal::closed_form;
+use crate::calc::journal::dynamics::{self, Coefficients};
+use crate::calc::journal::film::FilmModel;
+use crate::calc::journal::performance::{self, Approximation, Method, MAX_ECCENTRICITY};
+use crate::calc::{Budget, CalcError};
+use crate::numerics::roots::{brent, Stopping};
+
+/// Coefficients at ε for the case's method (None for the long closed form), and S there.
+pub(super) fn coefficients_at(
+    case: &Case,
+    method: Method,
+    eps: f64,
+    physics: FilmModel,
+    budget: &Budget,
+) -> Result<Option<Coefficients>, CalcError> {
+    let ld = case.geometry.l_over_d();
+    match method {
+        Method::ClosedForm(Approximation::Short) => {
+            let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
+            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld)
+                .map_or(f64::NAN, |p| p.sommerfeld_number);
+            Ok(Some(Coefficients {
+                stiffness,
+                damping,
+                sommerfeld_number: s,
+            }))
+        }
+        Method::ClosedForm(Approximation::Long) => Ok(None),
+        Method::Numerical { mesh, stop, .. } => {
+            let mut alive = || budget.alive();
+            dynamics::perturbation(eps, ld, physics, mesh, stop, &mut alive).map(Some)
+        }
+    }
+}
+
+pub(super) fn dynamic_coefficients(
+    case: &Case,
+    op: &Operating,
+    budget: &Budget,
+    notes: &mut Notes,
+) -> Result<Option<(Coefficients, RotorStability)>, CalcError> {
+    if !case.cavitation() {
+        notes.warn(
+            "no_dynamics_full_film",
+            "stiffness and damping are given for the cavitating film only",
+        );
+        return Ok(None);
+    }
+    let eps = op.point.eccentricity_ratio;
+    let physics = case.physics(op.temperature_c);
+    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, budget)? else {
+        notes.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
+        return Ok(None);
+    };
+    let g = case.geometry;
+    let w = op.load_n;
+    // Per half-bearing with a circumferential groove: half the rotor on half the load.
+    let mass = case
+        .rotor_mass_kg
+        .map_or(w / GRAVITY, |m| m / case.halves());
+    let omega = 2.0 * PI * case.speed_rps();
+    let s_op = coefficients.sommerfeld_number;
+    let mass_parameter = |omega: f64| mass * g.radial_clearance_m * omega * omega / w;
+    // γ = W/(k_s C) with the whole bearing's load and shaft (per half-bearing with a
+    // circumferential groove both halve: the same γ).
+    let flexibility = case
+        .shaft_stiffness_n_m
+        .map_or(0.0, |k| case.halves() * w / (k * g.radial_clearance_m));
+    let whirl = dynamics::whirl_on_shaft(&coefficients, flexibility);
+    let stable_now = whirl
+        .critical_mass_parameter
+        .is_none_or(|mc| mass_parameter(omega) < mc);
+
+    // Threshold: along the equilibrium locus at fixed load and viscosity, speed is ω(ε) =
+    // ω_op S(ε)/S_op; stability margin ln(m̄_c/m̄) changes sign at the threshold.
+    // The threshold search walks the locus on the `fast` mesh (a few per cent on the
+    // threshold speed, a fraction of the cost); S_op is taken on the same mesh.
+    let search = match case.method {
+        Method::Numerical { level, stop, .. } => {
+            Method::numerical(crate::fidelity::Level::Fast, None, None).with_stop(stop, level)
+        }
+        m => m,
+    };
+    // S_op on the search mesh: one film solve, not a set of perturbations.
+    let s_op = match search {
+        Method::Numerical { mesh, stop, .. } => {
+            let mut alive = || budget.alive();
+            let ld = case.geometry.l_over_d();
+            let (_, film, _) =
+                performance::positioned_film(eps, ld, physics, mesh, stop, None, &mut alive)?;
+            film.sommerfeld_number()
+        }
+        _ => s_op,
+    };
+    // Along the locus the speed changes, and with it a turbulent film's Reynolds number
+    // (Re ∝ speed at fixed viscosity): the film at ε has Re = Re_op S(ε; Re)/S_op, a fixed point
+    // found from single film solves (S changes little with Re, so it settles in a few steps)
+    // before the coefficients are taken there. The turbulence decision itself stays the
+    // operating point's (the Ng–Pan factors tend to laminar as Re falls).
+    let locus_physics = |e: f64| -> Result<FilmModel, CalcError> {
+        let (Some(re_op), Method::Numerical { mesh, stop, .. }) =
+            (physics.turbulence_reynolds, search)
+        else {
+            return Ok(physics);
+        };
+        let ld = case.geometry.l_over_d();
+        let mut re = re_op;
+        // 10⁻⁴ in Re moves the Ng–Pan factors by far less than the mesh error; a contraction
+        // this mild settles in three or four solves, and twelve bound the cost.
+        for _ in 0..12 {
+            let mut alive = || budget.alive();
+            let with = FilmModel {
+                turbulence_reynolds: Some(re),
+                ..physics
+            };
+            let (_, film, _) =
+                performance::positioned_film(e, ld, with, mesh, stop, None, &mut alive)?;
+            let next = re_op * film.sommerfeld_number() / s_op;
+            let settled = (next / re - 1.0).abs() < 1e-4;
+            re = next;
+            if settled {
+                break;
+            }
+        }
+        Ok(FilmModel {
+            turbulence_reynolds: Some(re),
+            ..physics
+        })
+    };
+    let failure = std::cell::RefCell::new(None);
+    let mut margin = |e: f64| -> f64 {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, budget)) {
+            Ok(Some(c)) => {
+                let speed = omega * c.sommerfeld_number / s_op;
+                match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
+                    Some(mc) => (mc / mass_parameter(speed)).ln(),
+                    None => 50.0,
+                }
+            }
+            Ok(None) => 50.0,
+            // Lighter than this a ported supply outweighs the film: the locus ends here.
+            Err(CalcError::Impossible { pointer, .. })
+                if pointer == performance::SUPPLY_DOMINATES =>
+            {
+                f64::NAN
+            }
+            Err(err) => {
+                failure.borrow_mut().get_or_insert(err);
+                f64::NAN
+            }
+        }
+    };
+    let m0 = if stable_now { 1.0 } else { -1.0 };
+    let mut bracket = None;
+    let mut previous = eps;
+    let mut lightest = eps;
+    for k in 1..=10 {
+        let next = if stable_now {
+            (eps * 0.6f64.powi(k)).max(1e-3)
+        } else {
+            (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
+        };
+        let m = margin(next);
+        if m.is_nan() {
+            break;
+        }
+        lightest = lightest.min(next);
+        if m.signum() != m0 {
+            bracket = Some((previous, next));
+            break;
+        }
+        previous = next;
+        if next <= 1e-3 || next >= MAX_ECCENTRICITY {
+            break;
+        }
+    }
+    if let Some(e) = failure.borrow_mut().take() {
+        return Err(e);
+    }
+    let threshold_eps = match bracket {
+        Some((a, b)) => brent(
+            &mut margin,
+            a.min(b),
+            a.max(b),
+            Stopping {
+                x_tolerance: 1e-5,
+                max_iterations: 40,
+            },
+        )
+        .ok()
+        .map(|r| r.x),
+        None => None,
+    };
+    if let Some(e) = failure.into_inner() {
+        return Err(e);
+    }
+    let threshold_rpm = match threshold_eps {
+        Some(e) => Some(
+            coefficients_at(case, search, e, locus_physics(e)?, budget)?
+                .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
+        )
+        .filter(|v| v.is_finite()),
+        None => None,
+    };
+    let statement = match (stable_now, threshold_rpm) {
+        (true, Some(t)) => format!("stable at {:.0} rev/min; oil whirl sets in at about {t:.0} rev/min (rigid rotor of {mass:.3} kg, load and viscosity held)", case.speed_rpm),
+        (true, None) if whirl.critical_mass_parameter.is_none() => format!("stable at every speed: at ε = {eps:.3} the film cannot sustain whirl for any rotor mass"),
+        (true, None) => format!("stable at {:.0} rev/min and at every speed up to the lightest load solved (ε = {lightest:.4})", case.speed_rpm),
+        (false, Some(t)) => format!("UNSTABLE: oil whirl above about {t:.0} rev/min, below the operating speed {:.0} rev/min", case.speed_rpm),
+        (false, None) => format!("UNSTABLE at {:.0} rev/min, and no stable speed was found down to ε = {MAX_ECCENTRICITY}", case.speed_rpm),
+    };
+    if !stable_now {
+        notes.warn("oil_whirl", statement.clone());
+    }
+    let stability = RotorStability {
+        stable_at_operating_speed: stable_now,
+        threshold_speed_rpm: threshold_rpm,
+        whirl_frequency_ratio: whirl.whirl_frequency_ratio,
+        critical_mass_parameter: whirl.critical_mass_parameter,
+        critical_speed_rad_s: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * g.radial_clearance_m)).sqrt()),
+        critical_speed_nd: whirl
+            .critical_mass_parameter
+            .map(|mc| (mc * w / (mass * GRAVITY)).sqrt()),
+        mass_parameter: mass_parameter(omega),
+        rotor_mass_kg: mass * case.halves(),
+        statement,
+    };
+    Ok(Some((coefficients, stability)))
+}
