@@ -59,6 +59,9 @@ pub fn residual_falls(residual_here: f64, residual_trial: f64, t: f64) -> bool {
     residual_trial <= (1.0 - 1e-4 * t) * residual_here
 }
 
+/// A converged Newton run: the point, its evaluation and the report.
+pub type Solved<S> = Converged<(<S as NewtonSystem>::Point, <S as NewtonSystem>::Eval)>;
+
 /// Newton from `start` until `system.residual` ≤ `tolerance`, under `driver` (one iteration =
 /// one Newton step with its line search; the trial points are counted as evaluations). The
 /// converged value is the point and its evaluation.
@@ -68,7 +71,7 @@ pub fn solve<S: NewtonSystem>(
     tolerance: f64,
     line: LineSearch,
     driver: &Driver,
-) -> Result<Converged<(S::Point, S::Eval)>, Stopped> {
+) -> Result<Solved<S>, Stopped> {
     let here = system.evaluate(&start);
     let mut residual = system.residual(&here);
     if residual <= tolerance {
