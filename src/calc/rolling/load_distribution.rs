@@ -662,7 +662,7 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
         );
     }
     let b = &case.bearing;
-    let eq = roller::equilibrium(&case, ctx)?;
+    let eq = roller::equilibrium(&case, &ctx.budget())?;
     let q_max = eq.loads.iter().copied().fold(0.0, f64::max);
     if q_max <= 0.0 {
         return Err(CalcError::Internal(
