@@ -11,6 +11,7 @@ use crate::calc::quantity::RingSpeed;
 use crate::calc::{CalcError, Context};
 use crate::effects::Mode;
 use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::newton::{self, armijo, residual_falls, LineSearch, NewtonSystem};
 use crate::numerics::roots::{brent, grow_bracket, Root, Stopping};
@@ -608,8 +609,7 @@ impl NewtonSystem for Energy<'_> {
         if trace > 0.0 {
             let shift = 1e-12 * trace;
             let (a, b, c) = (h_rr + shift, h_ra, h_aa + shift);
-            let det = a * c - b * b;
-            Some([-(c * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det])
+            dense::solve([[a, b], [b, c]], [-g[0], -g[1]])
         } else {
             let norm = g[0].hypot(g[1]);
             Some([-g[0] / norm * self.push, -g[1] / norm * self.push])
