@@ -32,9 +32,9 @@ use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
 use super::ring_equilibrium::{balanced, load_balance_root, MAX_BRENT_ITERATIONS};
-use crate::calc::contact::hertz::{Body, Contact, HertzOutput, Method, Shape, Solution};
+use crate::calc::contact::hertz::{Body, Contact, Method, Shape, Solution};
 use crate::calc::quantity::Positive;
-use crate::calc::{CalcError, Context, FieldError};
+use crate::calc::{CalcError, FieldError};
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::driver::{Budget, Driver};
 
@@ -306,22 +306,6 @@ impl RollerBearing {
             )
         })?;
         contact.solve()
-    }
-
-    /// [`Self::raceway_solution`] as the Hertz room's output, its warnings and solver report
-    /// passed to `ctx`. Transitional: the load distribution still reads the Hertz room's
-    /// output; it can take `raceway_solution`.
-    pub fn raceway_contact(
-        &self,
-        inner: bool,
-        load_n: f64,
-        length_m: f64,
-        ctx: &mut Context,
-    ) -> Result<HertzOutput, CalcError> {
-        Ok(HertzOutput::reported(
-            &self.raceway_solution(inner, load_n, length_m)?,
-            ctx,
-        ))
     }
 }
 
