@@ -20,15 +20,16 @@ use super::roller::RollerBearingSpec;
 use super::static_capacity::{
     self, StaticCapacity, StaticCapacityCase, StaticCapacityOutput, StaticLoading,
 };
-use crate::calc::contact::ehl_film::{
-    EhlEffects, EhlFilm, EhlFilmInput, EhlFilmOutput, RoughnessSpec,
-};
-use crate::calc::contact::hertz::{BodySpec, LineSpec, Radius};
-use crate::calc::lubricant::LubricantSpec;
+use crate::calc::contact::ehl::closed_form::{self, FilmCase, FilmEffects};
+use crate::calc::contact::ehl::film::EhlFilmOutput;
+use crate::calc::contact::hertz::{Body, Contact, Field, Method, Shape};
+use crate::calc::lubricant::model::PressureLaw;
+use crate::calc::lubricant::{Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive, RingSpeed};
+use crate::calc::surface::roughness::composite_rms;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
-use crate::fidelity::{FidelityRequest, Level};
+use crate::fidelity::Level;
 
 pub struct Analysis;
 
@@ -204,8 +205,9 @@ pub struct AnalysisCase {
     static_capacity: Result<StaticCapacityCase, Vec<FieldError>>,
     life: LifeCase,
     bearing: ChainBearing,
-    lubricant: LubricantSpec,
-    temperature: Celsius,
+    /// The lubricant and its pressure–viscosity law, for the films.
+    film_lubricant: Lubricant,
+    pressure_law: PressureLaw,
     temperature_c: f64,
     speed: RingSpeed,
     roughness: Option<RaceRoughness>,
@@ -339,14 +341,29 @@ impl Validate for AnalysisInput {
         {
             errors.extend(r.iter().cloned());
         }
-        match (errors.is_empty(), load_distribution, spec, life) {
-            (true, Ok(load_distribution), Ok(bearing), Some(Ok(life))) => Ok(AnalysisCase {
+        let film_lubricant = lubricant
+            .ok()
+            .and_then(|l| l.pressure_law.map(|law| (l, law)));
+        match (
+            errors.is_empty(),
+            load_distribution,
+            spec,
+            life,
+            film_lubricant,
+        ) {
+            (
+                true,
+                Ok(load_distribution),
+                Ok(bearing),
+                Some(Ok(life)),
+                Some((film_lubricant, pressure_law)),
+            ) => Ok(AnalysisCase {
                 load_distribution,
                 static_capacity,
                 life,
                 bearing,
-                lubricant: self.lubricant,
-                temperature: self.temperature_c,
+                film_lubricant,
+                pressure_law,
                 temperature_c: t,
                 speed: RingSpeed::new(self.inner_ring_speed_rpm, outer_rpm),
                 roughness: self.roughness,
@@ -474,6 +491,181 @@ fn refused(path: &str, errors: &[FieldError]) -> CalcError {
         "",
         format!("a step of the chain ({path}) refused its input at {pointer}: {message}"),
     )
+}
+
+/// Highest entrainment speed the closed-form films accept, m/s (the EHL film room's limit).
+const MAX_FILM_SPEED_M_S: f64 = 1e3;
+/// Largest RMS roughness of one surface the film accepts, m (the EHL film room's limit).
+const MAX_FILM_ROUGHNESS_M: f64 = 1e-4;
+
+/// One raceway's film step: the raceway's radii, the element's load and entrainment speed, and
+/// the raceway's roughness (with its field's name).
+struct FilmStep {
+    race_x_m: f64,
+    race_y_m: Option<f64>,
+    load_n: f64,
+    speed_m_s: f64,
+    race_rms: Option<(NonNegative, &'static str)>,
+}
+
+impl FilmStep {
+    /// The film case of the closed-form film model, built from the chain's typed values; its
+    /// refusals point into this request.
+    fn case(&self, case: &AnalysisCase, ball: f64) -> Result<FilmCase, CalcError> {
+        let (element, rings) = case.bearing.materials();
+        let body = |radius_x: f64, radius_y: Option<f64>, material: MaterialSpec| Body {
+            radius_x_m: Some(radius_x),
+            radius_y_m: radius_y,
+            modulus_pa: material.elastic_modulus_pa.get(),
+            poisson_ratio: material.poisson_ratio.get(),
+        };
+        let line_length_m = match &case.bearing {
+            ChainBearing::Roller(r) => Some(r.roller_effective_length_m.get()),
+            ChainBearing::Ball(_) => None,
+        };
+        let load_n = self.load_n.max(f64::MIN_POSITIVE);
+        let contact = Contact::new(
+            [
+                body(ball / 2.0, (!case.roller).then_some(ball / 2.0), element),
+                body(self.race_x_m, self.race_y_m, rings),
+            ],
+            load_n,
+            line_length_m.map_or(Shape::Point, |length_m| Shape::Line { length_m }),
+            Method::Exact,
+        )
+        .map_err(|errors| {
+            let e = &errors[0];
+            film_refused(&contact_pointer(e.field, case.roller), &e.message)
+        })?;
+        let speed_m_s = self.speed_m_s.abs().max(1e-9);
+        if speed_m_s > MAX_FILM_SPEED_M_S {
+            return Err(film_refused(
+                "/inner_ring_speed_rpm",
+                &format!("the entrainment speed must be at most {MAX_FILM_SPEED_M_S} m/s, got {speed_m_s}"),
+            ));
+        }
+        let composite_roughness_m = match (case.roughness, self.race_rms) {
+            (Some(r), Some((race, race_field))) => {
+                let (ball_rms, race_rms) = (r.ball_rms_m.get(), race.get());
+                for (v, field) in [(ball_rms, "ball_rms_m"), (race_rms, race_field)] {
+                    if v > MAX_FILM_ROUGHNESS_M {
+                        return Err(film_refused(
+                            &format!("/roughness/{field}"),
+                            &format!("must be at most {MAX_FILM_ROUGHNESS_M} m"),
+                        ));
+                    }
+                }
+                if ball_rms == 0.0 && race_rms == 0.0 {
+                    return Err(film_refused(
+                        "/roughness/ball_rms_m",
+                        "both surfaces perfectly smooth: Λ is infinite; omit roughness",
+                    ));
+                }
+                Some(composite_rms(ball_rms, race_rms))
+            }
+            _ => None,
+        };
+        let effects = FilmEffects {
+            thermal: case.film_effects.thermal,
+            starvation: case.film_effects.starvation,
+            mixed_lubrication: case.film_effects.mixed_lubrication,
+        };
+        if effects.starvation == Mode::On && case.meniscus.is_none() {
+            return Err(film_refused(
+                "/film_effects/starvation",
+                "starvation needs inlet_meniscus_distance_m (the distance from the contact centre to the inlet meniscus)",
+            ));
+        }
+        if effects.starvation == Mode::On && line_length_m.is_some() {
+            return Err(film_refused(
+                "/film_effects/starvation",
+                "the meniscus starvation formulas here are for point contacts (Hamrock & Dowson 1977); none is implemented for a line contact",
+            ));
+        }
+        if effects.mixed_lubrication == Mode::On {
+            return Err(film_refused(
+                "/film_effects/mixed_lubrication",
+                "no mixed-EHL film model is implemented (the texts give none: Khonsari FE-9); use auto, which reports Λ and the lubrication regime",
+            ));
+        }
+        Ok(FilmCase {
+            contact,
+            load_n,
+            line_length_m,
+            speed_m_s,
+            lubricant: case.film_lubricant.clone(),
+            pressure_law: case.pressure_law,
+            temperature_c: case.temperature_c,
+            composite_roughness_m,
+            slide_roll_ratio: 0.0,
+            meniscus_m: case.meniscus.map(Positive::get),
+            effects,
+        })
+    }
+
+    /// The raceway's film from the closed-form film model: its warnings and effect decisions
+    /// passed to `step`, its refusals pointing into this request.
+    fn solve(
+        &self,
+        case: &AnalysisCase,
+        ball: f64,
+        step: &mut Context,
+    ) -> Result<EhlFilmOutput, CalcError> {
+        let film_case = self.case(case, ball)?;
+        let film = closed_form::solve(&film_case).map_err(|e| match e {
+            CalcError::Impossible { pointer, message } => CalcError::Impossible {
+                pointer: film_pointer(&pointer),
+                message,
+            },
+            other => other,
+        })?;
+        for w in &film.warnings {
+            step.warn(w.code, w.message.clone());
+        }
+        for (effect, decision) in &film.decisions {
+            step.decide(effect, decision.clone());
+        }
+        Ok(EhlFilmOutput::of(&film, &film_case))
+    }
+}
+
+/// A film step that refused the case the chain built for it: a 422 at the field of this
+/// request it comes from.
+fn film_refused(pointer: &str, message: &str) -> CalcError {
+    CalcError::impossible(
+        pointer,
+        format!("a step of the chain (the EHL film) refused its input: {message}"),
+    )
+}
+
+/// The field of this request a film's contact refusal comes from (body 1 is the rolling
+/// element, body 2 the raceway).
+fn contact_pointer(field: Field, roller: bool) -> String {
+    let element = if roller { "rollers" } else { "ball" };
+    match field {
+        Field::Radius { .. } => "/bearing".to_owned(),
+        Field::Modulus { body } | Field::PoissonRatio { body } => {
+            let material = if body == 1 { element } else { "rings" };
+            let name = if matches!(field, Field::Modulus { .. }) {
+                "elastic_modulus_pa"
+            } else {
+                "poisson_ratio"
+            };
+            format!("/bearing/{material}/{name}")
+        }
+        Field::Load => "/radial_load_n".to_owned(),
+        Field::Length => "/bearing/roller_effective_length_m".to_owned(),
+    }
+}
+
+/// The film model's refusal pointers (the film room's fields), moved onto this request's.
+fn film_pointer(pointer: &str) -> String {
+    match pointer {
+        "/entrainment_speed_m_s" => "/inner_ring_speed_rpm".to_owned(),
+        "/load_n" => "/radial_load_n".to_owned(),
+        p if p.starts_with("/body") => "/bearing".to_owned(),
+        other => other.to_owned(),
+    }
 }
 
 /// Result: each step's own result.
@@ -687,18 +879,6 @@ impl Calculation for Analysis {
         // A roller is a cylinder along y on straight raceways: a line contact over the effective
         // length (the texts' roller films, Hamrock A-R2); a ball meets the grooves' concave
         // radii across the rolling direction.
-        let (element, rings) = case.bearing.materials();
-        let body = |radius_x: f64, radius_y: Option<f64>, material: MaterialSpec, at: &str| {
-            let radius = |r: f64, field: &str| {
-                Radius::try_from(r).map_err(|m| vec![FieldError::new(format!("{at}/{field}"), m)])
-            };
-            Ok::<_, Vec<FieldError>>(BodySpec {
-                radius_x_m: Some(radius(radius_x, "radius_x_m")?),
-                radius_y_m: radius_y.map(|r| radius(r, "radius_y_m")).transpose()?,
-                elastic_modulus_pa: material.elastic_modulus_pa,
-                poisson_ratio: material.poisson_ratio,
-            })
-        };
         let (inner_groove, outer_groove) = match &case.bearing {
             ChainBearing::Ball(b) => (
                 Some(-b.inner_groove_radius_m.get()),
@@ -706,87 +886,32 @@ impl Calculation for Analysis {
             ),
             ChainBearing::Roller(_) => (None, None),
         };
-        let line = match &case.bearing {
-            ChainBearing::Roller(r) => Some(LineSpec {
-                length_m: r.roller_effective_length_m,
-            }),
-            ChainBearing::Ball(_) => None,
-        };
-        // The film room's request, typed: one raceway's film at `load` and `speed`.
-        let film = |race_x: f64,
-                    race_y: Option<f64>,
-                    load: f64,
-                    speed: f64,
-                    race_rms: Option<NonNegative>,
-                    step: &mut Context|
-         -> Result<EhlFilmOutput, CalcError> {
-            let input = (|| {
-                let positive = |v: f64, at: &str| {
-                    Positive::try_from(v).map_err(|m| vec![FieldError::new(at, m)])
-                };
-                Ok::<_, Vec<FieldError>>(EhlFilmInput {
-                    body1: body(
-                        ball / 2.0,
-                        (!case.roller).then_some(ball / 2.0),
-                        element,
-                        "/body1",
-                    )?,
-                    body2: body(race_x, race_y, rings, "/body2")?,
-                    load_n: positive(load.max(f64::MIN_POSITIVE), "/load_n")?,
-                    entrainment_speed_m_s: positive(
-                        speed.abs().max(1e-9),
-                        "/entrainment_speed_m_s",
-                    )?,
-                    lubricant: case.lubricant.clone(),
-                    temperature_c: case.temperature,
-                    line,
-                    roughness: match (case.roughness, race_rms) {
-                        (Some(r), Some(race)) => Some(RoughnessSpec {
-                            body1_rms_m: Some(r.ball_rms_m),
-                            body2_rms_m: Some(race),
-                            composite_rms_m: None,
-                        }),
-                        _ => None,
-                    },
-                    slide_roll_ratio: None,
-                    inlet_meniscus_distance_m: case.meniscus,
-                    fidelity: FidelityRequest::default(),
-                    closed_form: None,
-                    effects: EhlEffects {
-                        thermal: case.film_effects.thermal,
-                        starvation: case.film_effects.starvation,
-                        mixed_lubrication: case.film_effects.mixed_lubrication,
-                    },
-                })
-            })();
-            let film_case = input
-                .and_then(|input| input.validate())
-                .map_err(|errors| refused(EhlFilm::PATH, &errors))?;
-            // TODO(lead): call the contact film model
-            EhlFilm::run(film_case, step)
-        };
         let cos = alpha.cos();
         let inner_x = (pitch - ball * cos) / (2.0 * cos);
         let cos_o = alpha_outer.cos();
         let outer_x = -(pitch + ball * cos_o) / (2.0 * cos_o);
+        let inner = FilmStep {
+            race_x_m: inner_x,
+            race_y_m: inner_groove,
+            load_n: q_max,
+            speed_m_s: kinematics.inner_contact_entrainment_speed_m_s,
+            race_rms: case
+                .roughness
+                .map(|r| (r.inner_race_rms_m, "inner_race_rms_m")),
+        };
+        let outer = FilmStep {
+            race_x_m: outer_x,
+            race_y_m: outer_groove,
+            load_n: q_outer,
+            speed_m_s: kinematics.outer_contact_entrainment_speed_m_s,
+            race_rms: case
+                .roughness
+                .map(|r| (r.outer_race_rms_m, "outer_race_rms_m")),
+        };
         let mut inner_ctx = ctx.child();
-        let inner_film = film(
-            inner_x,
-            inner_groove,
-            q_max,
-            kinematics.inner_contact_entrainment_speed_m_s,
-            case.roughness.map(|r| r.inner_race_rms_m),
-            &mut inner_ctx,
-        )?;
+        let inner_film = inner.solve(&case, ball, &mut inner_ctx)?;
         let mut outer_ctx = ctx.child();
-        let outer_film = film(
-            outer_x,
-            outer_groove,
-            q_outer,
-            kinematics.outer_contact_entrainment_speed_m_s,
-            case.roughness.map(|r| r.outer_race_rms_m),
-            &mut outer_ctx,
-        )?;
+        let outer_film = outer.solve(&case, ball, &mut outer_ctx)?;
         merge_films(ctx, &inner_ctx, &outer_ctx);
         absorb(ctx, &mut inner_ctx, "inner raceway film");
         absorb(ctx, &mut outer_ctx, "outer raceway film");

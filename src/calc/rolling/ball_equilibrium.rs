@@ -46,8 +46,10 @@
 //! public port (a `Ball_balance.m` of a spindle study) writes the term with the opposite sign.
 //! Not checked against a worked example: the texts have none.
 
-use crate::calc::{CalcError, Context};
-use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
+use crate::calc::CalcError;
+use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::numerics::driver::{Budget, Converged, Driver, Stopped, Verdict};
+use crate::numerics::newton::{self, armijo, residual_falls, LineSearch, NewtonSystem};
 use crate::numerics::optimise::brent_minimise;
 
 const TOLERANCE: f64 = 1e-9;
@@ -175,8 +177,12 @@ fn unit(v: [f64; 2]) -> ([f64; 2], f64) {
     }
 }
 
-/// Solve a small symmetric system by Gaussian elimination with partial pivoting; None when
-/// singular.
+/// Solve a small system by Gaussian elimination with partial pivoting; None when singular.
+///
+/// Kept here rather than `numerics::dense::solve` (nalgebra's LU): on the gyroscopic README case
+/// the LU's different round-off moves the converged state by 3e-14 and the reported
+/// `solver.residual` (a round-off-level 1.9e-11) by 4e-5 relative, beyond the 1e-9 the issue
+/// allows for this change.
 fn solve<const N: usize>(mut a: [[f64; N]; N], mut b: [f64; N]) -> Option<[f64; N]> {
     for col in 0..N {
         let pivot = (col..N).max_by(|&i, &j| a[i][col].abs().total_cmp(&a[j][col].abs()))?;
@@ -429,81 +435,26 @@ impl Problem {
         Some((dv, dx))
     }
 
-    /// Newton on Π with the friction forces held.
+    /// Newton on Π with the friction forces held ([`HeldFriction`]), from `state`.
     fn newton(
         &self,
-        v: &mut [f64; 3],
-        x: &mut [[f64; 2]],
+        state: State,
         friction: &[[f64; 2]],
-        tolerance: f64,
-        ctx: &Context,
-        iterations: &mut u32,
-    ) -> Result<f64, CalcError> {
-        let mut here = self.local(*v, x, friction);
-        let mut residual = self.residual(&here);
-        let cap = *iterations + MAX_ITERATIONS;
-        let not_converged = |iterations: u32, residual: f64| CalcError::NotConverged {
-            method: "newton_schur_energy_line_search",
-            iterations,
-            residual,
+        budget: &Budget,
+        work: &mut Work,
+    ) -> Result<Converged<(State, Local)>, Stopped> {
+        let driver = Driver::new(
+            "newton_schur_energy_line_search",
+            IterationUnit::NewtonSteps,
+            MAX_ITERATIONS,
+            budget,
+        )
+        .check_every(8);
+        let system = HeldFriction {
+            problem: self,
+            friction,
         };
-        while residual > tolerance {
-            *iterations += 1;
-            if *iterations > cap || !residual.is_finite() {
-                return Err(not_converged(*iterations, residual));
-            }
-            if (*iterations).is_multiple_of(8) {
-                ctx.check_deadline()?;
-            }
-            let (mut dv, mut dx) = self
-                .step(&here)
-                .ok_or_else(|| not_converged(*iterations, residual))?;
-            // A ring step far beyond the geometry (a singular system: no ball touching yet) is
-            // shortened to it; the direction stays the Newton direction.
-            let longest = dv[0].abs().max(dv[1].abs()).max(dv[2].abs());
-            let limit = self.bd + 4.0 * self.delta_scale;
-            if longest > limit {
-                let shrink = limit / longest;
-                dv.iter_mut().for_each(|d| *d *= shrink);
-                dx.iter_mut().for_each(|d| {
-                    d[0] *= shrink;
-                    d[1] *= shrink;
-                });
-            }
-            let mut slope = (0..3).map(|r| here.g_v[r] * dv[r]).sum::<f64>();
-            for (g, d) in here.g_x.iter().zip(&dx) {
-                slope += g[0] * d[0] + g[1] * d[1];
-            }
-            if slope.is_nan() || slope >= 0.0 {
-                return Err(not_converged(*iterations, residual));
-            }
-            let mut t = 1.0;
-            let mut accepted = None;
-            for _ in 0..=MAX_HALVINGS {
-                let tv = [v[0] + t * dv[0], v[1] + t * dv[1], v[2] + t * dv[2]];
-                let tx: Vec<[f64; 2]> = x
-                    .iter()
-                    .zip(&dx)
-                    .map(|(a, d)| [a[0] + t * d[0], a[1] + t * d[1]])
-                    .collect();
-                let next = self.local(tv, &tx, friction);
-                let decreases = next.energy <= here.energy + 1e-4 * t * slope;
-                let balances = self.residual(&next) <= (1.0 - 1e-4 * t) * residual;
-                if decreases || balances {
-                    accepted = Some((tv, tx, next));
-                    break;
-                }
-                t *= 0.5;
-            }
-            let Some((tv, tx, next)) = accepted else {
-                return Err(not_converged(*iterations, residual));
-            };
-            *v = tv;
-            x.copy_from_slice(&tx);
-            here = next;
-            residual = self.residual(&here);
-        }
-        Ok(residual)
+        work.add(newton::solve(&system, state, TOLERANCE, LINE, &driver))
     }
 
     /// The gyroscopic friction forces at the outer contacts of the balls in state (v, X), in
@@ -561,138 +512,36 @@ impl Problem {
         (d_i, d_x)
     }
 
-    /// Newton on the whole balance with the friction following the state (its Jacobian by
-    /// differences; the system is then not symmetric, so the step is judged by the residual).
+    /// Newton on the whole balance with the friction following the state
+    /// ([`CoupledFriction`]), from `state`.
     fn coupled_newton(
         &self,
-        v: &mut [f64; 3],
-        x: &mut [[f64; 2]],
-        ctx: &Context,
-        iterations: &mut u32,
-    ) -> Result<f64, CalcError> {
-        let norm = |l: &Local| -> f64 {
-            let mut s = l.g_v.iter().map(|g| g * g).sum::<f64>();
-            s += l.g_x.iter().map(|g| g[0] * g[0] + g[1] * g[1]).sum::<f64>();
-            s.sqrt()
-        };
-        let at = |v: [f64; 3], x: &[[f64; 2]]| {
-            let f = self.gyroscopic_friction(v, x);
-            self.local(v, x, &f)
-        };
-        let mut here = at(*v, x);
-        let mut residual = self.residual(&here);
-        let cap = *iterations + MAX_ITERATIONS;
-        let failed = |iterations: u32, residual: f64| CalcError::NotConverged {
-            method: "newton_gyroscopic_friction",
-            iterations,
-            residual,
-        };
-        while residual > TOLERANCE {
-            *iterations += 1;
-            if *iterations > cap || !residual.is_finite() {
-                return Err(failed(*iterations, residual));
-            }
-            if (*iterations).is_multiple_of(8) {
-                ctx.check_deadline()?;
-            }
-            let floor = self.stiffness_floor();
-            let mut schur = here.h_vv;
-            let mut rhs = [-here.g_v[0], -here.g_v[1], -here.g_v[2]];
-            let mut blocks = Vec::with_capacity(x.len());
-            for (j, &c) in self.cosines.iter().enumerate() {
-                let (df_i, df_x) = self.friction_jacobians(self.inner_centre(*v, c), x[j]);
-                let jac = Self::jacobian(c);
-                // A = H_xx − ∂f/∂X; C = H_xv − (∂f/∂I) J; B = H_vx.
-                let mut a = here.h_xx[j];
-                for r in 0..2 {
-                    for k in 0..2 {
-                        a[r][k] -= df_x[r][k];
-                    }
-                    a[r][r] +=
-                        1e-12 * (here.h_xx[j][0][0] + here.h_xx[j][1][1]).abs() + floor * 1e-3;
-                }
-                let mut cm = [[0.0; 3]; 2];
-                for r in 0..2 {
-                    for col in 0..3 {
-                        let dfv = df_i[r][0] * jac[0][col] + df_i[r][1] * jac[1][col];
-                        cm[r][col] = here.h_vx[j][col][r]
-                            - if self.tilt_free || col < 2 { dfv } else { 0.0 };
-                    }
-                }
-                let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
-                if det.is_nan() || det == 0.0 {
-                    return Err(failed(*iterations, residual));
-                }
-                let inv = [
-                    [a[1][1] / det, -a[0][1] / det],
-                    [-a[1][0] / det, a[0][0] / det],
-                ];
-                let b = here.h_vx[j];
-                let g = here.g_x[j];
-                // P = B A⁻¹ (3 × 2).
-                let mut pm = [[0.0; 2]; 3];
-                for r in 0..3 {
-                    for k in 0..2 {
-                        pm[r][k] = b[r][0] * inv[0][k] + b[r][1] * inv[1][k];
-                    }
-                }
-                for r in 0..3 {
-                    for col in 0..3 {
-                        schur[r][col] -= pm[r][0] * cm[0][col] + pm[r][1] * cm[1][col];
-                    }
-                    rhs[r] += pm[r][0] * g[0] + pm[r][1] * g[1];
-                }
-                blocks.push((inv, cm));
-            }
-            let dv = solve(schur, rhs).ok_or_else(|| failed(*iterations, residual))?;
-            let dx: Vec<[f64; 2]> = blocks
-                .iter()
-                .zip(&here.g_x)
-                .map(|((inv, cm), g)| {
-                    let t = [
-                        -g[0] - (cm[0][0] * dv[0] + cm[0][1] * dv[1] + cm[0][2] * dv[2]),
-                        -g[1] - (cm[1][0] * dv[0] + cm[1][1] * dv[1] + cm[1][2] * dv[2]),
-                    ];
-                    [
-                        inv[0][0] * t[0] + inv[0][1] * t[1],
-                        inv[1][0] * t[0] + inv[1][1] * t[1],
-                    ]
-                })
-                .collect();
-            let start = norm(&here);
-            let mut t = 1.0;
-            let mut accepted = None;
-            for _ in 0..=MAX_HALVINGS {
-                let tv = [v[0] + t * dv[0], v[1] + t * dv[1], v[2] + t * dv[2]];
-                let tx: Vec<[f64; 2]> = x
-                    .iter()
-                    .zip(&dx)
-                    .map(|(a, d)| [a[0] + t * d[0], a[1] + t * d[1]])
-                    .collect();
-                let next = at(tv, &tx);
-                if norm(&next) <= (1.0 - 1e-4 * t) * start {
-                    accepted = Some((tv, tx, next));
-                    break;
-                }
-                t *= 0.5;
-            }
-            let Some((tv, tx, next)) = accepted else {
-                return Err(failed(*iterations, residual));
-            };
-            *v = tv;
-            x.copy_from_slice(&tx);
-            here = next;
-            residual = self.residual(&here);
-        }
-        Ok(residual)
+        state: State,
+        budget: &Budget,
+        work: &mut Work,
+    ) -> Result<Converged<(State, Local)>, Stopped> {
+        let driver = Driver::new(
+            "newton_gyroscopic_friction",
+            IterationUnit::NewtonSteps,
+            MAX_ITERATIONS,
+            budget,
+        )
+        .check_every(8);
+        work.add(newton::solve(
+            &CoupledFriction { problem: self },
+            state,
+            TOLERANCE,
+            LINE,
+            &driver,
+        ))
     }
 
     /// Solve from the ring pushed along the load, the balls against their outer grooves.
-    pub fn solve(&self, ctx: &Context) -> Result<Solution, CalcError> {
+    pub fn solve(&self, budget: &Budget) -> Result<Solution, CalcError> {
         let load = self.load_scaled();
         let norm = (load[0] * load[0] + load[1] * load[1] + load[2] * load[2]).sqrt();
         let push = 2.0 * self.delta_scale;
-        let mut v = if norm > 0.0 {
+        let v = if norm > 0.0 {
             [
                 push * load[0] / norm,
                 push * load[1] / norm,
@@ -705,7 +554,7 @@ impl Problem {
         } else {
             [0.0; 3]
         };
-        let mut x: Vec<[f64; 2]> = match self.balls {
+        let x: Vec<[f64; 2]> = match self.balls {
             Balls::Free {
                 k_o, centrifugal_n, ..
             } => self
@@ -719,23 +568,31 @@ impl Problem {
                 .collect(),
             Balls::Series { .. } => Vec::new(),
         };
-        let zero = vec![[0.0; 2]; x.len()];
-        let mut friction = zero.clone();
-        let mut iterations = 0;
+        let mut friction = vec![[0.0; 2]; x.len()];
+        let mut work = Work::default();
         let gyroscopic = matches!(self.balls, Balls::Free { gyro: Some(_), .. });
-        let tolerance = TOLERANCE;
-        let mut residual =
-            self.newton(&mut v, &mut x, &friction, tolerance, ctx, &mut iterations)?;
+        let mut run = self.newton(State { v, x }, &friction, budget, &mut work)?;
         if gyroscopic {
             // A few under-relaxed updates of the friction forces bring the state near; the
             // coupled Newton finishes. The relaxation halves whenever an update moves the
-            // forces more than the one before (an oscillation).
+            // forces more than the one before (an oscillation). Each update is one held-
+            // friction Newton solve; running out of updates is not a failure (the coupled
+            // Newton goes on from where they left the state).
             let mut relaxation = 1.0;
             let mut last_change = f64::INFINITY;
-            for _ in 0..WARM_FRICTION_UPDATES {
-                let target = self.gyroscopic_friction(v, &x);
-                if self.residual(&self.local(v, &x, &target)) <= WARM_TOLERANCE {
-                    break;
+            let mut failure = None;
+            let warm = Driver::new(
+                "relaxed_gyroscopic_friction",
+                IterationUnit::Evaluations,
+                WARM_FRICTION_UPDATES,
+                budget,
+            )
+            .run(|_| {
+                let State { v, x } = &run.value.0;
+                let target = self.gyroscopic_friction(*v, x);
+                let residual = self.residual(&self.local(*v, x, &target));
+                if residual <= WARM_TOLERANCE {
+                    return Verdict::Converged((), residual);
                 }
                 let change = target
                     .iter()
@@ -750,31 +607,38 @@ impl Problem {
                     f[0] += relaxation * (t[0] - f[0]);
                     f[1] += relaxation * (t[1] - f[1]);
                 }
-                ctx.check_deadline()?;
-                self.newton(&mut v, &mut x, &friction, tolerance, ctx, &mut iterations)?;
+                match self.newton(run.value.0.clone(), &friction, budget, &mut work) {
+                    Ok(next) => {
+                        run = next;
+                        Verdict::Continue(residual)
+                    }
+                    Err(stopped) => {
+                        failure = Some(stopped);
+                        Verdict::Stalled(residual)
+                    }
+                }
+            });
+            if let Some(stopped) = failure {
+                return Err(stopped.into());
             }
-            residual = self.coupled_newton(&mut v, &mut x, ctx, &mut iterations)?;
-            friction = self.gyroscopic_friction(v, &x);
+            match warm {
+                Err(stopped) if stopped.reason() != StopReason::IterationCap => {
+                    return Err(stopped.into())
+                }
+                _ => {}
+            }
+            run = self.coupled_newton(run.value.0, budget, &mut work)?;
+            friction = self.gyroscopic_friction(run.value.0.v, &run.value.0.x);
         }
+        let (State { v, x }, _) = run.value;
         let balls = self.states(v, &x, &friction);
         Ok(Solution {
             displacement: [v[0], v[1], v[2] / self.arm],
             balls,
-            report: SolverReport {
-                method: match self.balls {
-                    Balls::Series { .. } => "newton_energy_line_search_3dof".to_owned(),
-                    Balls::Free { .. } => "newton_schur_energy_line_search_ball_dof".to_owned(),
-                },
-                fidelity: Level::Standard,
-                grid: None,
-                iterations,
-                iterations_unit: IterationUnit::NewtonSteps,
-                evaluations: None,
-                stop_reason: StopReason::Converged,
-                residual: Some(residual),
-                error_estimate: None,
-                elapsed_ms: 0.0,
-            },
+            report: run.report.named(match self.balls {
+                Balls::Series { .. } => "newton_energy_line_search_3dof",
+                Balls::Free { .. } => "newton_schur_energy_line_search_ball_dof",
+            }),
         })
     }
 
@@ -821,6 +685,236 @@ impl Problem {
                 }
             })
             .collect()
+    }
+}
+
+/// The unknowns: the ring's scaled displacement v = (δ_r, δ_a, θℜ) and, for free balls, every
+/// ball centre X_j (from its outer groove centre).
+#[derive(Debug, Clone)]
+struct State {
+    v: [f64; 3],
+    x: Vec<[f64; 2]>,
+}
+
+/// A Newton direction (dv, dX).
+type Step = ([f64; 3], Vec<[f64; 2]>);
+
+/// The line search of every Newton run here: at most [`MAX_HALVINGS`] halvings, no step taken
+/// that the system does not accept.
+const LINE: LineSearch = LineSearch {
+    max_halvings: MAX_HALVINGS,
+    take_shortest: false,
+};
+
+/// The Newton steps and trial points of the runs of one solve so far: a solve reports their
+/// sum, and each run's report (converged or stopped) carries the sum up to it.
+#[derive(Debug, Default)]
+struct Work {
+    steps: u32,
+    evaluations: u32,
+}
+
+impl Work {
+    fn add<T>(&mut self, run: Result<Converged<T>, Stopped>) -> Result<Converged<T>, Stopped> {
+        match run {
+            Ok(mut done) => {
+                self.count(&mut done.report);
+                Ok(done)
+            }
+            Err(mut stopped) => {
+                self.count(&mut stopped.report);
+                Err(stopped)
+            }
+        }
+    }
+
+    fn count(&mut self, report: &mut SolverReport) {
+        self.steps += report.iterations;
+        self.evaluations += report.evaluations.unwrap_or(0);
+        report.iterations = self.steps;
+        report.evaluations = (self.evaluations > 0).then_some(self.evaluations);
+    }
+}
+
+impl State {
+    /// x + t·step.
+    fn advance(&self, (dv, dx): &Step, t: f64) -> State {
+        let v = self.v;
+        State {
+            v: [v[0] + t * dv[0], v[1] + t * dv[1], v[2] + t * dv[2]],
+            x: self
+                .x
+                .iter()
+                .zip(dx)
+                .map(|(a, d)| [a[0] + t * d[0], a[1] + t * d[1]])
+                .collect(),
+        }
+    }
+}
+
+/// Π with the friction forces held: a convex energy, its steps judged by Armijo on Π or a fall
+/// of the force residual.
+struct HeldFriction<'a> {
+    problem: &'a Problem,
+    friction: &'a [[f64; 2]],
+}
+
+impl NewtonSystem for HeldFriction<'_> {
+    type Point = State;
+    type Eval = Local;
+    type Step = Step;
+
+    fn evaluate(&self, s: &State) -> Local {
+        self.problem.local(s.v, &s.x, self.friction)
+    }
+
+    fn residual(&self, at: &Local) -> f64 {
+        self.problem.residual(at)
+    }
+
+    /// The Schur-complement Newton step; a ring step far beyond the geometry (a singular
+    /// system: no ball touching yet) is shortened to it, the direction staying the Newton
+    /// direction.
+    fn direction(&self, _s: &State, at: &Local) -> Option<Step> {
+        let p = self.problem;
+        let (mut dv, mut dx) = p.step(at)?;
+        let longest = dv[0].abs().max(dv[1].abs()).max(dv[2].abs());
+        let limit = p.bd + 4.0 * p.delta_scale;
+        if longest > limit {
+            let shrink = limit / longest;
+            dv.iter_mut().for_each(|d| *d *= shrink);
+            dx.iter_mut().for_each(|d| {
+                d[0] *= shrink;
+                d[1] *= shrink;
+            });
+        }
+        Some((dv, dx))
+    }
+
+    fn slope(&self, at: &Local, (dv, dx): &Step) -> Option<f64> {
+        let mut slope = (0..3).map(|r| at.g_v[r] * dv[r]).sum::<f64>();
+        for (g, d) in at.g_x.iter().zip(dx) {
+            slope += g[0] * d[0] + g[1] * d[1];
+        }
+        Some(slope)
+    }
+
+    fn advance(&self, s: &State, step: &Step, t: f64) -> State {
+        s.advance(step, t)
+    }
+
+    fn accepts(&self, here: &Local, trial: &Local, t: f64, slope: Option<f64>) -> bool {
+        armijo(here.energy, trial.energy, t, slope.unwrap_or(f64::NAN))
+            || residual_falls(self.residual(here), self.residual(trial), t)
+    }
+}
+
+/// The whole balance with the gyroscopic friction following the state: its Jacobian by central
+/// differences makes the system non-symmetric (no energy), so a step is judged by the fall of
+/// the force vector's 2-norm.
+struct CoupledFriction<'a> {
+    problem: &'a Problem,
+}
+
+impl CoupledFriction<'_> {
+    /// |(∇_v Π, ∇_X Π)|₂.
+    fn norm(l: &Local) -> f64 {
+        let mut s = l.g_v.iter().map(|g| g * g).sum::<f64>();
+        s += l.g_x.iter().map(|g| g[0] * g[0] + g[1] * g[1]).sum::<f64>();
+        s.sqrt()
+    }
+}
+
+impl NewtonSystem for CoupledFriction<'_> {
+    type Point = State;
+    type Eval = Local;
+    type Step = Step;
+
+    fn evaluate(&self, s: &State) -> Local {
+        let f = self.problem.gyroscopic_friction(s.v, &s.x);
+        self.problem.local(s.v, &s.x, &f)
+    }
+
+    fn residual(&self, at: &Local) -> f64 {
+        self.problem.residual(at)
+    }
+
+    /// The Newton step with the ball blocks eliminated: A = H_xx − ∂f/∂X (shifted), C = H_xv −
+    /// (∂f/∂I) J, B = H_vx; the ring step from the 3 × 3 Schur complement, then each ball's.
+    fn direction(&self, s: &State, here: &Local) -> Option<Step> {
+        let p = self.problem;
+        let floor = p.stiffness_floor();
+        let mut schur = here.h_vv;
+        let mut rhs = [-here.g_v[0], -here.g_v[1], -here.g_v[2]];
+        let mut blocks = Vec::with_capacity(s.x.len());
+        for (j, &c) in p.cosines.iter().enumerate() {
+            let (df_i, df_x) = p.friction_jacobians(p.inner_centre(s.v, c), s.x[j]);
+            let jac = Problem::jacobian(c);
+            // A = H_xx − ∂f/∂X; C = H_xv − (∂f/∂I) J; B = H_vx.
+            let mut a = here.h_xx[j];
+            for r in 0..2 {
+                for k in 0..2 {
+                    a[r][k] -= df_x[r][k];
+                }
+                a[r][r] += 1e-12 * (here.h_xx[j][0][0] + here.h_xx[j][1][1]).abs() + floor * 1e-3;
+            }
+            let mut cm = [[0.0; 3]; 2];
+            for r in 0..2 {
+                for col in 0..3 {
+                    let dfv = df_i[r][0] * jac[0][col] + df_i[r][1] * jac[1][col];
+                    cm[r][col] =
+                        here.h_vx[j][col][r] - if p.tilt_free || col < 2 { dfv } else { 0.0 };
+                }
+            }
+            let det = a[0][0] * a[1][1] - a[0][1] * a[1][0];
+            if det.is_nan() || det == 0.0 {
+                return None;
+            }
+            let inv = [
+                [a[1][1] / det, -a[0][1] / det],
+                [-a[1][0] / det, a[0][0] / det],
+            ];
+            let b = here.h_vx[j];
+            let g = here.g_x[j];
+            // P = B A⁻¹ (3 × 2).
+            let mut pm = [[0.0; 2]; 3];
+            for r in 0..3 {
+                for k in 0..2 {
+                    pm[r][k] = b[r][0] * inv[0][k] + b[r][1] * inv[1][k];
+                }
+            }
+            for r in 0..3 {
+                for col in 0..3 {
+                    schur[r][col] -= pm[r][0] * cm[0][col] + pm[r][1] * cm[1][col];
+                }
+                rhs[r] += pm[r][0] * g[0] + pm[r][1] * g[1];
+            }
+            blocks.push((inv, cm));
+        }
+        let dv = solve(schur, rhs)?;
+        let dx: Vec<[f64; 2]> = blocks
+            .iter()
+            .zip(&here.g_x)
+            .map(|((inv, cm), g)| {
+                let t = [
+                    -g[0] - (cm[0][0] * dv[0] + cm[0][1] * dv[1] + cm[0][2] * dv[2]),
+                    -g[1] - (cm[1][0] * dv[0] + cm[1][1] * dv[1] + cm[1][2] * dv[2]),
+                ];
+                [
+                    inv[0][0] * t[0] + inv[0][1] * t[1],
+                    inv[1][0] * t[0] + inv[1][1] * t[1],
+                ]
+            })
+            .collect();
+        Some((dv, dx))
+    }
+
+    fn advance(&self, s: &State, step: &Step, t: f64) -> State {
+        s.advance(step, t)
+    }
+
+    fn accepts(&self, here: &Local, trial: &Local, t: f64, _slope: Option<f64>) -> bool {
+        residual_falls(Self::norm(here), Self::norm(trial), t)
     }
 }
 

@@ -19,10 +19,10 @@ use serde::Deserialize;
 use utoipa::ToSchema;
 
 use crate::calc::contact::hertz::{
-    Body, Contact, Field, HertzOutput, Invalid, Method, PoissonRatio, Shape, Solution,
+    Body, Contact, Field, Invalid, Method, PoissonRatio, Shape, Solution,
 };
 use crate::calc::quantity::Positive;
-use crate::calc::{CalcError, Context, FieldError};
+use crate::calc::{CalcError, FieldError, Warning};
 
 /// Largest ball or pitch diameter accepted, m.
 const MAX_DIAMETER_M: f64 = 100.0;
@@ -344,53 +344,47 @@ impl BallBearing {
         contact.solve()
     }
 
-    /// [`Self::raceway_solution`] as the Hertz room's output, its warnings and solver report
-    /// passed to `ctx` (the report is overwritten by the caller's). Transitional: the load
-    /// distribution still reads the Hertz room's output; it can take `raceway_solution`.
-    pub fn raceway_contact(
-        &self,
-        race: Race,
-        contact_angle: f64,
-        load_n: f64,
-        ctx: &mut Context,
-    ) -> Result<HertzOutput, CalcError> {
-        Ok(HertzOutput::reported(
-            &self.raceway_solution(race, contact_angle, load_n)?,
-            ctx,
-        ))
-    }
-
     /// Load–deflection constant K of one ball on `race` at contact angle α (rad), N/m^1.5:
-    /// Q = K δ^{3/2}, from the exact Hertz approach at 1 N.
+    /// Q = K δ^{3/2}, from the exact Hertz approach at 1 N (with the Hertz model's warnings).
     pub fn raceway_stiffness(
         &self,
         race: Race,
         contact_angle: f64,
-        ctx: &mut Context,
-    ) -> Result<f64, CalcError> {
-        let contact = self.raceway_contact(race, contact_angle, 1.0, ctx)?;
+    ) -> Result<Stiffness, CalcError> {
+        let contact = self.raceway_solution(race, contact_angle, 1.0)?;
         let approach = contact
             .approach_m
             .ok_or_else(|| CalcError::Internal("a point contact without an approach".to_owned()))?;
-        Ok(approach.powf(-1.5))
+        Ok(Stiffness {
+            k: approach.powf(-1.5),
+            warnings: contact.warnings,
+        })
     }
 
     /// Load–deflection constant K_n of one ball between both raceways at contact angle α (rad),
     /// N/m^1.5: Q = K_n δ^{3/2} with δ = δ_i + δ_o the total elastic approach, i.e.
     /// K_n = [K_i^{−2/3} + K_o^{−2/3}]^{−3/2} (Hamrock eq. 21.101 with the exponents 2/3, 3/2).
     /// Since δ ∝ Q^{2/3} exactly, each K is read from the exact Hertz approach at 1 N.
-    pub fn contact_stiffness(
-        &self,
-        contact_angle: f64,
-        ctx: &mut Context,
-    ) -> Result<f64, CalcError> {
+    pub fn contact_stiffness(&self, contact_angle: f64) -> Result<Stiffness, CalcError> {
         let mut approach = 0.0;
+        let mut warnings = Vec::new();
         for race in [Race::Inner, Race::Outer] {
-            let contact = self.raceway_contact(race, contact_angle, 1.0, ctx)?;
+            let contact = self.raceway_solution(race, contact_angle, 1.0)?;
             approach += contact.approach_m.ok_or_else(|| {
                 CalcError::Internal("a point contact without an approach".to_owned())
             })?;
+            warnings.extend(contact.warnings);
         }
-        Ok(approach.powf(-1.5))
+        Ok(Stiffness {
+            k: approach.powf(-1.5),
+            warnings,
+        })
     }
+}
+
+/// A load–deflection constant and the Hertz model's warnings on the way to it, in order.
+#[derive(Debug, Clone)]
+pub struct Stiffness {
+    pub k: f64,
+    pub warnings: Vec<Warning>,
 }

@@ -44,9 +44,9 @@ use super::ring_equilibrium::{
     classic, general, load_scale, tilt_arm, AngleMode, LoadDistributionCase, SpeedModel,
 };
 use super::roller::{self, RollerBearing, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
-use crate::calc::contact::hertz::HertzOutput;
+use crate::calc::contact::hertz::{Footprint, Solution};
 use crate::calc::quantity::{NonNegative, RingSpeed};
-use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate, Warning};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::Level;
 
@@ -421,9 +421,17 @@ pub struct RacewayContact {
 }
 
 impl RacewayContact {
-    fn from_hertz(h: &HertzOutput) -> Result<Self, CalcError> {
-        match (h.semi_major_axis_m, h.semi_minor_axis_m, h.approach_m) {
-            (Some(a), Some(b), Some(approach)) => Ok(RacewayContact {
+    /// The contact of the Hertz model's solution (an ellipse with its approach).
+    fn of(h: &Solution) -> Result<Self, CalcError> {
+        match (&h.footprint, h.approach_m) {
+            (
+                &Footprint::Ellipse {
+                    semi_major_axis_m: a,
+                    semi_minor_axis_m: b,
+                    ..
+                },
+                Some(approach),
+            ) => Ok(RacewayContact {
                 max_pressure_pa: h.max_pressure_pa,
                 semi_major_axis_m: a,
                 semi_minor_axis_m: b,
@@ -557,7 +565,9 @@ pub(super) fn solve(
     };
     let bearing = &case.bearing;
     let alpha_f = bearing.free_contact_angle();
-    let k_n = bearing.contact_stiffness(alpha_f, ctx)?;
+    let stiffness = bearing.contact_stiffness(alpha_f)?;
+    pass_on(ctx, &stiffness.warnings);
+    let k_n = stiffness.k;
     let speed = speed_model(&case, k_n, ctx)?;
     let eq = if case.moment_n_m.is_none() && speed.is_none() {
         classic(&case, k_n, ctx)?
@@ -583,8 +593,10 @@ pub(super) fn solve(
             "an equilibrium without a loaded ball".to_owned(),
         ));
     }
-    let inner = bearing.raceway_contact(Race::Inner, inner_max.1, inner_max.0, ctx)?;
-    let outer = bearing.raceway_contact(Race::Outer, outer_max.1, outer_max.0, ctx)?;
+    let inner = bearing.raceway_solution(Race::Inner, inner_max.1, inner_max.0)?;
+    pass_on(ctx, &inner.warnings);
+    let outer = bearing.raceway_solution(Race::Outer, outer_max.1, outer_max.0)?;
+    pass_on(ctx, &outer.warnings);
     let p_max = inner.max_pressure_pa.max(outer.max_pressure_pa);
     if p_max > STATIC_LIMIT_PA {
         ctx.warn(
@@ -645,8 +657,8 @@ pub(super) fn solve(
                 .map(|b| b.friction_n.abs())
                 .fold(0.0, f64::max)
         }),
-        inner_contact: RacewayContact::from_hertz(&inner)?,
-        outer_contact: RacewayContact::from_hertz(&outer)?,
+        inner_contact: RacewayContact::of(&inner)?,
+        outer_contact: RacewayContact::of(&outer)?,
     })
 }
 
@@ -662,7 +674,7 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
         );
     }
     let b = &case.bearing;
-    let eq = roller::equilibrium(&case, ctx)?;
+    let eq = roller::equilibrium(&case, &ctx.budget())?;
     let q_max = eq.loads.iter().copied().fold(0.0, f64::max);
     if q_max <= 0.0 {
         return Err(CalcError::Internal(
@@ -682,12 +694,13 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
         .map(|(l, _)| l.0.abs() + 0.5 * width)
         .fold(0.0, f64::max);
     let contact = |inner: bool, ctx: &mut Context| -> Result<RacewayContact, CalcError> {
-        let h = b.raceway_contact(inner, q_lamina, width, ctx)?;
-        match (h.half_width_m, h.approach_m) {
-            (Some(half_width), Some(approach)) => Ok(RacewayContact {
+        let h = b.raceway_solution(inner, q_lamina, width)?;
+        pass_on(ctx, &h.warnings);
+        match (&h.footprint, h.approach_m) {
+            (&Footprint::Line { half_width_m, .. }, Some(approach)) => Ok(RacewayContact {
                 max_pressure_pa: h.max_pressure_pa,
                 semi_major_axis_m: reach,
-                semi_minor_axis_m: half_width,
+                semi_minor_axis_m: half_width_m,
                 approach_m: approach,
             }),
             _ => Err(CalcError::Internal(
@@ -865,6 +878,11 @@ fn speed_model(
             format!("the balls' density is assumed {STEEL_DENSITY_KG_M3} kg/m³ (bearing steel): give bearing.ball.density_kg_m3"),
         );
     }
+    let mut stiffness = |race: Race| -> Result<f64, CalcError> {
+        let s = b.raceway_stiffness(race, alpha_f)?;
+        pass_on(ctx, &s.warnings);
+        Ok(s.k)
+    };
     Ok(Some(SpeedModel {
         centrifugal_n: f_c,
         gyro: gyro_applied.then_some(Gyro {
@@ -872,9 +890,16 @@ fn speed_model(
             inner_rad_s: w_i,
             outer_rad_s: w_o,
         }),
-        k_i: b.raceway_stiffness(Race::Inner, alpha_f, ctx)?,
-        k_o: b.raceway_stiffness(Race::Outer, alpha_f, ctx)?,
+        k_i: stiffness(Race::Inner)?,
+        k_o: stiffness(Race::Outer)?,
     }))
+}
+
+/// Pass a model's warnings on to the response, in order.
+fn pass_on(ctx: &mut Context, warnings: &[Warning]) {
+    for w in warnings {
+        ctx.warn(w.code, w.message.clone());
+    }
 }
 
 #[cfg(test)]

@@ -1164,9 +1164,11 @@ fn denormal_inputs_stay_finite() {
                     assert!(get(&v, p).is_finite(), "{p} in {r}");
                 }
             }
-            // A 422: refused, or (loads and forces all denormal) no converged balance.
+            // A 422: refused, or (loads and forces all denormal) no converged balance (a
+            // solver's stop, or a root search's).
             Err(Failure::Invalid(_))
             | Err(Failure::Calc(CalcError::Impossible { .. }))
+            | Err(Failure::Calc(CalcError::Stopped(_)))
             | Err(Failure::Calc(CalcError::NotConverged { .. })) => {}
             Err(e) => panic!("{r}: {e:?}"),
         }

@@ -10,8 +10,11 @@ use super::geometry::BallBearing;
 use crate::calc::quantity::RingSpeed;
 use crate::calc::{CalcError, Context};
 use crate::effects::Mode;
-use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
-use crate::numerics::roots::{brent, grow_bracket, Root, RootError, Stopping};
+use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::numerics::dense;
+use crate::numerics::driver::{Budget, Driver, Stopped};
+use crate::numerics::newton::{self, armijo, residual_falls, LineSearch, NewtonSystem};
+use crate::numerics::roots::{brent, grow_bracket, Root, Stopping};
 
 /// Force balance, relative to the load scale, at which the equilibrium is accepted.
 const TOLERANCE: f64 = 1e-9;
@@ -50,28 +53,42 @@ pub(super) const MAX_BRENT_ITERATIONS: u32 = 200;
 
 /// The one-dimensional load balance: `force` is negative (or zero) at 0 and turns positive as the
 /// ring is pushed in; `hi` is doubled (at most 200 times) until it does, then Brent's method
-/// finds the root. `method` names the solve in a not-converged answer.
+/// finds the root. `method` names the solve in its report and in a not-converged answer.
 pub(super) fn load_balance_root(
     mut force: impl FnMut(f64) -> f64,
     hi: f64,
     method: &'static str,
-    ctx: &Context,
+    budget: &Budget,
 ) -> Result<Root, CalcError> {
     let hi = grow_bracket(&mut force, hi)
         .map_err(|_| CalcError::Internal(format!("{method}: no bracket")))?;
-    ctx.check_deadline()?;
+    if !budget.alive() {
+        return Err(CalcError::DeadlineExceeded);
+    }
     let stop = Stopping {
         x_tolerance: 0.0,
         max_iterations: MAX_BRENT_ITERATIONS,
     };
-    brent(force, 0.0, hi, stop).map_err(|e| match e {
-        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-            method,
-            iterations,
-            residual: width,
-        },
-        other => CalcError::Internal(format!("{method} bracket: {other:?}")),
-    })
+    let mut root = brent(force, 0.0, hi, stop).map_err(|e| CalcError::from_root(method, e))?;
+    root.report = root.report.named(method);
+    Ok(root)
+}
+
+/// A root whose force balance, `residual` (relative to the load scale), is still above
+/// `tolerance`: the balance stalled there (Brent closed its bracket on a force that round-off
+/// keeps from balancing). The report is the root's, with that residual.
+pub(super) fn balanced(
+    root: &Root,
+    residual: f64,
+    tolerance: f64,
+) -> Result<SolverReport, Stopped> {
+    let mut report = root.report.clone();
+    report.residual = Some(residual);
+    if residual > tolerance {
+        report.stop_reason = StopReason::Stalled;
+        return Err(Stopped { report });
+    }
+    Ok(report)
 }
 
 /// ℜ = d_m/2 + (f_i − ½)D cos α_f, m: the radius of the inner groove curvature centres, the
@@ -119,7 +136,7 @@ pub(super) fn classic(
 ) -> Result<Equilibrium, CalcError> {
     let rings = Rings::new(case, k_n);
     rings.check_existence(case)?;
-    let (u, report) = rings.equilibrium(ctx)?;
+    let (u, report) = rings.equilibrium(&ctx.budget())?;
     rings.check_geometry(u)?;
     let (d0, d_pi) = (
         rings.signed_deflection(u, 1.0),
@@ -197,7 +214,7 @@ pub(super) fn general(
         scale,
         delta_scale: (scale / (z as f64 * k_n)).powf(2.0 / 3.0),
     };
-    let solution = problem.solve(ctx)?;
+    let solution = problem.solve(&ctx.budget())?;
     let d = solution.displacement;
     if matches!(case.mode, AngleMode::Varying) && d[0] >= b.radial_centre_offset_m {
         return Err(CalcError::impossible(
@@ -400,7 +417,7 @@ impl Rings {
     }
 
     /// The equilibrium u and the solver's report.
-    fn equilibrium(&self, ctx: &Context) -> Result<([f64; 2], SolverReport), CalcError> {
+    fn equilibrium(&self, budget: &Budget) -> Result<([f64; 2], SolverReport), CalcError> {
         let [f_r, f_a] = self.load;
         let axial_symmetric = match self.law {
             Law::Varying { .. } => true,
@@ -409,19 +426,18 @@ impl Rings {
         if f_r == 0.0 && f_a == 0.0 {
             // A preloaded bearing at rest: the concentric position, every ball equally loaded.
             let u = [0.0, 0.0];
-            return Ok((
-                u,
-                report("symmetric", 0, self.residual(self.local(u).gradient)),
-            ));
+            let at_rest = Driver::new("symmetric", IterationUnit::None, 0, budget)
+                .converged_at_start(u, self.residual(self.local(u).gradient));
+            return Ok((u, at_rest.report));
         }
         // u_a = 0: contact angles 0 (varying) or δ_a = 0 (fixed), the symmetric position.
         if f_r == 0.0 {
-            return self.one_dimensional(1, ctx);
+            return self.one_dimensional(1, budget);
         }
         if f_a == 0.0 && axial_symmetric {
-            return self.one_dimensional(0, ctx);
+            return self.one_dimensional(0, budget);
         }
-        self.newton(ctx)
+        self.newton(budget)
     }
 
     /// Brent's method on one component of the force balance along axis k, the other unknown
@@ -430,8 +446,9 @@ impl Rings {
     fn one_dimensional(
         &self,
         k: usize,
-        ctx: &Context,
+        budget: &Budget,
     ) -> Result<([f64; 2], SolverReport), CalcError> {
+        const METHOD: &str = "brent_ball_load_balance";
         let at = |x: f64| {
             let mut u = [0.0, 0.0];
             u[k] = x;
@@ -441,113 +458,53 @@ impl Rings {
         let at_rest = self.residual(self.local(at(0.0)).gradient);
         if force(0.0) >= 0.0 && at_rest <= TOLERANCE {
             // A load below round-off of a heavy preload.
-            return Ok((at(0.0), report("brent_ball_load_balance", 0, at_rest)));
+            let done = Driver::new(
+                METHOD,
+                IterationUnit::RootSearchSteps,
+                MAX_BRENT_ITERATIONS,
+                budget,
+            )
+            .converged_at_start(at(0.0), at_rest);
+            return Ok((done.value, done.report));
         }
         // Past the clearance (or the end play), then doubled until the balls carry the load.
         let hi = self.a0 + self.bd + self.delta_scale;
-        let root = load_balance_root(force, hi, "brent_ball_load_balance", ctx)?;
+        let root = load_balance_root(force, hi, METHOD, budget)?;
         let u = at(root.x);
-        let residual = self.residual(self.local(u).gradient);
-        if residual > TOLERANCE {
-            return Err(CalcError::NotConverged {
-                method: "brent_ball_load_balance",
-                iterations: root.iterations,
-                residual,
-            });
-        }
-        Ok((
-            u,
-            report("brent_ball_load_balance", root.iterations, residual),
-        ))
+        let report = balanced(&root, self.residual(self.local(u).gradient), TOLERANCE)?;
+        Ok((u, report))
     }
 
-    /// Safeguarded Newton on Π: analytic Hessian, Levenberg shift when it is singular, a
-    /// gradient step where no ball is loaded, Armijo backtracking on Π.
-    fn newton(&self, ctx: &Context) -> Result<([f64; 2], SolverReport), CalcError> {
+    /// Safeguarded Newton on Π ([`Energy`]): analytic Hessian, Levenberg shift when it is
+    /// singular, a gradient step where no ball is loaded, Armijo backtracking on Π.
+    fn newton(&self, budget: &Budget) -> Result<([f64; 2], SolverReport), CalcError> {
         // Start with the ring pushed along the load by twice the characteristic deflection
         // from the position where the unloaded balls touch.
         let f = self.load[0].hypot(self.load[1]);
         let push = 2.0 * self.delta_scale;
-        let mut u = match self.law {
+        let start = match self.law {
             Law::Varying { .. } => [push * self.load[0] / f, self.a0 + push * self.load[1] / f],
             Law::Fixed { .. } => [push * self.load[0] / f, push * self.load[1] / f],
         };
-        let mut here = self.local(u);
-        let mut residual = self.residual(here.gradient);
-        for iteration in 1..=MAX_ITERATIONS {
-            if residual <= TOLERANCE {
-                return Ok((
-                    u,
-                    report("newton_energy_line_search", iteration - 1, residual),
-                ));
-            }
-            if iteration % 8 == 0 {
-                ctx.check_deadline()?;
-            }
-            let g = here.gradient;
-            let [h_rr, h_ra, h_aa] = here.hessian;
-            let trace = h_rr + h_aa;
-            let step = if trace > 0.0 {
-                let shift = 1e-12 * trace;
-                let (a, b, c) = (h_rr + shift, h_ra, h_aa + shift);
-                let det = a * c - b * b;
-                [-(c * g[0] - b * g[1]) / det, -(a * g[1] - b * g[0]) / det]
-            } else {
-                let norm = g[0].hypot(g[1]);
-                [-g[0] / norm * push, -g[1] / norm * push]
-            };
-            let slope = g[0] * step[0] + g[1] * step[1];
-            if slope >= 0.0 || slope.is_nan() {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            }
-            let mut t = 1.0;
-            let mut accepted = None;
-            for _ in 0..=MAX_HALVINGS {
-                let trial = [u[0] + t * step[0], u[1] + t * step[1]];
-                let next = self.local(trial);
-                // Armijo on Π; near the minimum Π's decrease (∝ residual²) sinks below its
-                // round-off, and a step that shrinks the force residual is taken instead.
-                let decreases = next.energy <= here.energy + 1e-4 * t * slope;
-                let balances = self.residual(next.gradient) <= (1.0 - 1e-4 * t) * residual;
-                if decreases || balances {
-                    accepted = Some((trial, next));
-                    break;
-                }
-                t *= 0.5;
-            }
-            let Some((trial, next)) = accepted else {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            };
-            u = trial;
-            here = next;
-            residual = self.residual(here.gradient);
-            if !residual.is_finite() {
-                return Err(CalcError::NotConverged {
-                    method: "newton_energy_line_search",
-                    iterations: iteration,
-                    residual,
-                });
-            }
-        }
-        if residual <= TOLERANCE {
-            return Ok((
-                u,
-                report("newton_energy_line_search", MAX_ITERATIONS, residual),
-            ));
-        }
-        Err(CalcError::NotConverged {
-            method: "newton_energy_line_search",
-            iterations: MAX_ITERATIONS,
-            residual,
-        })
+        let driver = Driver::new(
+            "newton_energy_line_search",
+            IterationUnit::NewtonSteps,
+            MAX_ITERATIONS,
+            budget,
+        )
+        .check_every(8);
+        let line = LineSearch {
+            max_halvings: MAX_HALVINGS,
+            take_shortest: false,
+        };
+        let run = newton::solve(
+            &Energy { rings: self, push },
+            start,
+            TOLERANCE,
+            line,
+            &driver,
+        )?;
+        Ok((run.value.0, run.report))
     }
 
     fn balls(&self, u: [f64; 2]) -> Vec<Ball> {
@@ -621,21 +578,56 @@ impl Rings {
     }
 }
 
-fn report(method: &str, iterations: u32, residual: f64) -> SolverReport {
-    SolverReport {
-        method: method.to_owned(),
-        fidelity: Level::Standard,
-        grid: None,
-        iterations,
-        iterations_unit: if method.starts_with("newton") {
-            IterationUnit::NewtonSteps
+/// The ring system's elastic energy Π for [`newton::solve`]: the unknowns u, Π with its
+/// gradient and Hessian ([`Local`]), the residual |∇Π|/scale.
+struct Energy<'a> {
+    rings: &'a Rings,
+    /// The length of a gradient step where no ball is loaded (twice the characteristic
+    /// deflection), m.
+    push: f64,
+}
+
+impl NewtonSystem for Energy<'_> {
+    type Point = [f64; 2];
+    type Eval = Local;
+    type Step = [f64; 2];
+
+    fn evaluate(&self, u: &[f64; 2]) -> Local {
+        self.rings.local(*u)
+    }
+
+    fn residual(&self, at: &Local) -> f64 {
+        self.rings.residual(at.gradient)
+    }
+
+    /// The Newton step on the Hessian with a 10⁻¹² Levenberg shift of its trace; where no ball
+    /// is loaded (a zero Hessian), a gradient step of length `push`.
+    fn direction(&self, _u: &[f64; 2], at: &Local) -> Option<[f64; 2]> {
+        let g = at.gradient;
+        let [h_rr, h_ra, h_aa] = at.hessian;
+        let trace = h_rr + h_aa;
+        if trace > 0.0 {
+            let shift = 1e-12 * trace;
+            let (a, b, c) = (h_rr + shift, h_ra, h_aa + shift);
+            dense::solve([[a, b], [b, c]], [-g[0], -g[1]])
         } else {
-            IterationUnit::RootSearchSteps
-        },
-        evaluations: None,
-        stop_reason: StopReason::Converged,
-        residual: Some(residual),
-        error_estimate: None,
-        elapsed_ms: 0.0,
+            let norm = g[0].hypot(g[1]);
+            Some([-g[0] / norm * self.push, -g[1] / norm * self.push])
+        }
+    }
+
+    fn slope(&self, at: &Local, step: &[f64; 2]) -> Option<f64> {
+        Some(at.gradient[0] * step[0] + at.gradient[1] * step[1])
+    }
+
+    fn advance(&self, u: &[f64; 2], step: &[f64; 2], t: f64) -> [f64; 2] {
+        [u[0] + t * step[0], u[1] + t * step[1]]
+    }
+
+    /// Armijo on Π; near the minimum Π's decrease (∝ residual²) sinks below its round-off, and
+    /// a step that shrinks the force residual is taken instead.
+    fn accepts(&self, here: &Local, trial: &Local, t: f64, slope: Option<f64>) -> bool {
+        armijo(here.energy, trial.energy, t, slope.unwrap_or(f64::NAN))
+            || residual_falls(self.residual(here), self.residual(trial), t)
     }
 }

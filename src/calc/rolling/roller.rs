@@ -31,11 +31,12 @@ use serde::Deserialize;
 use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
-use super::ring_equilibrium::load_balance_root;
-use crate::calc::contact::hertz::{Body, Contact, HertzOutput, Method, Shape, Solution};
+use super::ring_equilibrium::{balanced, load_balance_root, MAX_BRENT_ITERATIONS};
+use crate::calc::contact::hertz::{Body, Contact, Method, Shape, Solution};
 use crate::calc::quantity::Positive;
-use crate::calc::{CalcError, Context, FieldError};
-use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
+use crate::calc::{CalcError, FieldError};
+use crate::fidelity::{IterationUnit, SolverReport};
+use crate::numerics::driver::{Budget, Driver};
 
 /// Largest diameter or length accepted, m.
 const MAX_SIZE_M: f64 = 100.0;
@@ -306,26 +307,11 @@ impl RollerBearing {
         })?;
         contact.solve()
     }
-
-    /// [`Self::raceway_solution`] as the Hertz room's output, its warnings and solver report
-    /// passed to `ctx`. Transitional: the load distribution still reads the Hertz room's
-    /// output; it can take `raceway_solution`.
-    pub fn raceway_contact(
-        &self,
-        inner: bool,
-        load_n: f64,
-        length_m: f64,
-        ctx: &mut Context,
-    ) -> Result<HertzOutput, CalcError> {
-        Ok(HertzOutput::reported(
-            &self.raceway_solution(inner, load_n, length_m)?,
-            ctx,
-        ))
-    }
 }
 
 /// The radial equilibrium: Brent on δ_r (monotone force), or the preloaded bearing at rest.
-pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium, CalcError> {
+pub fn equilibrium(case: &RollerCase, budget: &Budget) -> Result<RollerEquilibrium, CalcError> {
+    const METHOD: &str = "brent_roller_load_balance";
     let b = &case.bearing;
     let z = b.roller_count;
     let k = b.contact_stiffness();
@@ -352,45 +338,33 @@ pub fn equilibrium(case: &RollerCase, ctx: &Context) -> Result<RollerEquilibrium
     };
     let preload = z as f64 * b.roller_load(-half, &laminae).0;
     let scale = case.radial_load_n.max(preload);
-    let report = |iterations: u32, residual: f64| SolverReport {
-        method: "brent_roller_load_balance".to_owned(),
-        fidelity: Level::Standard,
-        grid: None,
-        iterations,
-        iterations_unit: IterationUnit::RootSearchSteps,
-        evaluations: None,
-        stop_reason: StopReason::Converged,
-        residual: Some(residual),
-        error_estimate: None,
-        elapsed_ms: 0.0,
-    };
     if case.radial_load_n == 0.0 {
         return Ok(RollerEquilibrium {
             loads: loads(0.0),
             max_approach_m: -half,
             radial_displacement_m: 0.0,
             stiffness: k,
-            report: report(0, 0.0),
+            report: Driver::new(
+                METHOD,
+                IterationUnit::RootSearchSteps,
+                MAX_BRENT_ITERATIONS,
+                budget,
+            )
+            .converged_at_start((), 0.0)
+            .report,
         });
     }
     // From the concentric position, past the clearance, doubled until the rollers carry F_r.
     let delta_scale = (case.radial_load_n / (z as f64 * k)).powf(0.9);
     // (At least a millionth of the roller diameter: a denormal load's δ scale underflows.)
     let hi = (half.abs() + delta_scale + crown).max(1e-6 * b.roller_diameter_m);
-    let root = load_balance_root(&force, hi, "brent_roller_load_balance", ctx)?;
-    let residual = force(root.x).abs() / scale;
-    if residual > TOLERANCE {
-        return Err(CalcError::NotConverged {
-            method: "brent_roller_load_balance",
-            iterations: root.iterations,
-            residual,
-        });
-    }
+    let root = load_balance_root(&force, hi, METHOD, budget)?;
+    let report = balanced(&root, force(root.x).abs() / scale, TOLERANCE)?;
     Ok(RollerEquilibrium {
         loads: loads(root.x),
         max_approach_m: root.x - half,
         radial_displacement_m: root.x,
         stiffness: k,
-        report: report(root.iterations, residual),
+        report,
     })
 }
