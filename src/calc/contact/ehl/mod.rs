@@ -21,6 +21,7 @@ pub mod formulas;
 pub mod line;
 pub mod numerical;
 pub mod point;
+pub mod solve;
 pub mod traction;
 
 pub use numerical::Ehl;

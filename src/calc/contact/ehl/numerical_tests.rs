@@ -3,6 +3,7 @@
 use serde_json::{json, Value};
 
 use super::*;
+use crate::numerics::interpolate::linear as interpolate;
 use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field};
 
 const E_PRIME: f64 = 2.1e11 / (1.0 - 0.09);
