@@ -464,9 +464,9 @@ impl NewtonSystem for LineNewton<'_> {
 
     fn direction(&self, (pressure, _): &(Vec<f64>, f64), at: &Iterate) -> Option<Mat<f64>> {
         let cavitated = LineProblem::cavitated(&at.state, pressure);
-        let (jacobian, rhs) =
-            self.problem
-                .newton_system(self.grid, &at.state, pressure, &cavitated);
+        let (jacobian, rhs) = self
+            .problem
+            .newton_system(self.grid, &at.state, pressure, &cavitated);
         let step = jacobian.partial_piv_lu().solve(&rhs);
         (0..step.nrows())
             .all(|r| step[(r, 0)].is_finite())
@@ -474,7 +474,12 @@ impl NewtonSystem for LineNewton<'_> {
     }
 
     /// The damped step, projected: P ≥ 0, and P = 0 at the two ends.
-    fn advance(&self, (pressure, h0): &(Vec<f64>, f64), step: &Mat<f64>, t: f64) -> (Vec<f64>, f64) {
+    fn advance(
+        &self,
+        (pressure, h0): &(Vec<f64>, f64),
+        step: &Mat<f64>,
+        t: f64,
+    ) -> (Vec<f64>, f64) {
         let n = pressure.len();
         let trial: Vec<f64> = (0..n)
             .map(|i| {

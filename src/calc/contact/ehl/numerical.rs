@@ -33,7 +33,6 @@ use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{FidelityRequest, Level};
-use crate::numerics::richardson;
 
 pub struct Ehl;
 
@@ -715,52 +714,12 @@ fn point_contact(
         e_prime: e,
     };
     let problem = PointProblem::new(fluid, &ellipse, case.speed_m_s, film_guess);
-    let run = solve_point(&problem, cells, tolerance, &ctx.budget())?;
+    let run = solve_point(&problem, (level, cells, tolerance), &ctx.budget())?;
     for w in &run.warnings {
         ctx.warn(w.code, w.message.clone());
     }
-    let (solved, cells) = (run.solved, run.cells);
-    let (coarse, fine) = (&solved[0], &solved[1]);
-    let (c0, c1) = (coarse.central_film(), fine.central_film());
-    let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
-    let central = richardson::extrapolate(c0, c1);
-    if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
-        return Err(CalcError::impossible(
-            "/load_n",
-            format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
-        ));
-    }
-    // The minimum (a parabola's vertex between nodes) converges like the film, so it is
-    // extrapolated too — unless the coarser grid closes it.
-    let extrapolated = richardson::extrapolate(m0, m1);
-    let min = if m0 > 0.0 && extrapolated > 0.0 {
-        extrapolated
-    } else {
-        ctx.warn(
-            "min_film_not_extrapolated",
-            format!("the minimum film closes on {}² cells, so the {cells}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", cells / 2),
-        );
-        m1
-    };
-    // Richardson's estimate plus what the cycles left (a limit cycle's spread, or the last
-    // cycle's change), weighted as in (4c₁ − c₀)/3.
-    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
-    let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
-    let error = discretisation + cycles_left;
-    ctx.report(
-        fine.report
-            .clone()
-            .named("fas_multigrid_finite_difference_richardson")
-            .at(level)
-            .on_grid(vec![cells as u32, cells as u32])
-            .with_error_estimate(Some(error)),
-    );
-    if error > tolerance {
-        ctx.warn(
-            "grid_limited",
-            format!("the central film's estimated error {:.2} % ({:.2} % the grid's, {:.2} % the cycles') exceeds the level's {:.1} % on {cells}² cells: the Hertz zone is thin for this grid; a higher fidelity resolves it", error * 100.0, discretisation * 100.0, cycles_left * 100.0, tolerance * 100.0),
-        );
-    }
+    ctx.report(run.report.clone());
+    let (fine, central, min, min_y) = (&run.fine, run.central, run.min, run.min_y);
     let nx = fine.x.len();
     let (p_index, p_max) = peak(&fine.pressure);
     // The centre line y = 0 is the middle row of the grid.

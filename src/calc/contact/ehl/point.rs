@@ -565,8 +565,8 @@ impl PointProblem {
                 if resolved && load_error > DIVERGED_LOAD_ERROR {
                     return Verdict::Diverged(load_error);
                 }
-                let change = ((film - history.films[history.films.len() - 1]) / film_scale(film))
-                    .abs();
+                let change =
+                    ((film - history.films[history.films.len() - 1]) / film_scale(film)).abs();
                 history.films.push(film);
                 history.load_errors.push(load_error);
                 if let Some(error) = history.settled() {

@@ -98,7 +98,11 @@ fn line_failure(stopped: &Stopped, cells: usize) -> CalcError {
 /// Nested iteration leads up to the first pair's coarse grid: Newton started from the Hertz
 /// pressure on a fine grid can stall where the same start converges on [`FIRST_CELLS`] cells and
 /// each finer grid then starts within its basin.
-pub fn solve_line(problem: &LineProblem, cells: Cells, budget: &Budget) -> Result<Nested, CalcError> {
+pub fn solve_line(
+    problem: &LineProblem,
+    cells: Cells,
+    budget: &Budget,
+) -> Result<Nested, CalcError> {
     let solve = |n: usize, start: Option<&Solved>| -> Result<Solved, Stopped> {
         let solution = problem.solve(n, start.map(|s| &s.solution), budget)?;
         let (steps, evaluations) = start.map_or((0, 0), |s| (s.steps, s.evaluations));
@@ -185,25 +189,89 @@ pub fn solve_line(problem: &LineProblem, cells: Cells, budget: &Budget) -> Resul
     })
 }
 
-/// The point problem's two finest levels, and the cells per direction they reached, with the
-/// `grid_fallback` warning when they are not the requested ones.
+/// The point contact's result: the finest level's field, the Richardson-extrapolated central
+/// and minimum films (H = hR_x/a²) with the minimum's Y, the report (the finest level's cycles,
+/// with the estimated error) and the warnings.
 pub struct PointRun {
-    pub solved: Vec<PointSolution>,
-    pub cells: usize,
+    pub fine: PointSolution,
+    pub central: f64,
+    pub min: f64,
+    pub min_y: f64,
+    pub report: SolverReport,
     pub warnings: Vec<Warning>,
+}
+
+/// The point problem solved on `cells` per direction and the grid of half as many
+/// ([`solve_levels`]), the films extrapolated, and the central film's error estimated:
+/// Richardson's plus what the cycles left (a limit cycle's spread, or the last cycle's change),
+/// weighted as in (4c₁ − c₀)/3; a warning when it exceeds `tolerance`.
+pub fn solve_point(
+    problem: &PointProblem,
+    (level, cells, tolerance): (Level, usize, f64),
+    budget: &Budget,
+) -> Result<PointRun, CalcError> {
+    let (mut solved, cells, mut warnings) = solve_levels(problem, cells, tolerance, budget)?;
+    let fine = solved.pop().expect("the two finest levels");
+    let coarse = solved.pop().expect("the two finest levels");
+    let (c0, c1) = (coarse.central_film(), fine.central_film());
+    let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
+    let central = richardson::extrapolate(c0, c1);
+    if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
+        return Err(CalcError::impossible(
+            "/load_n",
+            format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+        ));
+    }
+    // The minimum (a parabola's vertex between nodes) converges like the film, so it is
+    // extrapolated too — unless the coarser grid closes it.
+    let extrapolated = richardson::extrapolate(m0, m1);
+    let min = if m0 > 0.0 && extrapolated > 0.0 {
+        extrapolated
+    } else {
+        warnings.push(Warning {
+            code: "min_film_not_extrapolated",
+            message: format!("the minimum film closes on {}² cells, so the {cells}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", cells / 2),
+        });
+        m1
+    };
+    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
+    let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
+    let error = discretisation + cycles_left;
+    let report = fine
+        .report
+        .clone()
+        .named("fas_multigrid_finite_difference_richardson")
+        .at(level)
+        .on_grid(vec![cells as u32, cells as u32])
+        .with_error_estimate(Some(error));
+    if error > tolerance {
+        warnings.push(Warning {
+            code: "grid_limited",
+            message: format!("the central film's estimated error {:.2} % ({:.2} % the grid's, {:.2} % the cycles') exceeds the level's {:.1} % on {cells}² cells: the Hertz zone is thin for this grid; a higher fidelity resolves it", error * 100.0, discretisation * 100.0, cycles_left * 100.0, tolerance * 100.0),
+        });
+    }
+    Ok(PointRun {
+        fine,
+        central,
+        min,
+        min_y,
+        report,
+        warnings,
+    })
 }
 
 /// The point problem's two finest levels on `cells` per direction, or on half as many (and so
 /// on, down to [`point::MIN_CELLS`]) when the finest level's cycles stall or diverge (strongly
 /// piezoviscous contacts on fine grids). The attempts run under the solver driver (one
 /// iteration: one whole multigrid solve; the deadline polled before each); the driver's report
-/// is not the room's, which is the finest level's own.
-pub fn solve_point(
+/// is not the room's, which is the finest level's own. Returns the levels, the cells they
+/// reached and the `grid_fallback` warning when they are not the requested ones.
+fn solve_levels(
     problem: &PointProblem,
     cells: usize,
     tolerance: f64,
     budget: &Budget,
-) -> Result<PointRun, CalcError> {
+) -> Result<(Vec<PointSolution>, usize, Vec<Warning>), CalcError> {
     let mut cells = cells;
     let mut failed = Vec::new();
     let mut refusal = None;
@@ -259,9 +327,5 @@ pub fn solve_point(
             message: format!("the multigrid cycles stalled or diverged on {}; the result is the {cells}² cells' solution", failed.join(", ")),
         });
     }
-    Ok(PointRun {
-        solved,
-        cells,
-        warnings,
-    })
+    Ok((solved, cells, warnings))
 }
