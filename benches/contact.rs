@@ -7,7 +7,7 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, Bencher, Criterion};
-use stribeck::calc::contact::{ehl_film::EhlFilm, hertz::Hertz};
+use stribeck::calc::contact::{ehl::film::EhlFilm, hertz::Hertz};
 use stribeck::calc::{find, Calculation, Context, Validate};
 
 /// One request to `path` through its whole path, under a deadline of `seconds`.

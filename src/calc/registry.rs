@@ -24,7 +24,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>(),
     Entry::of::<contact::hertz::Hertz>(),
-    Entry::of::<contact::ehl_film::EhlFilm>(),
+    Entry::of::<contact::ehl::film::EhlFilm>(),
     Entry::of::<contact::ehl::Ehl>(),
     Entry::of::<contact::flash_temperature::FlashTemperature>(),
     Entry::of::<rolling::kinematics::Kinematics>(),

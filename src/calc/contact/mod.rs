@@ -8,6 +8,6 @@ pub mod ehl;
 pub mod flash_temperature;
 pub mod hertz;
 
-/// The film room's old path (`contact::ehl_film`), kept while the registry, the rolling
-/// analysis and the benches name it.
+/// The film room's old path (`contact::ehl_film`), kept only while `rolling/analysis.rs` names
+/// it (the rolling branch switches it to `contact::ehl::film`; then this line goes).
 pub use ehl::film as ehl_film;

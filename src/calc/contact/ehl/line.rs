@@ -18,7 +18,8 @@
 //! extrapolation (first-order at the first face); the deformation integral exact for pressure
 //! constant over each cell ([`line_log_influence`]), with the Hertz pressure's part taken
 //! analytically. The Jacobian is exact (the deformation makes it dense) and is factorised by LU
-//! with partial pivoting; each step is damped until the residual falls.
+//! with partial pivoting; each step is damped until the residual falls ([`newton::solve`] under
+//! the solver driver).
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -26,13 +27,22 @@ use faer::prelude::Solve;
 use faer::Mat;
 
 use super::fluid::Fluid;
-use crate::calc::Budget;
+use crate::fidelity::{IterationUnit, SolverReport};
+use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::half_space::line_log_influence;
+use crate::numerics::interpolate::linear;
+use crate::numerics::newton::{self, LineSearch, NewtonSystem};
 
 /// Films below this (dimensionless) are treated as this in ε, so that a Newton iterate that
 /// briefly interpenetrates the surfaces cannot make ε negative.
 const FILM_FLOOR: f64 = 1e-12;
 const MAX_NEWTON: u32 = 80;
+/// Halve the step until the scaled residual falls strictly; at the seventh halving (1/128)
+/// take it anyway, so that the iteration keeps moving (Venner's damped Newton).
+const LINE_SEARCH: LineSearch = LineSearch {
+    max_halvings: 7,
+    take_shortest: true,
+};
 /// Converged when the scaled residual (a pressure change, in units of p_h) is below this.
 const TOLERANCE: f64 = 1e-10;
 
@@ -57,19 +67,9 @@ pub struct LineSolution {
     pub pressure: Vec<f64>,
     pub film: Vec<f64>,
     pub h0: f64,
-    pub iterations: u32,
-    /// The scaled residual at the last iterate.
-    pub residual: f64,
-}
-
-#[derive(Debug, Clone, PartialEq)]
-pub enum LineFailure {
-    /// Newton stalled: the best residual reached and the iterations spent.
-    NotConverged {
-        residual: f64,
-        iterations: u32,
-    },
-    DeadlineExceeded,
+    /// The driver's report of the Newton solve (residual: the scaled residual at the last
+    /// iterate).
+    pub report: SolverReport,
 }
 
 /// Everything the residual and the Jacobian need at one iterate.
@@ -381,20 +381,23 @@ impl LineProblem {
     }
 
     /// Solve on `cells` cells, starting from `start` (interpolated onto this grid) or from the
-    /// Hertz pressure with the guessed film.
+    /// Hertz pressure with the guessed film: damped Newton under the solver driver (at most
+    /// [`MAX_NEWTON`] steps, the deadline polled before each), the step halved until the scaled
+    /// residual falls and taken anyway at 1/128 ([`LINE_SEARCH`]). The report counts the Newton
+    /// steps and the trial points of the line searches.
     pub fn solve(
         &self,
         cells: usize,
         start: Option<&LineSolution>,
         budget: &Budget,
-    ) -> Result<LineSolution, LineFailure> {
+    ) -> Result<LineSolution, Stopped> {
         let grid = Grid::new(self, cells);
         let n = grid.nodes();
-        let (mut pressure, mut h0) = match start {
+        let (mut pressure, h0) = match start {
             Some(s) => (
                 grid.x
                     .iter()
-                    .map(|&x| interpolate(&s.x, &s.pressure, x))
+                    .map(|&x| linear(&s.x, &s.pressure, x))
                     .collect::<Vec<_>>(),
                 s.h0,
             ),
@@ -402,69 +405,97 @@ impl LineProblem {
         };
         pressure[0] = 0.0;
         pressure[n - 1] = 0.0;
-        let mut state = self.state(&grid, &pressure, h0);
-        let mut merit = Self::merit(&state, &pressure);
-        let mut iterations = 0;
-        while merit > TOLERANCE {
-            if iterations >= MAX_NEWTON {
-                return Err(LineFailure::NotConverged {
-                    residual: merit,
-                    iterations,
-                });
-            }
-            if !budget.alive() {
-                return Err(LineFailure::DeadlineExceeded);
-            }
-            iterations += 1;
-            let cavitated = Self::cavitated(&state, &pressure);
-            let (jacobian, rhs) = self.newton_system(&grid, &state, &pressure, &cavitated);
-            let step = jacobian.partial_piv_lu().solve(&rhs);
-            if (0..step.nrows()).any(|r| !step[(r, 0)].is_finite()) {
-                return Err(LineFailure::NotConverged {
-                    residual: merit,
-                    iterations,
-                });
-            }
-            // Damped, projected step: halve until the scaled residual falls.
-            let mut damping = 1.0;
-            loop {
-                let trial: Vec<f64> = (0..n)
-                    .map(|i| {
-                        if i == 0 || i == n - 1 {
-                            0.0
-                        } else {
-                            (pressure[i] + damping * step[(i - 1, 0)]).max(0.0)
-                        }
-                    })
-                    .collect();
-                let trial_h0 = h0 + damping * step[(n - 2, 0)];
-                let trial_state = self.state(&grid, &trial, trial_h0);
-                let trial_merit = Self::merit(&trial_state, &trial);
-                if trial_merit < merit || damping < 1.0 / 64.0 {
-                    pressure = trial;
-                    h0 = trial_h0;
-                    state = trial_state;
-                    merit = trial_merit;
-                    break;
-                }
-                damping *= 0.5;
-            }
-        }
+        let driver = Driver::new(
+            "newton_finite_volume",
+            IterationUnit::NewtonSteps,
+            MAX_NEWTON,
+            budget,
+        );
+        let system = LineNewton {
+            problem: self,
+            grid: &grid,
+        };
+        let run = newton::solve(&system, (pressure, h0), TOLERANCE, LINE_SEARCH, &driver)?;
+        let ((pressure, h0), at) = run.value;
         Ok(LineSolution {
             x: grid.x,
             pressure,
-            film: state.film,
+            film: at.state.film,
             h0,
-            iterations,
-            residual: merit,
+            report: run.report,
         })
     }
 
     /// The Hertz pressure √(1 − X²) and the H₀ that puts the guessed film at X = 0.
     fn hertz_start(&self, grid: &Grid) -> (Vec<f64>, f64) {
         let pressure: Vec<f64> = grid.x.iter().map(|&x| hertz_pressure(x)).collect();
-        let centre = interpolate(&grid.x, &grid.film(&pressure, 0.0), 0.0);
+        let centre = linear(&grid.x, &grid.film(&pressure, 0.0), 0.0);
         (pressure, self.film_guess - centre)
+    }
+}
+
+/// One iterate's state and its scaled residual ([`LineProblem::merit`]).
+struct Iterate {
+    state: State,
+    merit: f64,
+}
+
+/// The coupled Newton system on one grid: unknowns (P at the nodes, H₀); the direction by LU
+/// with partial pivoting of the dense Jacobian (faer: the deformation makes it dense and large).
+struct LineNewton<'a> {
+    problem: &'a LineProblem,
+    grid: &'a Grid,
+}
+
+impl NewtonSystem for LineNewton<'_> {
+    type Point = (Vec<f64>, f64);
+    type Eval = Iterate;
+    type Step = Mat<f64>;
+
+    fn evaluate(&self, (pressure, h0): &(Vec<f64>, f64)) -> Iterate {
+        let state = self.problem.state(self.grid, pressure, *h0);
+        let merit = LineProblem::merit(&state, pressure);
+        Iterate { state, merit }
+    }
+
+    fn residual(&self, at: &Iterate) -> f64 {
+        at.merit
+    }
+
+    fn direction(&self, (pressure, _): &(Vec<f64>, f64), at: &Iterate) -> Option<Mat<f64>> {
+        let cavitated = LineProblem::cavitated(&at.state, pressure);
+        let (jacobian, rhs) = self
+            .problem
+            .newton_system(self.grid, &at.state, pressure, &cavitated);
+        let step = jacobian.partial_piv_lu().solve(&rhs);
+        (0..step.nrows())
+            .all(|r| step[(r, 0)].is_finite())
+            .then_some(step)
+    }
+
+    /// The damped step, projected: P ≥ 0, and P = 0 at the two ends.
+    fn advance(
+        &self,
+        (pressure, h0): &(Vec<f64>, f64),
+        step: &Mat<f64>,
+        t: f64,
+    ) -> (Vec<f64>, f64) {
+        let n = pressure.len();
+        let trial: Vec<f64> = (0..n)
+            .map(|i| {
+                if i == 0 || i == n - 1 {
+                    0.0
+                } else {
+                    (pressure[i] + t * step[(i - 1, 0)]).max(0.0)
+                }
+            })
+            .collect();
+        (trial, h0 + t * step[(n - 2, 0)])
+    }
+
+    /// A trial point is taken when its scaled residual is strictly below the current one.
+    fn accepts(&self, here: &Iterate, trial: &Iterate, _t: f64, _slope: Option<f64>) -> bool {
+        trial.merit < here.merit
     }
 }
 
@@ -485,20 +516,6 @@ fn hertz_deformation(x: f64) -> f64 {
         let root = (a * a - 1.0).sqrt();
         inside + 0.5 * ((a + root).ln() - a * root)
     }
-}
-
-/// Linear interpolation of (xs, ys) at x (clamped to the ends).
-pub fn interpolate(xs: &[f64], ys: &[f64], x: f64) -> f64 {
-    let n = xs.len();
-    if x <= xs[0] {
-        return ys[0];
-    }
-    if x >= xs[n - 1] {
-        return ys[n - 1];
-    }
-    let j = xs.partition_point(|&v| v <= x).clamp(1, n - 1);
-    let t = (x - xs[j - 1]) / (xs[j] - xs[j - 1]);
-    ys[j - 1] + t * (ys[j] - ys[j - 1])
 }
 
 #[cfg(test)]

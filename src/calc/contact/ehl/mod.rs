@@ -4,8 +4,10 @@
 //! - [`film`]: wire of `POST /v1/contacts/ehl-film` (`film.md` its long description); the
 //!   calculation itself is [`closed_form`] (`closed_form::solve(&FilmCase) -> FilmSolution`),
 //!   which composed rooms call typed.
-//! - [`numerical`]: wire of `POST /v1/contacts/ehl` and its driver over the solvers:
-//!   [`line`] (coupled Newton on nested grids), [`point`] (FAS multigrid), [`fluid`]
+//! - [`numerical`]: wire of `POST /v1/contacts/ehl`; its model [`solve`] drives the solvers
+//!   (the line grids refined under `numerics::refine`, the point grid fall-back, Richardson's
+//!   films and the reports): [`line`] (coupled Newton on one grid, under `numerics::newton`),
+//!   [`point`] (FAS multigrid, its cycles under the solver driver), [`fluid`]
 //!   (viscosity and density in the solvers' units), [`traction`] (sliding traction of the
 //!   converged film).
 //! - [`formulas`]: Hamrock–Dowson (hard, soft, the four regimes and the regime rule),
@@ -21,6 +23,7 @@ pub mod formulas;
 pub mod line;
 pub mod numerical;
 pub mod point;
+pub mod solve;
 pub mod traction;
 
 pub use numerical::Ehl;

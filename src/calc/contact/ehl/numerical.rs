@@ -20,9 +20,9 @@ use super::formulas::{
     dowson_higginson, hard_central_film, hard_min_film, pan_hamrock, point_regime, regime_films,
     Groups, MoesAsymptotes, Regime, HARD_FIT_ELLIPTICITY,
 };
-use super::line::{interpolate, LineFailure, LineProblem, LineSolution};
-use super::point;
-use super::point::{HertzEllipse, PointFailure, PointProblem, PointSolution};
+use super::line::LineProblem;
+use super::point::{HertzEllipse, PointProblem};
+use super::solve::{solve_line, solve_point, Cells};
 use super::traction::{self, ShearLaw, TractionLaw};
 use crate::calc::contact::hertz::{
     contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
@@ -32,8 +32,7 @@ use crate::calc::lubricant::{Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{FidelityRequest, IterationUnit, Level, SolverReport, StopReason};
-use crate::numerics::richardson;
+use crate::fidelity::{FidelityRequest, Level};
 
 pub struct Ehl;
 
@@ -57,8 +56,6 @@ const MOES_L_MAX: f64 = 50.0;
 const FAST_CELLS: usize = 64;
 const STANDARD_CELLS: usize = 128;
 const HIGH_CELLS: usize = 256;
-/// The grid every solve starts on (from the Hertz pressure).
-const FIRST_CELLS: usize = 32;
 /// Explicit grids: the fine cell count.
 const CUSTOM_CELLS: (u32, u32) = (32, 2048);
 /// Relative central-film error estimate (of the fine grid, before extrapolation) above which
@@ -191,18 +188,6 @@ enum Grids {
         cells: usize,
         tolerance: f64,
     },
-}
-
-/// The line solver's grids.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Cells {
-    level: Level,
-    /// The fine grid of the first pair.
-    fine: usize,
-    /// Refinement stops after this fine grid.
-    finest: usize,
-    /// Refine while the estimated relative error of the central film exceeds this.
-    tolerance: f64,
 }
 
 impl Validate for NumericalEhlInput {
@@ -596,7 +581,11 @@ fn line_contact(
         outlet: (3.0 * film_guess).sqrt().max(1.5),
         film_guess,
     };
-    let solved = solve_nested(&problem, cells, ctx)?;
+    let solved = solve_line(&problem, cells, &ctx.budget())?;
+    for w in &solved.warnings {
+        ctx.warn(w.code, w.message.clone());
+    }
+    ctx.report(solved.report.clone());
     let scale = b * b / rx;
     let fine = &solved.fine;
     let (p_index, p_max) = peak(&fine.pressure);
@@ -663,53 +652,6 @@ fn compare(rx: f64, formula: &str, h: f64, numerical: f64) -> NumericalEhlFormul
     }
 }
 
-/// The point problem's two finest levels on `cells` per direction, or on half as many (and so
-/// on) when the finest level's cycles stall or diverge (strongly piezoviscous contacts on fine
-/// grids), with a `grid_fallback` warning: returns the levels and the cells they reached.
-fn solve_point(
-    problem: &PointProblem,
-    mut cells: usize,
-    tolerance: f64,
-    ctx: &mut Context,
-) -> Result<(Vec<PointSolution>, usize), CalcError> {
-    let budget = ctx.budget();
-    let mut failed = Vec::new();
-    loop {
-        match problem.solve(cells, tolerance, &budget) {
-            Ok(solved) => {
-                if !failed.is_empty() {
-                    ctx.warn(
-                        "grid_fallback",
-                        format!("the multigrid cycles stalled or diverged on {}; the result is the {cells}² cells' solution", failed.join(", ")),
-                    );
-                }
-                return Ok((solved, cells));
-            }
-            Err(PointFailure::NotConverged {
-                residual,
-                cycles,
-                cells: stalled,
-            }) if stalled == cells && cells / 2 >= point::MIN_CELLS => {
-                failed.push(format!(
-                    "{cells}² cells (after {cycles} cycles, scaled residual {residual:.3e})"
-                ));
-                cells /= 2;
-            }
-            Err(PointFailure::DeadlineExceeded) => return Err(CalcError::DeadlineExceeded),
-            Err(PointFailure::NotConverged {
-                residual,
-                cycles,
-                cells,
-            }) => {
-                return Err(CalcError::impossible(
-                    "/load_n",
-                    format!("the multigrid cycles on {cells}² cells stalled or diverged after {cycles} cycles with scaled residual {residual:.3e}: this load and speed are beyond the point solver (try another fidelity)"),
-                ))
-            }
-        }
-    }
-}
-
 /// The point contact: the Hertz ellipse in the solver's units, Moes' map check, the multigrid
 /// solve on the requested grid and the grid of half as many cells, Richardson's extrapolation,
 /// films, formulas and traction.
@@ -772,52 +714,12 @@ fn point_contact(
         e_prime: e,
     };
     let problem = PointProblem::new(fluid, &ellipse, case.speed_m_s, film_guess);
-    let (solved, cells) = solve_point(&problem, cells, tolerance, ctx)?;
-    let (coarse, fine) = (&solved[0], &solved[1]);
-    let (c0, c1) = (coarse.central_film(), fine.central_film());
-    let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
-    let central = richardson::extrapolate(c0, c1);
-    if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
-        return Err(CalcError::impossible(
-            "/load_n",
-            format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
-        ));
+    let run = solve_point(&problem, (level, cells, tolerance), &ctx.budget())?;
+    for w in &run.warnings {
+        ctx.warn(w.code, w.message.clone());
     }
-    // The minimum (a parabola's vertex between nodes) converges like the film, so it is
-    // extrapolated too — unless the coarser grid closes it.
-    let extrapolated = richardson::extrapolate(m0, m1);
-    let min = if m0 > 0.0 && extrapolated > 0.0 {
-        extrapolated
-    } else {
-        ctx.warn(
-            "min_film_not_extrapolated",
-            format!("the minimum film closes on {}² cells, so the {cells}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", cells / 2),
-        );
-        m1
-    };
-    // Richardson's estimate plus what the cycles left (a limit cycle's spread, or the last
-    // cycle's change), weighted as in (4c₁ − c₀)/3.
-    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
-    let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
-    let error = discretisation + cycles_left;
-    ctx.report(SolverReport {
-        method: "fas_multigrid_finite_difference_richardson".to_owned(),
-        fidelity: level,
-        grid: Some(vec![cells as u32, cells as u32]),
-        iterations: fine.cycles,
-        iterations_unit: IterationUnit::MultigridCycles,
-        evaluations: None,
-        stop_reason: StopReason::Converged,
-        residual: Some(fine.residual),
-        error_estimate: Some(error),
-        elapsed_ms: 0.0,
-    });
-    if error > tolerance {
-        ctx.warn(
-            "grid_limited",
-            format!("the central film's estimated error {:.2} % ({:.2} % the grid's, {:.2} % the cycles') exceeds the level's {:.1} % on {cells}² cells: the Hertz zone is thin for this grid; a higher fidelity resolves it", error * 100.0, discretisation * 100.0, cycles_left * 100.0, tolerance * 100.0),
-        );
-    }
+    ctx.report(run.report.clone());
+    let (fine, central, min, min_y) = (&run.fine, run.central, run.min, run.min_y);
     let nx = fine.x.len();
     let (p_index, p_max) = peak(&fine.pressure);
     // The centre line y = 0 is the middle row of the grid.
@@ -976,119 +878,6 @@ fn pressure_law(
         law.name(),
     );
     Ok(applied.then_some(law))
-}
-
-/// The fine-grid field and the Richardson-extrapolated films.
-struct Nested {
-    fine: LineSolution,
-    central: f64,
-    min: f64,
-}
-
-/// Solve on a coarse and a fine grid (the coarse solution starts the fine one), extrapolate the
-/// films (second order: the observed ratio of successive differences is about 4), and refine
-/// while the estimated error exceeds the level's tolerance ([`REFINE_ABOVE`]).
-fn solve_nested(
-    problem: &LineProblem,
-    cells: Cells,
-    ctx: &mut Context,
-) -> Result<Nested, CalcError> {
-    let budget = ctx.budget();
-    let failure = |f: LineFailure, cells: usize| {
-        match f {
-        LineFailure::DeadlineExceeded => CalcError::DeadlineExceeded,
-        LineFailure::NotConverged { residual, iterations } => CalcError::impossible(
-            "/load_n",
-            format!("the Newton solve on {cells} cells stalled after {iterations} iterations with scaled residual {residual:.3e}: this load and speed are beyond the solver (try another fidelity)"),
-        ),
-    }
-    };
-    let films = |s: &LineSolution| {
-        let central = interpolate(&s.x, &s.film, 0.0);
-        let min = s.film.iter().copied().fold(f64::INFINITY, f64::min);
-        (central, min)
-    };
-    let mut fine_cells = cells.fine;
-    // Nested iteration from a coarse grid up to the first pair's coarse grid: Newton started
-    // from the Hertz pressure on a fine grid can stall where the same start converges on 32
-    // cells and each finer grid then starts within its basin.
-    let mut start_cells = (fine_cells / 2).min(FIRST_CELLS);
-    let mut coarse = problem
-        .solve(start_cells, None, &budget)
-        .map_err(|f| failure(f, start_cells))?;
-    let mut iterations = coarse.iterations;
-    while start_cells < fine_cells / 2 {
-        start_cells *= 2;
-        coarse = problem
-            .solve(start_cells, Some(&coarse), &budget)
-            .map_err(|f| failure(f, start_cells))?;
-        iterations += coarse.iterations;
-    }
-    // The last resolved pair: what a stalled or late refinement falls back to.
-    let mut last: Option<(Nested, usize, f64)> = None;
-    loop {
-        let fine = match problem.solve(fine_cells, Some(&coarse), &budget) {
-            Ok(fine) => fine,
-            Err(f) => match last.take() {
-                Some((nested, cells_used, error)) => {
-                    ctx.warn(
-                        "grid_limited",
-                        format!("refining to {fine_cells} cells failed ({}); the result is the {cells_used}-cell solution, whose estimated error is {:.2} %", failure(f, fine_cells), error * 100.0),
-                    );
-                    return Ok(nested);
-                }
-                None => return Err(failure(f, fine_cells)),
-            },
-        };
-        iterations += fine.iterations;
-        let (c0, m0) = films(&coarse);
-        let (c1, m1) = films(&fine);
-        let central = richardson::extrapolate(c0, c1);
-        let min = richardson::extrapolate(m0, m1);
-        let error = (richardson::fine_error(c0, c1) / central).abs();
-        let resolved = central > 0.0 && min > 0.0 && m1 > 0.0;
-        let last_grid = fine_cells * 2 > cells.finest;
-        if !resolved && last_grid {
-            return Err(CalcError::impossible(
-                "/load_n",
-                format!("the film is not resolved on {fine_cells} cells (central {c1:.3e}, minimum {m1:.3e} in units of b²/R_x): the load is too heavy for this grid; give a finer fidelity"),
-            ));
-        }
-        if resolved {
-            ctx.report(SolverReport {
-                method: "newton_finite_volume_richardson".to_owned(),
-                fidelity: cells.level,
-                grid: Some(vec![fine_cells as u32, 1]),
-                iterations,
-                iterations_unit: IterationUnit::NewtonSteps,
-                evaluations: None,
-                stop_reason: StopReason::Converged,
-                residual: Some(fine.residual),
-                error_estimate: Some(error),
-                elapsed_ms: 0.0,
-            });
-            if error <= cells.tolerance || last_grid {
-                if error > cells.tolerance {
-                    ctx.warn(
-                        "grid_limited",
-                        format!("the central film's estimated error {:.2} % exceeds the level's {:.1} % on the finest grid tried ({fine_cells} cells)", error * 100.0, cells.tolerance * 100.0),
-                    );
-                }
-                return Ok(Nested { fine, central, min });
-            }
-            last = Some((
-                Nested {
-                    fine: fine.clone(),
-                    central,
-                    min,
-                },
-                fine_cells,
-                error,
-            ));
-        }
-        coarse = fine;
-        fine_cells *= 2;
-    }
 }
 
 /// The traction of the converged film for the request's traction law.

@@ -4,6 +4,7 @@ use serde_json::{json, Value};
 
 use super::*;
 use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field};
+use crate::numerics::interpolate::linear as interpolate;
 
 const E_PRIME: f64 = 2.1e11 / (1.0 - 0.09);
 const RX: f64 = 0.01;

@@ -28,9 +28,11 @@
 
 use super::corrections::fully_flooded_meniscus;
 use super::fluid::Fluid;
-use crate::calc::Budget;
+use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::numerics::driver::{Budget, Driver, Stopped, Verdict};
 use crate::numerics::fft::Convolution2d;
 use crate::numerics::half_space::rectangle_inverse_distance;
+use crate::numerics::interpolate::uniform_minimum;
 use crate::numerics::multigrid::{bilinear, coarse_size, full_weighting, inject};
 
 /// Cells per direction of the coarsest grid, and the fewest a solve may ask for (its two
@@ -166,10 +168,9 @@ pub struct PointSolution {
     pub y: Vec<f64>,
     pub pressure: Vec<f64>,
     pub film: Vec<f64>,
-    /// Multigrid cycles spent on this grid.
-    pub cycles: u32,
-    /// Mean |residual| of the Reynolds equation over the interior, relative to the central film.
-    pub residual: f64,
+    /// The driver's report of the cycles on this grid (`multigrid_cycles`); its residual is the
+    /// mean |residual| of the Reynolds equation over the interior, relative to the central film.
+    pub report: SolverReport,
     /// The central film's relative change over its last cycle, or its spread over a limit
     /// cycle (see [`History::settled`]).
     pub iteration_error: f64,
@@ -210,14 +211,7 @@ impl PointSolution {
             if !inside {
                 return (0.0, 0.0);
             }
-            let (before, after) = (f[k - step], f[k + step]);
-            let slope = 0.5 * (after - before);
-            let curvature = after - 2.0 * f[k] + before;
-            if curvature > 0.0 {
-                (0.5 * slope * slope / curvature, -slope / curvature)
-            } else {
-                (0.0, 0.0)
-            }
+            uniform_minimum(f[k - step], f[k], f[k + step]).unwrap_or((0.0, 0.0))
         };
         let (drop_x, sx) = vertex(i > 0 && i + 1 < nx, 1);
         let (drop_y, sy) = vertex(j > 0 && j + 1 < self.y.len(), nx);
@@ -452,15 +446,14 @@ impl Grid {
         bilinear_at(&self.x, &self.y, &self.film, 0.0, 0.0)
     }
 
-    fn solution(&self, cycles: u32, residual: f64, iteration_error: f64) -> PointSolution {
+    fn solution(&self, report: SolverReport, iteration_error: f64) -> PointSolution {
         PointSolution {
             iteration_error,
             x: self.x.clone(),
             y: self.y.clone(),
             pressure: self.pressure.clone(),
             film: self.film.clone(),
-            cycles,
-            residual,
+            report,
         }
     }
 }
@@ -506,28 +499,36 @@ impl PointProblem {
             g.update(self);
         }
         let mut solved = Vec::new();
-        let mut sweeps = 0;
+        // The coarsest grid only starts the next: a heavily loaded contact may close its film
+        // there and cycle between nearby states, so its solve also ends, without failing, at
+        // [`MAX_COARSEST_SOLVE`] sweeps (the driver's cap is never reached). One iteration: a
+        // run of [`COARSEST_SWEEPS`] sweeps.
+        let runs = MAX_COARSEST_SOLVE / COARSEST_SWEEPS as u32;
         let mut last_film = f64::NAN;
-        loop {
-            coarsest_sweeps(&mut grids[0], self);
-            sweeps += COARSEST_SWEEPS as u32;
-            let film = grids[0].central_film();
-            let load_error = (grids[0].load() / grids[0].load_target - 1.0).abs();
-            if !film.is_finite() || !grids[0].pressure.iter().all(|p| p.is_finite()) {
-                return Err(not_converged(&grids[0], kappa2, sweeps));
-            }
-            // The coarsest grid only starts the next: a heavily loaded contact may close its
-            // film there and cycle between nearby states, so its solve ends at a cap too.
-            if ((film - last_film) / film_scale(film)).abs() < FILM_TOLERANCE
-                && load_error < LOAD_TOLERANCE
-                || sweeps >= MAX_COARSEST_SOLVE
-            {
-                break;
-            }
-            if !budget.alive() {
-                return Err(PointFailure::DeadlineExceeded);
-            }
-            last_film = film;
+        let coarsest = Driver::new("coarsest_relaxation", IterationUnit::Sweeps, runs, budget).run(
+            |counter| {
+                let g = &mut grids[0];
+                coarsest_sweeps(g, self);
+                let sweeps = (counter.iterations + 1) * COARSEST_SWEEPS as u32;
+                let film = g.central_film();
+                let load_error = (g.load() / g.load_target - 1.0).abs();
+                if !film.is_finite() || !g.pressure.iter().all(|p| p.is_finite()) {
+                    return Verdict::Diverged(f64::NAN);
+                }
+                let change = ((film - last_film) / film_scale(film)).abs();
+                last_film = film;
+                if change < FILM_TOLERANCE && load_error < LOAD_TOLERANCE
+                    || sweeps >= MAX_COARSEST_SOLVE
+                {
+                    return Verdict::Converged((), load_error);
+                }
+                // The first run has no change yet (NaN): f64::max takes the load error.
+                Verdict::Continue(load_error.max(change))
+            },
+        );
+        if let Err(stopped) = coarsest {
+            let sweeps = stopped.report.iterations * COARSEST_SWEEPS as u32;
+            return Err(failure(stopped, &grids[0], kappa2, sweeps));
         }
         for level in 1..grids.len() {
             // Start from the coarser solution, interpolated.
@@ -542,40 +543,53 @@ impl PointProblem {
                 coarser_film: coarse.central_film(),
                 accuracy,
             };
-            // Levels below the last two only start the next one.
+            // Levels below the last two only start the next one: they end, without failing,
+            // after [`START_CYCLES`] cycles. The last two converge ([`History::settled`]) within
+            // [`MAX_CYCLES`]; their converged verdict carries the Reynolds residual.
             let resolved = level + 2 >= grids.len();
-            let mut cycles = 0;
-            let iteration_error = loop {
+            let run = Driver::new(
+                "fas_multigrid_finite_difference",
+                IterationUnit::MultigridCycles,
+                MAX_CYCLES,
+                budget,
+            )
+            .run(|counter| {
                 cycle(&mut grids[..=level], self);
-                cycles += 1;
+                let cycles = counter.iterations + 1;
                 let g = &grids[level];
                 let film = g.central_film();
                 if !film.is_finite() || !g.pressure.iter().all(|p| p.is_finite()) {
-                    return Err(not_converged(g, kappa2, cycles));
+                    return Verdict::Diverged(f64::NAN);
                 }
                 let load_error = (g.load() / g.load_target - 1.0).abs();
                 if resolved && load_error > DIVERGED_LOAD_ERROR {
-                    return Err(not_converged(g, kappa2, cycles));
+                    return Verdict::Diverged(load_error);
                 }
+                let change =
+                    ((film - history.films[history.films.len() - 1]) / film_scale(film)).abs();
                 history.films.push(film);
                 history.load_errors.push(load_error);
                 if let Some(error) = history.settled() {
-                    break error;
+                    if !resolved {
+                        return Verdict::Converged(error, change);
+                    }
+                    let residual = g.residual_norm(kappa2) / film_scale(film);
+                    return Verdict::Converged(error, residual);
                 }
                 if !resolved && cycles >= START_CYCLES {
-                    break f64::NAN;
+                    return Verdict::Converged(f64::NAN, change);
                 }
-                if cycles >= MAX_CYCLES {
-                    return Err(not_converged(g, kappa2, cycles));
-                }
-                if !budget.alive() {
-                    return Err(PointFailure::DeadlineExceeded);
+                Verdict::Continue(change)
+            });
+            let run = match run {
+                Ok(run) => run,
+                Err(stopped) => {
+                    let cycles = stopped.report.iterations;
+                    return Err(failure(stopped, &grids[level], kappa2, cycles));
                 }
             };
-            let g = &grids[level];
             if resolved {
-                let residual = g.residual_norm(kappa2) / film_scale(g.central_film());
-                solved.push(g.solution(cycles, residual, iteration_error));
+                solved.push(grids[level].solution(run.report, run.value));
             }
         }
         Ok(solved)
@@ -632,6 +646,15 @@ impl History {
 /// close the film (their discretisation error exceeds it), so not below 1e-3.
 fn film_scale(film: f64) -> f64 {
     film.abs().max(1e-3)
+}
+
+/// A level's run that stopped: the deadline, or cycles (sweeps on the coarsest grid) that
+/// stalled, diverged or reached the cap.
+fn failure(stopped: Stopped, g: &Grid, kappa2: f64, cycles: u32) -> PointFailure {
+    match stopped.reason() {
+        StopReason::Deadline => PointFailure::DeadlineExceeded,
+        _ => not_converged(g, kappa2, cycles),
+    }
 }
 
 fn not_converged(g: &Grid, kappa2: f64, cycles: u32) -> PointFailure {

@@ -25,9 +25,9 @@
 
 use super::subsurface::{ellipse_axis_stresses, line_axis_stresses, subsurface, Subsurface};
 use crate::calc::{CalcError, Warning};
-use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
+use crate::fidelity::SolverReport;
 use crate::numerics::elliptic::{carlson_rd, complete_from_complement};
-use crate::numerics::roots::{brent, RootError, Stopping};
+use crate::numerics::roots::{brent, Stopping};
 
 /// Largest radius ratio α_r = R_y/R_x accepted for a point contact. Beyond it the contact is a
 /// line for any practical purpose, or the surfaces are within 10⁻⁹ of osculation and the
@@ -600,27 +600,12 @@ pub(crate) fn exact_ellipse(radius_ratio: f64) -> Result<(Ellipse, SolverReport)
         MAX_ELLIPTICITY.ln(),
         stop,
     )
-    .map_err(|e| match e {
-        RootError::NotConverged { iterations, width } => CalcError::NotConverged {
-            method: "brent_ellipticity",
-            iterations,
-            residual: width,
-        },
-        other => CalcError::Internal(format!("ellipticity bracket: {other:?}")),
-    })?;
+    .map_err(|e| CalcError::from_root("brent_ellipticity", e))?;
     let (achieved, ellipse) = radius_ratio_of(root.x.exp());
-    let report = SolverReport {
-        method: "hertz_exact_brent_agm".to_owned(),
-        fidelity: Level::Standard,
-        grid: None,
-        iterations: root.iterations,
-        iterations_unit: IterationUnit::RootSearchSteps,
-        evaluations: None,
-        stop_reason: StopReason::Converged,
-        residual: Some((achieved / radius_ratio - 1.0).abs()),
-        error_estimate: None,
-        elapsed_ms: 0.0,
-    };
+    // The driver's report of the search; its residual is the ratio's relative miss at the root
+    // (what the ellipse is judged by), not the search's last bracket width.
+    let mut report = root.report.named("hertz_exact_brent_agm");
+    report.residual = Some((achieved / radius_ratio - 1.0).abs());
     Ok((ellipse, report))
 }
 
