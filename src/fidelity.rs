@@ -107,6 +107,23 @@ impl SolverReport {
         self
     }
 
+    /// The same report with the room's convergence measure as the residual (where the
+    /// driver's residual is an inner one, say a root bracket's width).
+    #[must_use]
+    pub fn with_residual(mut self, residual: f64) -> Self {
+        self.residual = residual.is_finite().then_some(residual);
+        self
+    }
+
+    /// The same report counting the work of every run of a nested solve (each grid of a
+    /// refinement, each Newton run of an outer iteration), not only the last run's.
+    #[must_use]
+    pub fn counting(mut self, iterations: u32, evaluations: u32) -> Self {
+        self.iterations = iterations;
+        self.evaluations = (evaluations > 0).then_some(evaluations);
+        self
+    }
+
     /// The same report at fidelity `level`.
     #[must_use]
     pub fn at(mut self, level: Level) -> Self {

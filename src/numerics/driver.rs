@@ -78,6 +78,17 @@ pub struct Stopped {
 }
 
 impl Stopped {
+    /// A search that converged by its own criterion but left the caller's unmet (a root found
+    /// to the bracket's tolerance where the balance it stands for is not): stalled.
+    pub fn stalled(report: SolverReport) -> Self {
+        Stopped {
+            report: SolverReport {
+                stop_reason: StopReason::Stalled,
+                ..report
+            },
+        }
+    }
+
     pub fn reason(&self) -> StopReason {
         self.report.stop_reason
     }

@@ -7,7 +7,3 @@
 pub mod ehl;
 pub mod flash_temperature;
 pub mod hertz;
-
-/// The film room's old path (`contact::ehl_film`), kept only while `rolling/analysis.rs` names
-/// it (the rolling branch switches it to `contact::ehl::film`; then this line goes).
-pub use ehl::film as ehl_film;

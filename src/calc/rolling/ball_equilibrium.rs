@@ -731,8 +731,7 @@ impl Work {
     fn count(&mut self, report: &mut SolverReport) {
         self.steps += report.iterations;
         self.evaluations += report.evaluations.unwrap_or(0);
-        report.iterations = self.steps;
-        report.evaluations = (self.evaluations > 0).then_some(self.evaluations);
+        *report = report.clone().counting(self.steps, self.evaluations);
     }
 }
 

@@ -10,7 +10,7 @@ use super::geometry::BallBearing;
 use crate::calc::quantity::RingSpeed;
 use crate::calc::{CalcError, Context};
 use crate::effects::Mode;
-use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::newton::{self, armijo, residual_falls, LineSearch, NewtonSystem};
@@ -82,11 +82,9 @@ pub(super) fn balanced(
     residual: f64,
     tolerance: f64,
 ) -> Result<SolverReport, Stopped> {
-    let mut report = root.report.clone();
-    report.residual = Some(residual);
+    let report = root.report.clone().with_residual(residual);
     if residual > tolerance {
-        report.stop_reason = StopReason::Stalled;
-        return Err(Stopped { report });
+        return Err(Stopped::stalled(report));
     }
     Ok(report)
 }

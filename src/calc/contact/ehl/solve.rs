@@ -49,10 +49,10 @@ struct Solved {
 impl Solved {
     /// The fine solve's report, counting the Newton steps and evaluations of every grid.
     fn report(&self) -> SolverReport {
-        let mut report = self.solution.report.clone();
-        report.iterations = self.steps;
-        report.evaluations = (self.evaluations > 0).then_some(self.evaluations);
-        report
+        self.solution
+            .report
+            .clone()
+            .counting(self.steps, self.evaluations)
     }
 }
 

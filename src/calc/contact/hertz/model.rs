@@ -604,8 +604,10 @@ pub(crate) fn exact_ellipse(radius_ratio: f64) -> Result<(Ellipse, SolverReport)
     let (achieved, ellipse) = radius_ratio_of(root.x.exp());
     // The driver's report of the search; its residual is the ratio's relative miss at the root
     // (what the ellipse is judged by), not the search's last bracket width.
-    let mut report = root.report.named("hertz_exact_brent_agm");
-    report.residual = Some((achieved / radius_ratio - 1.0).abs());
+    let report = root
+        .report
+        .named("hertz_exact_brent_agm")
+        .with_residual((achieved / radius_ratio - 1.0).abs());
     Ok((ellipse, report))
 }
 
