@@ -26,7 +26,6 @@ use crate::calc::contact::hertz::{Body, Contact, Field, Method, Shape};
 use crate::calc::lubricant::model::PressureLaw;
 use crate::calc::lubricant::{Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive, RingSpeed};
-use crate::calc::surface::roughness::composite_rms;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
 use crate::fidelity::Level;
@@ -493,11 +492,6 @@ fn refused(path: &str, errors: &[FieldError]) -> CalcError {
     )
 }
 
-/// Highest entrainment speed the closed-form films accept, m/s (the EHL film room's limit).
-const MAX_FILM_SPEED_M_S: f64 = 1e3;
-/// Largest RMS roughness of one surface the film accepts, m (the EHL film room's limit).
-const MAX_FILM_ROUGHNESS_M: f64 = 1e-4;
-
 /// One raceway's film step: the raceway's radii, the element's load and entrainment speed, and
 /// the raceway's roughness (with its field's name).
 struct FilmStep {
@@ -538,30 +532,20 @@ impl FilmStep {
             film_refused(&contact_pointer(e.field, case.roller), &e.message)
         })?;
         let speed_m_s = self.speed_m_s.abs().max(1e-9);
-        if speed_m_s > MAX_FILM_SPEED_M_S {
+        if let Some(why) = closed_form::speed_refusal(speed_m_s) {
             return Err(film_refused(
                 "/inner_ring_speed_rpm",
-                &format!("the entrainment speed must be at most {MAX_FILM_SPEED_M_S} m/s, got {speed_m_s}"),
+                &format!("the entrainment speed {why}"),
             ));
         }
         let composite_roughness_m = match (case.roughness, self.race_rms) {
             (Some(r), Some((race, race_field))) => {
-                let (ball_rms, race_rms) = (r.ball_rms_m.get(), race.get());
-                for (v, field) in [(ball_rms, "ball_rms_m"), (race_rms, race_field)] {
-                    if v > MAX_FILM_ROUGHNESS_M {
-                        return Err(film_refused(
-                            &format!("/roughness/{field}"),
-                            &format!("must be at most {MAX_FILM_ROUGHNESS_M} m"),
-                        ));
-                    }
-                }
-                if ball_rms == 0.0 && race_rms == 0.0 {
-                    return Err(film_refused(
-                        "/roughness/ball_rms_m",
-                        "both surfaces perfectly smooth: Λ is infinite; omit roughness",
-                    ));
-                }
-                Some(composite_rms(ball_rms, race_rms))
+                let fields = ["ball_rms_m", race_field];
+                let sigma = closed_form::composite_roughness([r.ball_rms_m.get(), race.get()])
+                    .map_err(|(surface, why)| {
+                        film_refused(&format!("/roughness/{}", fields[surface]), &why)
+                    })?;
+                Some(sigma)
             }
             _ => None,
         };
@@ -570,22 +554,13 @@ impl FilmStep {
             starvation: case.film_effects.starvation,
             mixed_lubrication: case.film_effects.mixed_lubrication,
         };
-        if effects.starvation == Mode::On && case.meniscus.is_none() {
+        if let Some(refusal) = effects
+            .refusals(case.meniscus.is_some(), line_length_m.is_some())
+            .first()
+        {
             return Err(film_refused(
-                "/film_effects/starvation",
-                "starvation needs inlet_meniscus_distance_m (the distance from the contact centre to the inlet meniscus)",
-            ));
-        }
-        if effects.starvation == Mode::On && line_length_m.is_some() {
-            return Err(film_refused(
-                "/film_effects/starvation",
-                "the meniscus starvation formulas here are for point contacts (Hamrock & Dowson 1977); none is implemented for a line contact",
-            ));
-        }
-        if effects.mixed_lubrication == Mode::On {
-            return Err(film_refused(
-                "/film_effects/mixed_lubrication",
-                "no mixed-EHL film model is implemented (the texts give none: Khonsari FE-9); use auto, which reports Λ and the lubrication regime",
+                &format!("/film_effects/{}", refusal.effect()),
+                refusal.message(),
             ));
         }
         Ok(FilmCase {

@@ -18,7 +18,9 @@ use super::formulas::{
 use crate::calc::contact::hertz::{Contact, MajorAxis, Solution};
 use crate::calc::lubricant::model::{PressureLaw, TemperatureLaw};
 use crate::calc::lubricant::Lubricant;
-use crate::calc::surface::roughness::{film_parameter, LubricationRegime, FULL_FILM_LAMBDA};
+use crate::calc::surface::roughness::{
+    composite_rms, film_parameter, LubricationRegime, FULL_FILM_LAMBDA,
+};
 use crate::calc::{CalcError, Warning};
 use crate::effects::{Criterion, Decision, Mode};
 
@@ -26,6 +28,36 @@ use crate::effects::{Criterion, Decision, Mode};
 /// where the inlet heats.
 const INLET_HEATING_FILM_M: f64 = 1e-6;
 const INLET_HEATING_SPEED_M_S: f64 = 10.0;
+
+/// Highest entrainment speed the film model takes, m/s (beyond it the closed forms have no
+/// footing at all).
+pub const MAX_SPEED_M_S: f64 = 1e3;
+/// Largest RMS roughness of one surface, m.
+pub const MAX_ROUGHNESS_M: f64 = 1e-4;
+
+/// Why the film model refuses an entrainment speed (the caller names the field).
+pub fn speed_refusal(speed_m_s: f64) -> Option<String> {
+    (speed_m_s > MAX_SPEED_M_S)
+        .then(|| format!("must be at most {MAX_SPEED_M_S} m/s, got {speed_m_s}"))
+}
+
+/// The composite roughness of two surfaces' RMS roughness, or which surface (0 or 1) is refused
+/// and why.
+pub fn composite_roughness(sigma_m: [f64; 2]) -> Result<f64, (usize, String)> {
+    for (i, v) in sigma_m.into_iter().enumerate() {
+        if v > MAX_ROUGHNESS_M {
+            return Err((i, format!("must be at most {MAX_ROUGHNESS_M} m")));
+        }
+    }
+    if sigma_m[0] > 0.0 || sigma_m[1] > 0.0 {
+        Ok(composite_rms(sigma_m[0], sigma_m[1]))
+    } else {
+        Err((
+            0,
+            "both surfaces perfectly smooth: Λ is infinite; omit roughness".to_owned(),
+        ))
+    }
+}
 
 /// The effect modes of a film calculation.
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq)]
@@ -36,6 +68,52 @@ pub struct FilmEffects {
     pub starvation: Mode,
     /// Mixed lubrication, judged from Λ (reported, not modelled: `On` is not a case).
     pub mixed_lubrication: Mode,
+}
+
+/// An effect the film model cannot apply as asked.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum EffectRefusal {
+    StarvationWithoutMeniscus,
+    StarvationOfALine,
+    MixedLubricationOn,
+}
+
+impl EffectRefusal {
+    /// The effect's field name.
+    pub fn effect(self) -> &'static str {
+        match self {
+            EffectRefusal::StarvationWithoutMeniscus | EffectRefusal::StarvationOfALine => {
+                "starvation"
+            }
+            EffectRefusal::MixedLubricationOn => "mixed_lubrication",
+        }
+    }
+
+    pub fn message(self) -> &'static str {
+        match self {
+            EffectRefusal::StarvationWithoutMeniscus => "starvation needs inlet_meniscus_distance_m (the distance from the contact centre to the inlet meniscus)",
+            EffectRefusal::StarvationOfALine => "the meniscus starvation formulas here are for point contacts (Hamrock & Dowson 1977); none is implemented for a line contact",
+            EffectRefusal::MixedLubricationOn => "no mixed-EHL film model is implemented (the texts give none: Khonsari FE-9); use auto, which reports Λ and the lubrication regime",
+        }
+    }
+}
+
+impl FilmEffects {
+    /// What the modes ask that the model cannot do, for a case with or without a meniscus
+    /// distance, point or line.
+    pub fn refusals(&self, has_meniscus: bool, line: bool) -> Vec<EffectRefusal> {
+        let mut out = Vec::new();
+        if self.starvation == Mode::On && !has_meniscus {
+            out.push(EffectRefusal::StarvationWithoutMeniscus);
+        }
+        if self.starvation == Mode::On && line {
+            out.push(EffectRefusal::StarvationOfALine);
+        }
+        if self.mixed_lubrication == Mode::On {
+            out.push(EffectRefusal::MixedLubricationOn);
+        }
+        out
+    }
 }
 
 /// A checked film case. The wire builds it from a request; other rooms build it from Rust.

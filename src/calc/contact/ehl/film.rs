@@ -29,22 +29,22 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::closed_form::{self, FilmCase, FilmEffects, FilmSolution, Formula, Formulas};
+use super::closed_form::{
+    self, speed_refusal, FilmCase, FilmEffects, FilmSolution, Formula, Formulas, MAX_ROUGHNESS_M,
+};
 use super::formulas::Regime;
 use crate::calc::contact::hertz::{
     contact_of, method_of, BodySpec, ClosedFormFit, LineSpec, Method,
 };
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
-use crate::calc::surface::roughness::{composite_rms, LubricationRegime};
+use crate::calc::surface::roughness::LubricationRegime;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
 
 pub struct EhlFilm;
 
-/// Highest entrainment speed accepted, m/s (beyond it the closed forms have no footing at all).
-const MAX_SPEED_M_S: f64 = 1e3;
 /// Largest slide-to-roll ratio |u₁ − u₂|/ū: 2 is pure sliding (one surface still).
 const MAX_SLIDE_ROLL: f64 = 2.0;
 /// Surface roughness: both bodies' RMS roughness, or the composite.
@@ -61,8 +61,6 @@ pub struct RoughnessSpec {
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.5e-4, example = 1.86e-7)]
     pub composite_rms_m: Option<Positive>,
 }
-
-const MAX_ROUGHNESS_M: f64 = 1e-4;
 
 /// Effects this calculation understands.
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
@@ -175,22 +173,15 @@ impl Validate for EhlFilmInput {
             .and_then(|r| composite_roughness(r, &mut errors));
         let slide_roll_ratio = slide_roll_ratio(self.slide_roll_ratio, &mut errors);
         let meniscus_m = self.inlet_meniscus_distance_m.map(Positive::get);
-        if self.effects.starvation == Mode::On && meniscus_m.is_none() {
+        let effects = FilmEffects {
+            thermal: self.effects.thermal,
+            starvation: self.effects.starvation,
+            mixed_lubrication: self.effects.mixed_lubrication,
+        };
+        for refusal in effects.refusals(meniscus_m.is_some(), self.line.is_some()) {
             errors.push(FieldError::new(
-                "/effects/starvation",
-                "starvation needs inlet_meniscus_distance_m (the distance from the contact centre to the inlet meniscus)",
-            ));
-        }
-        if self.effects.starvation == Mode::On && self.line.is_some() {
-            errors.push(FieldError::new(
-                "/effects/starvation",
-                "the meniscus starvation formulas here are for point contacts (Hamrock & Dowson 1977); none is implemented for a line contact",
-            ));
-        }
-        if self.effects.mixed_lubrication == Mode::On {
-            errors.push(FieldError::new(
-                "/effects/mixed_lubrication",
-                "no mixed-EHL film model is implemented (the texts give none: Khonsari FE-9); use auto, which reports Λ and the lubrication regime",
+                format!("/effects/{}", refusal.effect()),
+                refusal.message(),
             ));
         }
         match (errors.is_empty(), hertz, lubricant, pressure_law) {
@@ -205,26 +196,19 @@ impl Validate for EhlFilmInput {
                 composite_roughness_m,
                 slide_roll_ratio,
                 meniscus_m,
-                effects: FilmEffects {
-                    thermal: self.effects.thermal,
-                    starvation: self.effects.starvation,
-                    mixed_lubrication: self.effects.mixed_lubrication,
-                },
+                effects,
             }),
             _ => Err(errors),
         }
     }
 }
 
-/// The mean entrainment speed ū, checked against [`MAX_SPEED_M_S`] (shared with the numerical
-/// EHL room).
+/// The mean entrainment speed ū, checked against the film model's range (shared with the
+/// numerical EHL room).
 pub(super) fn entrainment_speed(speed: Positive, errors: &mut Vec<FieldError>) -> f64 {
     let speed = speed.get();
-    if speed > MAX_SPEED_M_S {
-        errors.push(FieldError::new(
-            "/entrainment_speed_m_s",
-            format!("must be at most {MAX_SPEED_M_S} m/s, got {speed}"),
-        ));
+    if let Some(why) = speed_refusal(speed) {
+        errors.push(FieldError::new("/entrainment_speed_m_s", why));
     }
     speed
 }
@@ -245,10 +229,11 @@ pub(super) fn slide_roll_ratio(ratio: Option<NonNegative>, errors: &mut Vec<Fiel
 /// description is incomplete, ambiguous or zero.
 fn composite_roughness(r: RoughnessSpec, errors: &mut Vec<FieldError>) -> Option<f64> {
     let get = |v: Option<NonNegative>| v.map(NonNegative::get);
-    for (name, v) in [
-        ("body1_rms_m", get(r.body1_rms_m)),
-        ("body2_rms_m", get(r.body2_rms_m)),
-    ] {
+    const BODIES: [&str; 2] = ["body1_rms_m", "body2_rms_m"];
+    for (name, v) in BODIES
+        .into_iter()
+        .zip([get(r.body1_rms_m), get(r.body2_rms_m)])
+    {
         if v.is_some_and(|v| v > MAX_ROUGHNESS_M) {
             errors.push(FieldError::new(
                 format!("/roughness/{name}"),
@@ -266,14 +251,13 @@ fn composite_roughness(r: RoughnessSpec, errors: &mut Vec<FieldError>) -> Option
             ));
             None
         }
-        (Some(s1), Some(s2), None) if s1 > 0.0 || s2 > 0.0 => Some(composite_rms(s1, s2)),
-        (Some(_), Some(_), None) => {
-            errors.push(FieldError::new(
-                "/roughness/body1_rms_m",
-                "both surfaces perfectly smooth: Λ is infinite; omit roughness",
-            ));
-            None
-        }
+        (Some(s1), Some(s2), None) => match closed_form::composite_roughness([s1, s2]) {
+            Ok(sigma) => Some(sigma),
+            Err((body, why)) => {
+                errors.push(FieldError::new(format!("/roughness/{}", BODIES[body]), why));
+                None
+            }
+        },
         (b1, _, None) => {
             let missing = if b1.is_none() { "body1" } else { "body2" };
             errors.push(FieldError::new(
