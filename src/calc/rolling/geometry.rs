@@ -328,16 +328,12 @@ impl BallBearing {
         let contact = self
             .hertz_contact(race, contact_angle, load_n)
             .map_err(|errors| {
-                let detail: Vec<String> = errors
-                    .into_iter()
-                    .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
-                    .collect();
-                CalcError::impossible(
+                Invalid::refusal(
+                    errors,
                     "/bearing",
-                    format!(
-                        "the {race:?} raceway contact at contact angle {:.4}° and load {load_n:.6e} N is not a Hertz point contact: {}",
-                        contact_angle.to_degrees(),
-                        detail.join("; ")
+                    &format!(
+                        "the {race:?} raceway contact at contact angle {:.4}° and load {load_n:.6e} N is not a Hertz point contact",
+                        contact_angle.to_degrees()
                     ),
                 )
             })?;

@@ -32,7 +32,7 @@ use utoipa::ToSchema;
 
 use super::geometry::MaterialSpec;
 use super::ring_equilibrium::{balanced, load_balance_root, MAX_BRENT_ITERATIONS};
-use crate::calc::contact::hertz::{Body, Contact, Method, Shape, Solution};
+use crate::calc::contact::hertz::{Body, Contact, Invalid, Method, Shape, Solution};
 use crate::calc::quantity::Positive;
 use crate::calc::{CalcError, FieldError};
 use crate::fidelity::{IterationUnit, SolverReport};
@@ -293,16 +293,10 @@ impl RollerBearing {
             Method::Exact,
         )
         .map_err(|errors| {
-            CalcError::impossible(
+            Invalid::refusal(
+                errors,
                 "/bearing",
-                format!(
-                    "a roller's raceway contact is not a Hertz line contact: {}",
-                    errors
-                        .into_iter()
-                        .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
-                        .collect::<Vec<_>>()
-                        .join("; ")
-                ),
+                "a roller's raceway contact is not a Hertz line contact",
             )
         })?;
         contact.solve()

@@ -607,19 +607,7 @@ fn pressure_at_one_newton(
     contact: Result<Contact, Vec<Invalid>>,
     what: &str,
 ) -> Result<f64, CalcError> {
-    let contact = contact.map_err(|errors| {
-        CalcError::impossible(
-            "/bearing",
-            format!(
-                "{what}: {}",
-                errors
-                    .into_iter()
-                    .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
-                    .collect::<Vec<_>>()
-                    .join("; ")
-            ),
-        )
-    })?;
+    let contact = contact.map_err(|errors| Invalid::refusal(errors, "/bearing", what))?;
     Ok(contact.solve()?.max_pressure_pa)
 }
 

@@ -182,6 +182,17 @@ impl Invalid {
             message: message.into(),
         }
     }
+
+    /// A composed room's refusal of a contact it built itself (the contact is not a Hertz
+    /// contact): a 422 on `pointer` saying `what`, then every refused field with the Hertz
+    /// room's name for it.
+    pub fn refusal(errors: Vec<Invalid>, pointer: &str, what: &str) -> CalcError {
+        let detail: Vec<String> = errors
+            .into_iter()
+            .map(|e| format!("{}: {}", e.field.hertz_pointer(), e.message))
+            .collect();
+        CalcError::impossible(pointer, format!("{what}: {}", detail.join("; ")))
+    }
 }
 
 /// A signed principal radius must be finite with |r| ≥ 1 nm (a flat is an absent radius).
