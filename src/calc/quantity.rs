@@ -132,3 +132,55 @@ mod tests {
         assert!((Celsius::try_from(40.0).unwrap().kelvin() - 313.15).abs() < 1e-12);
     }
 }
+
+/// Smallest magnitude of a principal radius of curvature, m (a flat is an absent radius).
+pub const MIN_RADIUS_M: f64 = 1e-9;
+
+/// A signed principal radius of curvature, m: finite, |r| ≥ 1 nm; convex > 0, concave < 0.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct Radius(f64);
+
+impl Radius {
+    pub fn get(self) -> f64 {
+        self.0
+    }
+}
+
+impl TryFrom<f64> for Radius {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && v.abs() >= MIN_RADIUS_M {
+            Ok(Radius(v))
+        } else {
+            Err(format!(
+                "must be a finite radius with |r| ≥ {MIN_RADIUS_M} m (negative for concave; omit it for a flat), got {v}"
+            ))
+        }
+    }
+}
+
+/// Poisson's ratio ν, dimensionless, within (−1, 0.5] (the range where the elastic energy is
+/// positive definite for an isotropic solid).
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
+#[serde(try_from = "f64")]
+pub struct PoissonRatio(f64);
+
+impl PoissonRatio {
+    pub fn get(self) -> f64 {
+        self.0
+    }
+}
+
+impl TryFrom<f64> for PoissonRatio {
+    type Error = String;
+    fn try_from(v: f64) -> Result<Self, String> {
+        if v.is_finite() && v > -1.0 && v <= 0.5 {
+            Ok(PoissonRatio(v))
+        } else {
+            Err(format!(
+                "must be within (−1, 0.5] (isotropic elastic solid), got {v}"
+            ))
+        }
+    }
+}

@@ -18,10 +18,8 @@
 use serde::Deserialize;
 use utoipa::ToSchema;
 
-use crate::calc::contact::hertz::{
-    Body, Contact, Field, Invalid, Method, PoissonRatio, Shape, Solution,
-};
-use crate::calc::quantity::Positive;
+use crate::calc::contact::hertz::{Body, Contact, Field, Invalid, Method, Shape, Solution};
+use crate::calc::quantity::{PoissonRatio, Positive};
 use crate::calc::{CalcError, FieldError, Warning};
 
 /// Largest ball or pitch diameter accepted, m.

@@ -17,8 +17,7 @@ pub use model::{
 };
 pub(crate) use wire::{contact_of, method_of};
 pub use wire::{
-    BodySpec, ClosedFormFit, Hertz, HertzInput, HertzOutput, LineSpec, PoissonRatio, Radius,
-    SubsurfaceStress,
+    BodySpec, ClosedFormFit, Hertz, HertzInput, HertzOutput, LineSpec, SubsurfaceStress,
 };
 
 #[cfg(test)]

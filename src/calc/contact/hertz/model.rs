@@ -44,8 +44,6 @@ const FIT_RANGE: (f64, f64) = (1.0, 60.0);
 /// Hertz assumes the contact is small against the radii (half-space approximation); a
 /// semi-axis above this fraction of a radius in its direction draws a warning.
 const SMALL_CONTACT: f64 = 0.1;
-/// Radii outside this magnitude are refused (a flat is an absent radius).
-pub(crate) const MIN_RADIUS_M: f64 = 1e-9;
 pub(crate) const MAX_MODULUS_PA: f64 = 1e13;
 pub(crate) const MIN_MODULUS_PA: f64 = 1.0;
 pub(crate) const MAX_LOAD_N: f64 = 1e12;
@@ -195,27 +193,15 @@ impl Invalid {
     }
 }
 
-/// A signed principal radius must be finite with |r| ≥ 1 nm (a flat is an absent radius).
-pub fn check_radius(v: f64) -> Result<f64, String> {
-    if v.is_finite() && v.abs() >= MIN_RADIUS_M {
-        Ok(v)
-    } else {
-        Err(format!(
-            "must be a finite radius with |r| ≥ {MIN_RADIUS_M} m (negative for concave; omit it for a flat), got {v}"
-        ))
-    }
+/// A signed principal radius must be finite with |r| ≥ 1 nm (a flat is an absent radius): the
+/// rule of [`crate::calc::quantity::Radius`].
+fn check_radius(v: f64) -> Result<f64, String> {
+    crate::calc::quantity::Radius::try_from(v).map(|r| r.get())
 }
 
-/// Poisson's ratio ν must lie within (−1, 0.5] (the range where the elastic energy is positive
-/// definite for an isotropic solid).
-pub fn check_poisson_ratio(v: f64) -> Result<f64, String> {
-    if v.is_finite() && v > -1.0 && v <= 0.5 {
-        Ok(v)
-    } else {
-        Err(format!(
-            "must be within (−1, 0.5] (isotropic elastic solid), got {v}"
-        ))
-    }
+/// Poisson's ratio ν within (−1, 0.5]: the rule of [`crate::calc::quantity::PoissonRatio`].
+fn check_poisson_ratio(v: f64) -> Result<f64, String> {
+    crate::calc::quantity::PoissonRatio::try_from(v).map(|r| r.get())
 }
 
 /// A finite number > 0 (the same rule and words as [`crate::calc::quantity::Positive`]).

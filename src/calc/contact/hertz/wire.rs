@@ -7,52 +7,13 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::model::{
-    check_poisson_ratio, check_radius, Body, Contact, Fit, Footprint, Method, Shape, Solution,
-};
+use super::model::{Body, Contact, Fit, Footprint, Method, Shape, Solution};
 use super::subsurface::BodyStresses;
-use crate::calc::quantity::Positive;
+use crate::calc::quantity::{PoissonRatio, Positive, Radius};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
 pub struct Hertz;
-
-/// A signed principal radius of curvature, m: finite, |r| ≥ 1 nm; convex > 0, concave < 0.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(try_from = "f64")]
-pub struct Radius(f64);
-
-impl Radius {
-    pub fn get(self) -> f64 {
-        self.0
-    }
-}
-
-impl TryFrom<f64> for Radius {
-    type Error = String;
-    fn try_from(v: f64) -> Result<Self, String> {
-        check_radius(v).map(Radius)
-    }
-}
-
-/// Poisson's ratio ν, dimensionless, within (−1, 0.5] (the range where the elastic energy is
-/// positive definite for an isotropic solid).
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
-#[serde(try_from = "f64")]
-pub struct PoissonRatio(f64);
-
-impl PoissonRatio {
-    pub fn get(self) -> f64 {
-        self.0
-    }
-}
-
-impl TryFrom<f64> for PoissonRatio {
-    type Error = String;
-    fn try_from(v: f64) -> Result<Self, String> {
-        check_poisson_ratio(v).map(PoissonRatio)
-    }
-}
 
 /// One body: its two principal radii of curvature at the contact and its elastic constants.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
