@@ -25,6 +25,29 @@ pub struct Warning {
     pub message: String,
 }
 
+/// What a model says beside its numbers, in the order it said it: the decision on each effect
+/// and the warnings. Models hold no [`Context`]; they return their notes as data and the wire
+/// records them ([`Context::record`]), so a composed room can pass them on, map them or keep
+/// them apart.
+#[derive(Debug, Clone, Default, PartialEq)]
+pub struct Notes {
+    pub decisions: Vec<(&'static str, Decision)>,
+    pub warnings: Vec<Warning>,
+}
+
+impl Notes {
+    pub fn decide(&mut self, effect: &'static str, decision: Decision) {
+        self.decisions.push((effect, decision));
+    }
+
+    pub fn warn(&mut self, code: &'static str, message: impl Into<String>) {
+        self.warnings.push(Warning {
+            code,
+            message: message.into(),
+        });
+    }
+}
+
 /// Why a calculation did not produce a result. Each variant is, by construction, either the
 /// user's fault (4xx) or ours (5xx).
 #[derive(Debug, Clone, PartialEq, thiserror::Error)]
@@ -136,6 +159,16 @@ impl Context {
     /// Record the decision on one effect.
     pub fn decide(&mut self, effect: &'static str, decision: Decision) {
         self.effects.insert(effect, decision);
+    }
+
+    /// Record a model's notes: its warnings, then its decisions, in their order.
+    pub fn record(&mut self, notes: &Notes) {
+        for w in &notes.warnings {
+            self.warn(w.code, w.message.clone());
+        }
+        for (effect, decision) in &notes.decisions {
+            self.decide(effect, decision.clone());
+        }
     }
 
     pub fn warn(&mut self, code: &'static str, message: impl Into<String>) {

@@ -14,7 +14,7 @@ mod registry;
 pub(crate) mod testing;
 
 pub use crate::numerics::driver::Budget;
-pub use context::{CalcError, Context, Warning};
+pub use context::{CalcError, Context, Notes, Warning};
 pub use registry::{
     execute, find, validate_value, Entry, Envelope, Executed, Failure, FieldError, REGISTRY,
 };

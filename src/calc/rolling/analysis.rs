@@ -594,12 +594,7 @@ impl FilmStep {
             },
             other => other,
         })?;
-        for w in &film.warnings {
-            step.warn(w.code, w.message.clone());
-        }
-        for (effect, decision) in &film.decisions {
-            step.decide(effect, decision.clone());
-        }
+        step.record(&film.notes);
         Ok(EhlFilmOutput::of(&film, &film_case))
     }
 }

@@ -21,7 +21,7 @@ use crate::calc::lubricant::Lubricant;
 use crate::calc::surface::roughness::{
     composite_rms, film_parameter, LubricationRegime, FULL_FILM_LAMBDA,
 };
-use crate::calc::{CalcError, Warning};
+use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
 
 /// Stachowiak §7.4: the isothermal fits overestimate the film above about 1 µm and 10 m/s,
@@ -209,31 +209,10 @@ pub struct FilmSolution {
     /// Λ = h_min/σ, with roughness.
     pub lambda: Option<f64>,
     pub formulas: Formulas,
-    /// The decisions on `thermal`, `starvation` and `mixed_lubrication`.
-    pub decisions: Vec<(&'static str, Decision)>,
-    /// Warnings, in order: the dry contact's (but for its approach, which a film does not
-    /// report), then the film's.
-    pub warnings: Vec<Warning>,
-}
-
-/// What the steps note on the way: decisions and warnings.
-#[derive(Debug, Default)]
-struct Notes {
-    decisions: Vec<(&'static str, Decision)>,
-    warnings: Vec<Warning>,
-}
-
-impl Notes {
-    fn decide(&mut self, effect: &'static str, decision: Decision) {
-        self.decisions.push((effect, decision));
-    }
-
-    fn warn(&mut self, code: &'static str, message: impl Into<String>) {
-        self.warnings.push(Warning {
-            code,
-            message: message.into(),
-        });
-    }
+    /// The decisions on `thermal`, `starvation` and `mixed_lubrication`, and the warnings, in
+    /// order: the dry contact's (but for its approach, which a film does not report), then the
+    /// film's.
+    pub notes: Notes,
 }
 
 /// η₀ at the inlet temperature, or a 422 where the lubricant's law has no value there.
@@ -313,8 +292,7 @@ pub fn solve(case: &FilmCase) -> Result<FilmSolution, CalcError> {
         starvation_factors: (starve_c, starve_min),
         lambda,
         formulas: films.formulas,
-        decisions: notes.decisions,
-        warnings: notes.warnings,
+        notes,
     })
 }
 

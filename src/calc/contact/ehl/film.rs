@@ -451,12 +451,7 @@ impl Calculation for EhlFilm {
 
     fn run(case: FilmCase, ctx: &mut Context) -> Result<EhlFilmOutput, CalcError> {
         let film = closed_form::solve(&case)?;
-        for w in &film.warnings {
-            ctx.warn(w.code, w.message.clone());
-        }
-        for (effect, decision) in &film.decisions {
-            ctx.decide(effect, decision.clone());
-        }
+        ctx.record(&film.notes);
         ctx.report(film.contact.report.clone());
         Ok(EhlFilmOutput::of(&film, &case))
     }

@@ -605,6 +605,6 @@ fn the_closed_form_model_is_the_room() {
     assert_eq!(get(&room, "/result/min_film_thickness_m"), film.min_film_m);
     assert_eq!(
         room["warnings"].as_array().unwrap().len(),
-        film.warnings.len()
+        film.notes.warnings.len()
     );
 }
