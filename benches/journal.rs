@@ -10,6 +10,7 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, Criterion};
 use stribeck::calc::journal::film::FilmModel;
 use stribeck::calc::journal::performance::{self, Approximation, Method};
+use stribeck::calc::Budget;
 use stribeck::fidelity::Level;
 
 fn journal(c: &mut Criterion) {
@@ -21,7 +22,7 @@ fn journal(c: &mut Criterion) {
                 1.0,
                 standard,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })
@@ -35,7 +36,7 @@ fn journal(c: &mut Criterion) {
                     1.0,
                     standard,
                     FilmModel::REYNOLDS,
-                    &mut || true,
+                    &Budget::unlimited(),
                 )
                 .unwrap()
             })
@@ -49,7 +50,7 @@ fn journal(c: &mut Criterion) {
                 0.5,
                 short,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })
@@ -62,7 +63,7 @@ fn journal(c: &mut Criterion) {
                 2.0,
                 long,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })

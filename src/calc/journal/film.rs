@@ -21,6 +21,7 @@
 
 use std::f64::consts::PI;
 
+use crate::calc::Budget;
 use crate::numerics::reynolds::{
     self, at, Axis, Fluxes, Grid, Problem, SolveError, Solved, Stencil, Stopping,
 };
@@ -389,7 +390,7 @@ pub fn solve(
     mesh: Mesh,
     stop: Stopping,
     start: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
     let g = grid(mesh, &film);
     let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
@@ -478,14 +479,8 @@ pub fn solve(
                 }
             }
         }
-        let solved = reynolds::solve_mass_conserving(
-            &stencil,
-            omega,
-            &mut p,
-            &mut content,
-            stop,
-            keep_going,
-        )?;
+        let solved =
+            reynolds::solve_mass_conserving(&stencil, omega, &mut p, &mut content, stop, budget)?;
         let fluxes = stencil.fluxes(&p, &content);
         let solution = integrate(&g, &p, &film, solved, Some((&content, fluxes)));
         p.extend_from_slice(&content);
@@ -500,7 +495,7 @@ pub fn solve(
         &mut p,
         film.physics.cavitation,
         stop,
-        keep_going,
+        budget,
     )?;
     Ok((integrate(&g, &p, &film, solved, None), p))
 }
@@ -513,16 +508,16 @@ pub fn solve_nested(
     mesh: Mesh,
     stop: Stopping,
     warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
     let coarse_mesh = mesh.coarse();
-    let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
+    let (coarse, pc) = solve(film, coarse_mesh, stop, None, budget)?;
     // (A mass-conserving field carries its content after the pressure: only the pressure is
     // carried over; the content starts flooded and settles in the first sweeps.)
     let coarse_grid = grid(coarse_mesh, &film);
     let pc = &pc[..(coarse_grid.nx() + 1) * (coarse_grid.ny + 1)];
     let start = warm.unwrap_or_else(|| reynolds::prolong(&coarse_grid, pc, &grid(mesh, &film)));
-    let (fine, p) = solve(film, mesh, stop, Some(start), keep_going)?;
+    let (fine, p) = solve(film, mesh, stop, Some(start), budget)?;
     Ok((fine, coarse, p))
 }
 

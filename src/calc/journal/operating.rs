@@ -265,7 +265,6 @@ impl Case {
         }
         let scale = self.load_scale(mu);
         let l_over_d = self.geometry.l_over_d();
-        let mut alive = || budget.alive();
         let (point, load_n, evaluations) = match self.given {
             Given::Load(w) => {
                 let (p, n) = performance::equilibrium(
@@ -273,7 +272,7 @@ impl Case {
                     l_over_d,
                     self.method,
                     self.physics(temperature_c),
-                    &mut alive,
+                    budget,
                 )?;
                 (p, w, n)
             }
@@ -283,7 +282,7 @@ impl Case {
                     l_over_d,
                     self.method,
                     self.physics(temperature_c),
-                    &mut alive,
+                    budget,
                 )?;
                 let w = scale / p.sommerfeld_number;
                 (p, w, 0)
@@ -638,35 +637,33 @@ fn dimensional_dynamics(
     }
 }
 
+/// The response's solver block. Numerical: the film solves' driver report (the sweeps of the
+/// fine and the coarse mesh, the fine field's equation residual), at the level and on the mesh
+/// asked, with the error estimate; the equilibrium search's S evaluations (each a film solve, or
+/// an attitude search of them) as its evaluations. Closed form: a direct evaluation, counting the
+/// S evaluations of the equilibrium search's Brent (the count the block has always carried).
 fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
     match case.method {
-        Method::ClosedForm(_) => SolverReport {
-            method: format!(
-                "closed_form_{}",
-                decisions::approximation_name(case).unwrap_or_default()
-            ),
-            iterations: evaluations,
-            iterations_unit: IterationUnit::RootSearchSteps,
-            evaluations: None,
-            stop_reason: StopReason::Converged,
-            ..SolverReport::closed_form("closed_form")
-        },
-        Method::Numerical { level, mesh, .. } => SolverReport {
-            method: if case.mass_conserving() {
-                "finite_volume_jfo_gauss_seidel"
-            } else {
-                "finite_volume_psor"
+        Method::ClosedForm(_) => {
+            let name = decisions::approximation_name(case).unwrap_or_default();
+            let mut report = SolverReport::closed_form(&format!("closed_form_{name}"));
+            if evaluations > 0 {
+                report.iterations = evaluations;
+                report.iterations_unit = IterationUnit::Evaluations;
+                report.stop_reason = StopReason::Converged;
             }
-            .into(),
-            fidelity: level,
-            grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
-            iterations: point.sweeps,
-            iterations_unit: IterationUnit::Sweeps,
-            evaluations: None,
-            stop_reason: StopReason::Converged,
-            residual: point.residual,
-            error_estimate: point.error_estimate,
-            elapsed_ms: 0.0,
-        },
+            report
+        }
+        Method::Numerical { level, mesh, .. } => {
+            let mut report = point
+                .solve
+                .clone()
+                .expect("a numerical point carries its film solves' report")
+                .at(level)
+                .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
+                .with_error_estimate(point.error_estimate);
+            report.evaluations = (evaluations > 0).then_some(evaluations);
+            report
+        }
     }
 }

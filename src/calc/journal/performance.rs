@@ -5,9 +5,10 @@ use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
 use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
-use crate::calc::CalcError;
-use crate::fidelity::Level;
-use crate::numerics::reynolds::{SolveError, Stopping};
+use crate::calc::{Budget, CalcError};
+use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
+use crate::numerics::driver::{Driver, Verdict};
+use crate::numerics::reynolds::Stopping;
 use crate::numerics::richardson;
 use crate::numerics::roots::{self, brent, RootError};
 
@@ -105,14 +106,14 @@ pub fn positioned_film(
     mesh: Mesh,
     stop: Stopping,
     warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(Film, FilmSolution, Vec<f64>), CalcError> {
     let base = Film {
         physics: model,
         ..Film::steady(eps, l_over_d)
     };
     if !placed(&model) {
-        let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
+        let (f, p) = film::solve(base, mesh, stop, warm, budget)?;
         return Ok((base, f, p));
     }
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
@@ -145,7 +146,7 @@ pub fn positioned_film(
             failure.get_or_insert(touching(eps));
             return f64::NAN;
         }
-        match film::solve(film, mesh, stop, warm.take(), keep_going) {
+        match film::solve(film, mesh, stop, warm.take(), budget) {
             Ok((f, p)) => {
                 warm = Some(p);
                 // The load is −F; its signed angle from the load line's direction.
@@ -154,7 +155,7 @@ pub fn positioned_film(
                 (wa * db - wb * da).atan2(wa * da + wb * db)
             }
             Err(e) => {
-                failure.get_or_insert(solve_error(e));
+                failure.get_or_insert(e.into());
                 f64::NAN
             }
         }
@@ -172,12 +173,8 @@ pub fn positioned_film(
     }
     let phi = match root {
         Ok(r) => r.x,
-        Err(RootError::NotConverged { iterations, width }) => {
-            return Err(CalcError::NotConverged {
-                method: "brent_attitude",
-                iterations,
-                residual: width,
-            })
+        Err(e @ RootError::NotConverged { .. }) => {
+            return Err(CalcError::from_root("brent_attitude", e))
         }
         Err(_) => {
             // Not "/misalignment": that pointer means the journal touches.
@@ -185,7 +182,7 @@ pub fn positioned_film(
         }
     };
     let film = place(phi);
-    let (f, p) = film::solve(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
+    let (f, p) = film::solve(film, mesh, stop, warm, budget)?;
     // Brent can also settle on the ±180° jump of the angle: only a force on the load line counts.
     let (wa, wb) = (-f.load_radial, f.load_tangential);
     let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
@@ -267,10 +264,9 @@ pub struct Point {
     /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
     pub midplane_content: Option<Vec<f64>>,
     pub cavitated_fraction: Option<f64>,
-    /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
-    /// estimate of S, the mesh.
-    pub sweeps: u32,
-    pub residual: Option<f64>,
+    /// Numerical work: the film solves' report (the sweeps of the fine and the coarse mesh,
+    /// the fine field's equation residual), the relative error estimate of S, the mesh.
+    pub solve: Option<SolverReport>,
     pub error_estimate: Option<f64>,
     pub mesh: Option<Mesh>,
 }
@@ -282,22 +278,6 @@ pub struct Point {
 pub fn friction_parameter(f: &FilmSolution) -> f64 {
     let load = f.load_radial.hypot(f.load_tangential);
     0.5 * f.pressure_shear / load + PI * f.sommerfeld_number() * f.couette_shear
-}
-
-pub fn solve_error(e: SolveError) -> CalcError {
-    match e {
-        SolveError::Cancelled => CalcError::DeadlineExceeded,
-        SolveError::NotConverged { sweeps, change } => CalcError::NotConverged {
-            method: "finite_volume_psor",
-            iterations: sweeps,
-            residual: change,
-        },
-        SolveError::Diverged { sweeps } => CalcError::NotConverged {
-            method: "finite_volume_psor",
-            iterations: sweeps,
-            residual: f64::INFINITY,
-        },
-    }
 }
 
 /// A vector of the film frame (towards h_max, 90° ahead) in the load frame: x along the load
@@ -328,8 +308,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         midplane_content: f.midplane_content.clone(),
         moment_nd: physics.misalignment.map(|_| load_frame(f, f.moment)),
         cavitated_fraction: f.cavitated_fraction,
-        sweeps: f.solved.sweeps,
-        residual: Some(f.solved.residual),
+        solve: Some(f.solved.report.clone()),
         error_estimate: None,
         mesh: None,
     }
@@ -341,9 +320,9 @@ pub fn at_eccentricity(
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Point, CalcError> {
-    at_eccentricity_from(eps, l_over_d, method, physics, None, keep_going)
+    at_eccentricity_from(eps, l_over_d, method, physics, None, budget)
 }
 
 /// As [`at_eccentricity`], the fine solve starting from `warm` (a field on the method's mesh).
@@ -353,7 +332,7 @@ fn at_eccentricity_from(
     method: Method,
     physics: FilmModel,
     warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Point, CalcError> {
     match method {
         Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, physics.cavitation)),
@@ -370,16 +349,15 @@ fn at_eccentricity_from(
                         physics,
                         ..Film::steady(eps, l_over_d)
                     };
-                    let (fine, coarse, _) = film::solve_nested(film, mesh, stop, warm, keep_going)
-                        .map_err(solve_error)?;
+                    let (fine, coarse, _) = film::solve_nested(film, mesh, stop, warm, budget)?;
                     (fine, coarse)
                 }
                 true => {
                     let half = mesh.coarse();
                     let (_, coarse, _) =
-                        positioned_film(eps, l_over_d, physics, half, stop, None, keep_going)?;
+                        positioned_film(eps, l_over_d, physics, half, stop, None, budget)?;
                     let (_, fine, _) =
-                        positioned_film(eps, l_over_d, physics, mesh, stop, warm, keep_going)?;
+                        positioned_film(eps, l_over_d, physics, mesh, stop, warm, budget)?;
                     (fine, coarse)
                 }
             };
@@ -412,7 +390,7 @@ fn at_eccentricity_from(
                     ..from_film(eps, &film, physics)
                 };
             }
-            point.sweeps = fine.solved.sweeps + coarse.solved.sweeps;
+            point.solve = Some(fine.solved.clone().after(&coarse.solved).report);
             point.mesh = Some(mesh);
             Ok(point)
         }
@@ -454,8 +432,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         midplane_content: None,
         cavitated_fraction: None,
         moment_nd: None,
-        sweeps: 0,
-        residual: None,
+        solve: None,
         error_estimate: None,
         mesh: None,
     }
@@ -473,7 +450,7 @@ pub fn equilibrium(
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(Point, u32), CalcError> {
     let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
     let mut evaluations = 0u32;
@@ -501,20 +478,20 @@ pub fn equilibrium(
     let u = match coarse {
         // Near the ends of the bracket the two meshes may disagree on whether a root exists:
         // the fine mesh decides.
-        Some(coarse) => match searcher.bracketed(coarse, bracket, 1e-5, keep_going) {
-            Ok(u) => searcher.polish(method, u, bracket, keep_going)?,
+        Some(coarse) => match searcher.bracketed(coarse, bracket, 1e-5, budget) {
+            Ok(u) => searcher.polish(method, u, bracket, budget)?,
             Err(CalcError::Impossible { .. }) => {
-                searcher.bracketed(method, bracket, 1e-10, keep_going)?
+                searcher.bracketed(method, bracket, 1e-10, budget)?
             }
             Err(e) => return Err(e),
         },
-        None => searcher.bracketed(method, bracket, 1e-10, keep_going)?,
+        None => searcher.bracketed(method, bracket, 1e-10, budget)?,
     };
     let warm = searcher.warm.take().and_then(|(m, p)| match method {
         Method::Numerical { mesh, .. } if mesh == m => Some(p),
         _ => None,
     });
-    let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, keep_going)?;
+    let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, budget)?;
     // A root at the edge where a misaligned journal starts to touch carries less than asked.
     if physics.misalignment.is_some() && (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
         return Err(CalcError::impossible(
@@ -544,12 +521,7 @@ struct Searcher<'a> {
 }
 
 impl Searcher<'_> {
-    fn residual(
-        &mut self,
-        method: Method,
-        u: f64,
-        keep_going: &mut dyn FnMut() -> bool,
-    ) -> Result<f64, CalcError> {
+    fn residual(&mut self, method: Method, u: f64, budget: &Budget) -> Result<f64, CalcError> {
         *self.evaluations += 1;
         let eps = to_eps(u);
         let s = match method {
@@ -559,20 +531,11 @@ impl Searcher<'_> {
             Method::Numerical {
                 richardson: true, ..
             } => {
-                at_eccentricity(eps, self.l_over_d, method, self.physics, keep_going)?
-                    .sommerfeld_number
+                at_eccentricity(eps, self.l_over_d, method, self.physics, budget)?.sommerfeld_number
             }
             Method::Numerical { mesh, stop, .. } => {
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
-                match positioned_film(
-                    eps,
-                    self.l_over_d,
-                    self.physics,
-                    mesh,
-                    stop,
-                    start,
-                    keep_going,
-                ) {
+                match positioned_film(eps, self.l_over_d, self.physics, mesh, stop, start, budget) {
                     Ok((_, f, p)) => {
                         self.warm = Some((mesh, p));
                         f.sommerfeld_number()
@@ -598,12 +561,12 @@ impl Searcher<'_> {
         method: Method,
         (lo, hi): (f64, f64),
         x_tolerance: f64,
-        keep_going: &mut dyn FnMut() -> bool,
+        budget: &Budget,
     ) -> Result<f64, CalcError> {
         let mut failure = None;
         let s_target = self.s_target;
         let root = brent(
-            |u| match self.residual(method, u, keep_going) {
+            |u| match self.residual(method, u, budget) {
                 Ok(r) => r,
                 Err(e) => {
                     failure.get_or_insert(e);
@@ -631,14 +594,7 @@ impl Searcher<'_> {
                 };
                 Err(CalcError::impossible("/load_n", message))
             }
-            Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
-                method: "brent_equilibrium",
-                iterations,
-                residual: width,
-            }),
-            Err(RootError::NonFinite { .. }) => Err(CalcError::Internal(
-                "equilibrium: non-finite Sommerfeld number".into(),
-            )),
+            Err(e) => Err(CalcError::from_root("brent_equilibrium", e)),
         }
     }
 
@@ -649,37 +605,61 @@ impl Searcher<'_> {
         method: Method,
         u0: f64,
         bracket: (f64, f64),
-        keep_going: &mut dyn FnMut() -> bool,
+        budget: &Budget,
     ) -> Result<f64, CalcError> {
-        let (mut ua, mut fa) = (u0, self.residual(method, u0, keep_going)?);
+        let (mut ua, mut fa) = (u0, self.residual(method, u0, budget)?);
         if fa.abs() < 1e-10 {
             return Ok(ua);
         }
         // ln S falls with u at roughly the coarse slope; a small first step finds the fine one.
         let mut ub = (u0 + if fa > 0.0 { 1e-3 } else { -1e-3 }).clamp(bracket.0, bracket.1);
-        let mut fb = self.residual(method, ub, keep_going)?;
-        for _ in 0..12 {
+        let mut fb = self.residual(method, ub, budget)?;
+        // One iteration: one secant step and its film solve. A slope that is not a falling
+        // one stalls the steps; the root is then judged below.
+        let mut failure = None;
+        let run = Driver::new(
+            "secant_equilibrium",
+            IterationUnit::RootSearchSteps,
+            12,
+            budget,
+        )
+        .run(|_| {
             if fb.abs() < 1e-10 {
-                return Ok(ub);
+                return Verdict::Converged(ub, fb.abs());
             }
             let slope = (fb - fa) / (ub - ua);
             if !(slope.is_finite() && slope < 0.0) {
-                break;
+                return Verdict::Stalled(fb.abs());
             }
             let next = (ub - fb / slope).clamp(bracket.0, bracket.1);
             (ua, fa) = (ub, fb);
             ub = next;
-            fb = self.residual(method, ub, keep_going)?;
+            fb = match self.residual(method, ub, budget) {
+                Ok(r) => r,
+                Err(e) => {
+                    failure = Some(e);
+                    return Verdict::Diverged(f64::NAN);
+                }
+            };
             if (ub - ua).abs() < 1e-9 {
-                return Ok(ub);
+                return Verdict::Converged(ub, (ub - ua).abs());
             }
+            Verdict::Continue(fb.abs())
+        });
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        match run {
+            Ok(root) => return Ok(root.value),
+            Err(stopped) if stopped.reason() == StopReason::Deadline => return Err(stopped.into()),
+            Err(_) => {}
         }
         // The solver's own tolerance bounds how small the residual gets: accept a root good
         // to 1e-7 in ln S (the load to 1e-7), else search the whole bracket on this mesh.
         if fb.abs() < 1e-7 {
             return Ok(ub);
         }
-        self.bracketed(method, bracket, 1e-10, keep_going)
+        self.bracketed(method, bracket, 1e-10, budget)
     }
 }
 
@@ -693,7 +673,7 @@ mod tests {
     fn equilibrium_is_cheap_and_exact() {
         let m = Method::numerical(Level::Standard, None, None);
         for s in [0.0447, 0.5, 0.005, 20.0] {
-            let (p, n) = equilibrium(s, 1.0, m, FilmModel::REYNOLDS, &mut || true).unwrap();
+            let (p, n) = equilibrium(s, 1.0, m, FilmModel::REYNOLDS, &Budget::unlimited()).unwrap();
             assert!(
                 (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
                 "S {s}: {}",

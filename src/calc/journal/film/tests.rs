@@ -32,12 +32,19 @@ fn fed_at_max_film_it_carries_the_reynolds_load_and_conserves_mass() {
     };
     for ld in [0.5, 1.0] {
         for eps in [0.2, 0.6, 0.9] {
-            let (r, _) = solve(Film::steady(eps, ld), mesh, STOP, None, &mut || true).unwrap();
+            let (r, _) = solve(
+                Film::steady(eps, ld),
+                mesh,
+                STOP,
+                None,
+                &Budget::unlimited(),
+            )
+            .unwrap();
             let film = Film {
                 physics: jfo(FeedLine::MaxFilm),
                 ..Film::steady(eps, ld)
             };
-            let (j, _) = solve(film, mesh, STOP, None, &mut || true).unwrap();
+            let (j, _) = solve(film, mesh, STOP, None, &Budget::unlimited()).unwrap();
             let ratio = j.sommerfeld_number() / r.sommerfeld_number();
             assert!((ratio - 1.0).abs() < 0.02, "L/D {ld} ε {eps}: {ratio}");
             let dphi = (j.attitude_angle() - r.attitude_angle()).to_degrees();
@@ -66,7 +73,14 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
         axial_half: 12,
     };
     for (eps, least) in [(0.05, 1.10), (0.3, 1.02)] {
-        let (r, _) = solve(Film::steady(eps, 1.0), mesh, STOP, None, &mut || true).unwrap();
+        let (r, _) = solve(
+            Film::steady(eps, 1.0),
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         let (film, j, _) = positioned_film(
             eps,
             1.0,
@@ -74,7 +88,7 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
             mesh,
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap();
         let ratio = j.sommerfeld_number() / r.sommerfeld_number();
@@ -116,7 +130,7 @@ fn the_reformation_case_converges_under_refinement() {
             },
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap()
         .1
@@ -132,7 +146,7 @@ fn the_reformation_case_converges_under_refinement() {
             axial_half: m,
         };
         let model = ported(FeedLine::OppositeLoad, 0.5, 0.25, 1.0);
-        let f = positioned_film(0.5, 1.0, model, mesh, STOP, None, &mut || true)
+        let f = positioned_film(0.5, 1.0, model, mesh, STOP, None, &Budget::unlimited())
             .unwrap()
             .1;
         (f.sommerfeld_number(), f.inlet_flow_nd)
@@ -164,18 +178,20 @@ fn finite_from_light_to_heavy_load() {
                 ported(FeedLine::TwoGrooves, 0.8, 0.3, 2.0),
             ] {
                 let feed = model.mass_conserving;
-                let j = match positioned_film(eps, ld, model, mesh, STOP, None, &mut || true) {
-                    Ok((_, j, _)) => j,
-                    // At light load a port's supply pressure may outweigh the film.
-                    Err(CalcError::Impossible { pointer, .. })
-                        if model.port().is_some()
-                            && eps < 0.5
-                            && pointer == crate::calc::journal::performance::SUPPLY_DOMINATES =>
-                    {
-                        continue
-                    }
-                    Err(e) => panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"),
-                };
+                let j =
+                    match positioned_film(eps, ld, model, mesh, STOP, None, &Budget::unlimited()) {
+                        Ok((_, j, _)) => j,
+                        // At light load a port's supply pressure may outweigh the film.
+                        Err(CalcError::Impossible { pointer, .. })
+                            if model.port().is_some()
+                                && eps < 0.5
+                                && pointer
+                                    == crate::calc::journal::performance::SUPPLY_DOMINATES =>
+                        {
+                            continue
+                        }
+                        Err(e) => panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"),
+                    };
                 let s = j.sommerfeld_number();
                 assert!(s.is_finite() && s > 0.0, "L/D {ld} ε {eps} {feed:?}");
                 for v in [
@@ -238,11 +254,18 @@ fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
         axial_half: 12,
     };
     let s = |model: FilmModel| {
-        let (_, f, _) = positioned_film(0.7, 1.0, model, mesh, STOP, None, &mut || true)
+        let (_, f, _) = positioned_film(0.7, 1.0, model, mesh, STOP, None, &Budget::unlimited())
             .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
         f
     };
-    let (r, _) = solve(Film::steady(0.7, 1.0), mesh, STOP, None, &mut || true).unwrap();
+    let (r, _) = solve(
+        Film::steady(0.7, 1.0),
+        mesh,
+        STOP,
+        None,
+        &Budget::unlimited(),
+    )
+    .unwrap();
     let line = s(ported(FeedLine::MaxFilm, 1.0, 0.0, 0.0));
     assert!((line.sommerfeld_number() / r.sommerfeld_number() - 1.0).abs() < 1e-3);
     let hole = s(ported(FeedLine::OppositeLoad, 0.2, 0.2, 0.5));
@@ -280,7 +303,7 @@ fn more_supply_pressure_floods_more_of_the_film() {
             mesh,
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap();
         if let Some(prev) = &last {

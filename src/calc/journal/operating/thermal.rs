@@ -96,11 +96,9 @@ pub(super) fn effective_temperature(
         Ok(r) => case
             .operate(r.x, budget)
             .or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
-        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
-            method: "brent_effective_temperature",
-            iterations,
-            residual: width,
-        }),
+        Err(e @ RootError::NotConverged { .. }) => {
+            Err(CalcError::from_root("brent_effective_temperature", e))
+        }
         Err(e) => Err(CalcError::impossible(
             "/inlet_temperature_c",
             format!(
