@@ -8,6 +8,7 @@ use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 use crate::numerics::driver::{Driver, Verdict};
+use crate::numerics::refine::{refine, Judgement, Pair, RefineError, Refined};
 use crate::numerics::reynolds::Stopping;
 use crate::numerics::richardson;
 use crate::numerics::roots::{self, brent, RootError};
@@ -342,31 +343,54 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
+            // The pair: the mesh with half the cells each way, then the method's mesh, started
+            // from `warm` or (an unplaced film) from the coarse field; one rung of refinement,
+            // whose estimate is reported, not acted on (the tolerance is not tested).
             let load_fixed = placed(&physics);
-            let (fine, coarse) = match load_fixed {
-                false => {
-                    let film = Film {
-                        physics,
-                        ..Film::steady(eps, l_over_d)
-                    };
-                    let (fine, coarse, _) = film::solve_nested(film, mesh, stop, warm, budget)?;
-                    (fine, coarse)
-                }
-                true => {
-                    let half = mesh.coarse();
-                    let (_, coarse, _) =
-                        positioned_film(eps, l_over_d, physics, half, stop, None, budget)?;
-                    let (_, fine, _) =
-                        positioned_film(eps, l_over_d, physics, mesh, stop, warm, budget)?;
-                    (fine, coarse)
+            let film = Film {
+                physics,
+                ..Film::steady(eps, l_over_d)
+            };
+            let solve_on = |m: Mesh, start: Option<Vec<f64>>| {
+                if load_fixed {
+                    positioned_film(eps, l_over_d, physics, m, stop, start, budget)
+                        .map(|(_, f, p)| (f, p))
+                } else {
+                    film::solve(film, m, stop, start, budget).map_err(CalcError::from)
                 }
             };
-            let mut point = from_film(eps, &fine, physics);
-            let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+            let half = mesh.coarse();
+            let mut warm = warm;
             // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
             // when the coarse mesh halves both spacings.
             let r = mesh.refinement_ratio();
-            point.error_estimate = Some(((sf - sc) / (r * r - 1.0) / sf).abs());
+            let refined = refine(
+                half,
+                solve_on(half, None)?,
+                f64::INFINITY,
+                |m| (m == half).then_some(mesh),
+                |m, (_, coarse_field): &(FilmSolution, Vec<f64>)| {
+                    let start = warm.take().or_else(|| {
+                        (!load_fixed).then(|| film::prolonged(&film, half, coarse_field, m))
+                    });
+                    solve_on(m, start)
+                },
+                |(coarse, _), (fine, _)| {
+                    let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+                    Judgement::Resolved(((sf - sc) / (r * r - 1.0) / sf).abs())
+                },
+            );
+            let (Pair { coarse, fine, .. }, error) = match refined {
+                Ok(Refined::Converged { pair, error } | Refined::GridLimited { pair, error }) => {
+                    (pair, error)
+                }
+                Ok(Refined::FellBack { failure, .. })
+                | Err(RefineError::Failed { failure, .. }) => return Err(failure),
+                Err(e) => return Err(CalcError::Internal(format!("mesh pair: {e:?}"))),
+            };
+            let (coarse, fine) = (coarse.0, fine.0);
+            let mut point = from_film(eps, &fine, physics);
+            point.error_estimate = Some(error);
             // Richardson's extrapolation needs the same ratio both ways: only exact halvings
             // (the `high` mesh is one) are extrapolated.
             debug_assert!(!richardson || mesh.halves_exactly(), "{mesh:?}");
