@@ -66,7 +66,8 @@ pub struct Case {
     pub feed: Option<Feed>,
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
-    /// The journal's tilt; None when aligned.
+    /// The journal's tilt the request gives; None when aligned. Whether it applies is the
+    /// misalignment effect's mode ([`Case::tilt`]).
     pub misalignment: Option<Misalignment>,
     pub rotor_mass_kg: Option<f64>,
     /// Shaft stiffness in series with the film, N/m (None: rigid).
@@ -106,13 +107,15 @@ impl Cavitation {
     }
 }
 
-/// The effect modes the plain bearing understands (misalignment is decided from the geometry).
+/// The effect modes the plain bearing understands.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Effects {
     pub thermal: Mode,
     pub cavitation: Cavitation,
     pub turbulence: Mode,
     pub inertia: Mode,
+    /// Applies the request's misalignment (auto, on) or not (off).
+    pub misalignment: Mode,
 }
 
 /// What the model says beside its numbers, in the order it said it: the decision on each effect
@@ -157,6 +160,12 @@ impl Case {
     }
     fn cavitation(&self) -> bool {
         self.effects.cavitation != Cavitation::Off
+    }
+
+    /// The misalignment the film is solved with: the request's, unless the effect is off.
+    fn tilt(&self) -> Option<Misalignment> {
+        self.misalignment
+            .filter(|_| self.effects.misalignment != Mode::Off)
     }
 
     /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
@@ -250,7 +259,7 @@ impl Case {
             cavitation: self.cavitation(),
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
-            misalignment: self.misalignment,
+            misalignment: self.tilt(),
             mass_conserving: self.supply(t),
         }
     }
@@ -587,7 +596,7 @@ fn outputs(
                 direction: dir,
                 from_line_of_centres: from_centres,
                 ..
-            } = case.misalignment.unwrap_or_default();
+            } = case.tilt().unwrap_or_default();
             let towards = if from_centres {
                 // From the line of centres (h_min lies φ ahead of the load line).
                 dir + point.attitude_angle

@@ -112,6 +112,12 @@ pub struct JournalEffects {
     /// Fluid inertia: reported from the reduced Reynolds number Re·C/R against 1; not modelled.
     #[serde(default)]
     pub inertia: Mode,
+    /// Journal misalignment (Khonsari & Booser Eq. 8.70: the whole-length film of a tilted
+    /// journal). `auto` and `on` apply the request's `misalignment` when it gives one (the
+    /// journal is aligned otherwise); `off` solves the aligned journal whatever `misalignment`
+    /// gives.
+    #[serde(default)]
+    pub misalignment: Mode,
 }
 
 impl From<JournalEffects> for Effects {
@@ -121,6 +127,7 @@ impl From<JournalEffects> for Effects {
             cavitation: e.cavitation.into(),
             turbulence: e.turbulence,
             inertia: e.inertia,
+            misalignment: e.misalignment,
         }
     }
 }
@@ -332,7 +339,9 @@ impl Validate for PlainInput {
                         format!("the ends of the journal move {tilt:.3} C apart: it would touch the bearing even when centred"),
                     ));
                 }
-                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm)) {
+                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
+                    && self.effects.misalignment != Mode::Off
+                {
                     errors.push(FieldError::new(
                         "/misalignment",
                         "the closed forms are for an aligned journal; use a numerical fidelity",
@@ -346,6 +355,7 @@ impl Validate for PlainInput {
             }
         };
         if misalignment.is_some()
+            && self.effects.misalignment != Mode::Off
             && self
                 .feed
                 .is_some_and(|f| f.kind == super::feed::FeedKind::CircumferentialGroove)

@@ -159,17 +159,22 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
     notes.decide("cavitation", cavitation);
 }
 
-/// Misalignment: applied when the request tilts the journal.
+/// Misalignment: applied when the request tilts the journal and the effect is not off.
 pub(super) fn decide_misalignment(notes: &mut Notes, case: &Case) {
+    let mode = case.effects.misalignment;
     notes.decide(
         "misalignment",
-        match case.misalignment {
-            None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
-            Some(Misalignment {
+        match (case.misalignment, mode) {
+            (None, _) => Decision::not_applicable(mode, "the request gives no misalignment: journal aligned"),
+            (Some(Misalignment { tilt: e, .. }), Mode::Off) => Decision::not_applicable(
+                mode,
+                format!("requested off: the misalignment given (ε′ = {e:.4} of the clearance) is not applied; journal aligned"),
+            ),
+            (Some(Misalignment {
                 tilt: e,
                 direction: dir,
                 from_line_of_centres: from_centres,
-            }) => Decision {
+            }), Mode::Auto | Mode::On) => Decision {
                 applied: true,
                 mode: Mode::On,
                 reason: format!(
