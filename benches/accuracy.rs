@@ -9,6 +9,7 @@ use std::fmt::Write;
 use std::time::Instant;
 
 use serde_json::Value;
+use stribeck::calc::journal::eccentricity::EccentricityRatio;
 use stribeck::calc::journal::film::{FilmModel, Mesh};
 use stribeck::calc::journal::performance::{self, Approximation, Method};
 use stribeck::calc::Budget;
@@ -29,6 +30,11 @@ const CASES: [(f64, f64); 12] = [
     (2.0, 0.8),
     (2.0, 0.9),
 ];
+
+/// ε of a case (all inside the clearance).
+fn ratio(eps: f64) -> EccentricityRatio {
+    EccentricityRatio::new(eps).expect("0 ≤ ε < 1")
+}
 
 fn median_ms(mut f: impl FnMut()) -> f64 {
     let mut times: Vec<f64> = (0..9)
@@ -215,7 +221,7 @@ fn main() {
         .iter()
         .map(|&(ld, eps)| {
             performance::at_eccentricity(
-                eps,
+                ratio(eps),
                 ld,
                 converged,
                 FilmModel::REYNOLDS,
@@ -268,7 +274,7 @@ fn main() {
                 m => m,
             };
             let p = performance::at_eccentricity(
-                eps,
+                ratio(eps),
                 ld,
                 method,
                 FilmModel::REYNOLDS,
@@ -281,7 +287,7 @@ fn main() {
             times.push(median_ms(|| {
                 std::hint::black_box(
                     performance::at_eccentricity(
-                        eps,
+                        ratio(eps),
                         ld,
                         method,
                         FilmModel::REYNOLDS,

@@ -16,6 +16,7 @@
 
 use std::f64::consts::PI;
 
+use super::eccentricity::EccentricityRatio;
 use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
 use super::performance::positioned_film;
 use crate::calc::{Budget, CalcError};
@@ -37,7 +38,7 @@ fn force(f: &FilmSolution) -> [f64; 2] {
 
 /// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film.
 pub fn perturbation(
-    eps: f64,
+    eccentricity: EccentricityRatio,
     l_over_d: f64,
     physics: FilmModel,
     mesh: Mesh,
@@ -45,7 +46,8 @@ pub fn perturbation(
     budget: &Budget,
 ) -> Result<Coefficients, CalcError> {
     let (base, equilibrium, field) =
-        positioned_film(eps, l_over_d, physics, mesh, stop, None, budget)?;
+        positioned_film(eccentricity, l_over_d, physics, mesh, stop, None, budget)?;
+    let eps = eccentricity.get();
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
@@ -175,7 +177,7 @@ mod tests {
     fn short_bearing_limit() {
         for eps in [0.3, 0.5, 0.7] {
             let num = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 0.125,
                 FilmModel::REYNOLDS,
                 Mesh {
@@ -216,7 +218,7 @@ mod tests {
             axial_half: 12,
         };
         let light = perturbation(
-            0.2,
+            EccentricityRatio::new(0.2).unwrap(),
             1.0,
             FilmModel::REYNOLDS,
             mesh,
@@ -234,7 +236,7 @@ mod tests {
             "half-frequency whirl, got {gamma}"
         );
         let heavy = perturbation(
-            0.9,
+            EccentricityRatio::new(0.9).unwrap(),
             1.0,
             FilmModel::REYNOLDS,
             mesh,
@@ -259,7 +261,7 @@ mod tests {
         };
         for eps in [0.3, 0.7] {
             let reynolds = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 1.0,
                 FilmModel::REYNOLDS,
                 mesh,
@@ -272,7 +274,7 @@ mod tests {
                 ..FilmModel::REYNOLDS
             };
             let flooded = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 1.0,
                 jfo(FeedLine::MaxFilm),
                 mesh,
@@ -297,7 +299,7 @@ mod tests {
                 );
             }
             let top = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 1.0,
                 jfo(FeedLine::OppositeLoad),
                 mesh,

@@ -1,6 +1,7 @@
 //! Oil feed: pressure-fed flow through a hole or axial grooves and the total flow the bearing
 //! draws, by Martin's model (Khonsari & Booser §8.13, Eq. 8.48–8.60, Table 8.8).
 
+use super::eccentricity::EccentricityRatio;
 use std::f64::consts::PI;
 
 use serde::Deserialize;
@@ -220,7 +221,7 @@ pub struct FlowPoint {
     pub clearance_m: f64,
     /// Viscosity at the supply temperature, Pa·s.
     pub mu_inlet: f64,
-    pub eps: f64,
+    pub eps: EccentricityRatio,
     /// Attitude angle, rad.
     pub attitude: f64,
 }
@@ -236,6 +237,7 @@ pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
         eps,
         attitude,
     } = at;
+    let eps = eps.get();
     let c3 = clearance_m.powi(3);
     // Film thickness at the feed, cubed: (h_g/C)³ (Eq. 8.55–8.57).
     let at_load_opposite = (1.0 + eps * attitude.cos()).powi(3);
@@ -370,7 +372,7 @@ mod tests {
                 l_over_d: l / d,
                 clearance_m: d / 1600.0,
                 mu_inlet: 0.03,
-                eps: 0.45,
+                eps: EccentricityRatio::new(0.45).unwrap(),
                 attitude: 59.14f64.to_radians(),
             },
         );
@@ -404,7 +406,7 @@ mod tests {
             l_over_d: 1.0,
             clearance_m: 1e-4,
             mu_inlet: 0.02,
-            eps: 0.5,
+            eps: EccentricityRatio::new(0.5).unwrap(),
             attitude: 0.9,
         };
         let (a, b) = (flows(feed(1e5), at), flows(feed(3e5), at));
@@ -428,7 +430,7 @@ mod tests {
             l_over_d: 1.0,
             clearance_m: 1e-4,
             mu_inlet: 0.02,
-            eps,
+            eps: EccentricityRatio::new(eps).unwrap(),
             attitude: phi,
         };
         let f_g = (1.25 - 0.25 * 0.8) / (3.0 * (1.0f64 / 0.8 - 1.0).cbrt()) + 0.1 / (3.0 * 0.2);

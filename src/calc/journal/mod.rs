@@ -5,10 +5,12 @@
 //! - `performance`: dimensionless performance at ε by closed form or numerics, equilibrium;
 //! - `film`: the numerical film (finite-volume Reynolds with cavitation);
 //! - `closed_form`: infinitely short and long bearings;
+//! - `eccentricity`: the eccentricity ratio ε, checked once;
 //! - `dynamics`: stiffness, damping and the whirl threshold.
 
 pub mod closed_form;
 pub mod dynamics;
+pub mod eccentricity;
 pub mod feed;
 pub mod film;
 pub mod operating;

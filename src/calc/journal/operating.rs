@@ -14,6 +14,7 @@ pub use solution::{
 };
 
 use super::dynamics::Coefficients;
+use super::eccentricity::EccentricityRatio;
 use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
 use super::performance::{self, Method, Point};
@@ -52,7 +53,7 @@ impl Geometry {
 #[derive(Debug, Clone, Copy)]
 pub enum Given {
     Load(f64),
-    Eccentricity(f64),
+    Eccentricity(EccentricityRatio),
 }
 
 /// The validated plain-bearing case.

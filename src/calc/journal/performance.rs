@@ -4,6 +4,7 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
+use super::eccentricity::EccentricityRatio;
 use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
@@ -101,7 +102,7 @@ impl Method {
 /// attitude φ where the film force lies along the load (Stachowiak & Batchelor's attitude
 /// iteration in PARTIAL, here a bracketed root of the angle between the force and the load).
 pub fn positioned_film(
-    eps: f64,
+    eccentricity: EccentricityRatio,
     l_over_d: f64,
     model: FilmModel,
     mesh: Mesh,
@@ -109,6 +110,7 @@ pub fn positioned_film(
     warm: Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<(Film, FilmSolution, Vec<f64>), CalcError> {
+    let eps = eccentricity.get();
     let base = Film {
         physics: model,
         ..Film::steady(eps, l_over_d)
@@ -246,7 +248,7 @@ fn touching(eps: f64) -> CalcError {
 /// One operating point, dimensionless (Table 8.6 conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Point {
-    pub eccentricity_ratio: f64,
+    pub eccentricity_ratio: EccentricityRatio,
     pub sommerfeld_number: f64,
     pub attitude_angle: f64,
     pub friction_parameter: f64,
@@ -291,7 +293,7 @@ pub fn load_frame(f: &FilmSolution, v: [f64; 2]) -> [f64; 2] {
     [v[0] * x[0] + v[1] * x[1], v[0] * y[0] + v[1] * y[1]]
 }
 
-fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
+fn from_film(eps: EccentricityRatio, f: &FilmSolution, physics: FilmModel) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
     Point {
@@ -317,7 +319,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
 
 /// Performance at eccentricity ratio `eps` for L/D = `l_over_d`.
 pub fn at_eccentricity(
-    eps: f64,
+    eps: EccentricityRatio,
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
@@ -328,7 +330,7 @@ pub fn at_eccentricity(
 
 /// As [`at_eccentricity`], the fine solve starting from `warm` (a field on the method's mesh).
 fn at_eccentricity_from(
-    eps: f64,
+    eps: EccentricityRatio,
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
@@ -349,7 +351,7 @@ fn at_eccentricity_from(
             let load_fixed = placed(&physics);
             let film = Film {
                 physics,
-                ..Film::steady(eps, l_over_d)
+                ..Film::steady(eps.get(), l_over_d)
             };
             let solve_on = |m: Mesh, start: Option<Vec<f64>>| {
                 if load_fixed {
@@ -421,7 +423,13 @@ fn at_eccentricity_from(
     }
 }
 
-fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> Point {
+fn closed(
+    eccentricity: EccentricityRatio,
+    l_over_d: f64,
+    approx: Approximation,
+    cavitation: bool,
+) -> Point {
+    let eps = eccentricity.get();
     let p = match approx {
         Approximation::Long => closed_form::long_bearing(
             eps,
@@ -442,7 +450,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         }
     };
     Point {
-        eccentricity_ratio: eps,
+        eccentricity_ratio: eccentricity,
         sommerfeld_number: p.sommerfeld_number,
         attitude_angle: p.attitude_angle_rad,
         friction_parameter: p.friction_parameter,
@@ -515,7 +523,7 @@ pub fn equilibrium(
         Method::Numerical { mesh, .. } if mesh == m => Some(p),
         _ => None,
     });
-    let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, budget)?;
+    let point = at_eccentricity_from(to_eps(u)?, l_over_d, method, physics, warm, budget)?;
     // A root at the edge where a misaligned journal starts to touch carries less than asked.
     if physics.misalignment.is_some() && (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
         return Err(CalcError::impossible(
@@ -526,8 +534,10 @@ pub fn equilibrium(
     Ok((point, evaluations))
 }
 
-fn to_eps(u: f64) -> f64 {
-    1.0 / (1.0 + (-u).exp())
+/// ε(u) = 1/(1 + e^−u), inside (0, 1) for every u of the search's bracket.
+fn to_eps(u: f64) -> Result<EccentricityRatio, CalcError> {
+    EccentricityRatio::new(1.0 / (1.0 + (-u).exp()))
+        .ok_or_else(|| CalcError::Internal(format!("equilibrium: no ε at u = {u}")))
 }
 
 fn to_u(eps: f64) -> f64 {
@@ -547,7 +557,7 @@ struct Searcher<'a> {
 impl Searcher<'_> {
     fn residual(&mut self, method: Method, u: f64, budget: &Budget) -> Result<f64, CalcError> {
         *self.evaluations += 1;
-        let eps = to_eps(u);
+        let eps = to_eps(u)?;
         let s = match method {
             Method::ClosedForm(approx) => {
                 closed(eps, self.l_over_d, approx, self.physics.cavitation).sommerfeld_number

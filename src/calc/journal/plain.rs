@@ -6,6 +6,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::eccentricity::EccentricityRatio;
 use super::feed::FeedSpec;
 use super::film::Misalignment;
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
@@ -240,7 +241,7 @@ impl Validate for PlainInput {
                 None
             }
             (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => {
-                Some(operating::Given::Eccentricity(eps))
+                EccentricityRatio::new(eps).map(operating::Given::Eccentricity)
             }
             (None, Some(eps)) => {
                 errors.push(FieldError::new(
@@ -694,7 +695,7 @@ impl From<Solution> for PlainOutput {
         PlainOutput {
             load_n: s.load_n,
             sommerfeld_number: s.sommerfeld_number,
-            eccentricity_ratio: s.eccentricity_ratio,
+            eccentricity_ratio: s.eccentricity_ratio.get(),
             attitude_angle_deg: s.attitude_angle.to_degrees(),
             min_film_thickness_m: s.min_film_thickness_m,
             max_pressure_pa: s.max_pressure_pa,

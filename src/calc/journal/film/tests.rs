@@ -1,4 +1,5 @@
 use super::*;
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::performance::positioned_film;
 use crate::calc::CalcError;
 
@@ -82,7 +83,7 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
         )
         .unwrap();
         let (film, j, _) = positioned_film(
-            eps,
+            EccentricityRatio::new(eps).unwrap(),
             1.0,
             jfo(FeedLine::OppositeLoad),
             mesh,
@@ -121,7 +122,7 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
 fn the_reformation_case_converges_under_refinement() {
     let s = |n: usize, m: usize| {
         positioned_film(
-            0.3,
+            EccentricityRatio::new(0.3).unwrap(),
             1.0,
             jfo(FeedLine::OppositeLoad),
             Mesh {
@@ -146,9 +147,17 @@ fn the_reformation_case_converges_under_refinement() {
             axial_half: m,
         };
         let model = ported(FeedLine::OppositeLoad, 0.5, 0.25, 1.0);
-        let f = positioned_film(0.5, 1.0, model, mesh, STOP, None, &Budget::unlimited())
-            .unwrap()
-            .1;
+        let f = positioned_film(
+            EccentricityRatio::new(0.5).unwrap(),
+            1.0,
+            model,
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap()
+        .1;
         (f.sommerfeld_number(), f.inlet_flow_nd)
     };
     // S settles within 0.1 % from 48 × 6 on (0.18402, 0.18393, 0.18393, 0.18404: the port's
@@ -178,20 +187,26 @@ fn finite_from_light_to_heavy_load() {
                 ported(FeedLine::TwoGrooves, 0.8, 0.3, 2.0),
             ] {
                 let feed = model.mass_conserving;
-                let j =
-                    match positioned_film(eps, ld, model, mesh, STOP, None, &Budget::unlimited()) {
-                        Ok((_, j, _)) => j,
-                        // At light load a port's supply pressure may outweigh the film.
-                        Err(CalcError::Impossible { pointer, .. })
-                            if model.port().is_some()
-                                && eps < 0.5
-                                && pointer
-                                    == crate::calc::journal::performance::SUPPLY_DOMINATES =>
-                        {
-                            continue
-                        }
-                        Err(e) => panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"),
-                    };
+                let j = match positioned_film(
+                    EccentricityRatio::new(eps).unwrap(),
+                    ld,
+                    model,
+                    mesh,
+                    STOP,
+                    None,
+                    &Budget::unlimited(),
+                ) {
+                    Ok((_, j, _)) => j,
+                    // At light load a port's supply pressure may outweigh the film.
+                    Err(CalcError::Impossible { pointer, .. })
+                        if model.port().is_some()
+                            && eps < 0.5
+                            && pointer == crate::calc::journal::performance::SUPPLY_DOMINATES =>
+                    {
+                        continue
+                    }
+                    Err(e) => panic!("L/D {ld} ε {eps} {feed:?}: {e:?}"),
+                };
                 let s = j.sommerfeld_number();
                 assert!(s.is_finite() && s > 0.0, "L/D {ld} ε {eps} {feed:?}");
                 for v in [
@@ -254,8 +269,16 @@ fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
         axial_half: 12,
     };
     let s = |model: FilmModel| {
-        let (_, f, _) = positioned_film(0.7, 1.0, model, mesh, STOP, None, &Budget::unlimited())
-            .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
+        let (_, f, _) = positioned_film(
+            EccentricityRatio::new(0.7).unwrap(),
+            1.0,
+            model,
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
         f
     };
     let (r, _) = solve(
@@ -297,7 +320,7 @@ fn more_supply_pressure_floods_more_of_the_film() {
     let mut last: Option<FilmSolution> = None;
     for p in [0.1, 1.0, 10.0] {
         let (_, f, _) = positioned_film(
-            0.5,
+            EccentricityRatio::new(0.5).unwrap(),
             1.0,
             ported(FeedLine::OppositeLoad, 0.2, 0.2, p),
             mesh,

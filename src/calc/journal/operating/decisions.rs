@@ -114,10 +114,11 @@ pub(super) fn validity_warnings(notes: &mut Notes, case: &Case, point: &Point) {
         ),
         _ => {}
     }
-    if point.eccentricity_ratio > 0.95 {
+    let eps = point.eccentricity_ratio.get();
+    if eps > 0.95 {
         notes.warn(
             "very_high_eccentricity",
-            format!("ε = {:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", point.eccentricity_ratio, 100.0 * (1.0 - point.eccentricity_ratio)),
+            format!("ε = {eps:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", 100.0 * (1.0 - eps)),
         );
     }
 }

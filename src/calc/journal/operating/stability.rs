@@ -6,6 +6,7 @@ use std::f64::consts::PI;
 use super::{Case, Notes, Operating, RotorStability, GRAVITY};
 use crate::calc::journal::closed_form;
 use crate::calc::journal::dynamics::{self, Coefficients};
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::film::FilmModel;
 use crate::calc::journal::performance::{self, Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::{Budget, CalcError};
@@ -17,11 +18,12 @@ use crate::numerics::roots::{brent, Stopping};
 pub(super) fn coefficients_at(
     case: &Case,
     method: Method,
-    eps: f64,
+    eccentricity: EccentricityRatio,
     physics: FilmModel,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
+    let eps = eccentricity.get();
     match method {
         Method::ClosedForm(Approximation::Short) => {
             let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
@@ -35,9 +37,15 @@ pub(super) fn coefficients_at(
         }
         Method::ClosedForm(Approximation::Long) => Ok(None),
         Method::Numerical { mesh, stop, .. } => {
-            dynamics::perturbation(eps, ld, physics, mesh, stop, budget).map(Some)
+            dynamics::perturbation(eccentricity, ld, physics, mesh, stop, budget).map(Some)
         }
     }
+}
+
+/// A point of the locus walk or the threshold search as an eccentricity ratio (they stay
+/// within [10⁻³, MAX_ECCENTRICITY]).
+fn ratio(e: f64) -> Result<EccentricityRatio, CalcError> {
+    EccentricityRatio::new(e).ok_or_else(|| CalcError::Internal(format!("stability: ε = {e}")))
 }
 
 pub(super) fn dynamic_coefficients(
@@ -53,9 +61,11 @@ pub(super) fn dynamic_coefficients(
         );
         return Ok(None);
     }
-    let eps = op.point.eccentricity_ratio;
+    let eccentricity = op.point.eccentricity_ratio;
+    let eps = eccentricity.get();
     let physics = case.physics(op.temperature_c);
-    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, budget)? else {
+    let Some(coefficients) = coefficients_at(case, case.method, eccentricity, physics, budget)?
+    else {
         notes.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
     };
@@ -93,7 +103,7 @@ pub(super) fn dynamic_coefficients(
         Method::Numerical { mesh, stop, .. } => {
             let ld = case.geometry.l_over_d();
             let (_, film, _) =
-                performance::positioned_film(eps, ld, physics, mesh, stop, None, budget)?;
+                performance::positioned_film(eccentricity, ld, physics, mesh, stop, None, budget)?;
             film.sommerfeld_number()
         }
         _ => s_op,
@@ -110,6 +120,7 @@ pub(super) fn dynamic_coefficients(
             return Ok(physics);
         };
         let ld = case.geometry.l_over_d();
+        let e = ratio(e)?;
         let mut re = re_op;
         let mut failure = None;
         // 10⁻⁴ in Re moves the Ng–Pan factors by far less than the mesh error; a contraction
@@ -159,7 +170,7 @@ pub(super) fn dynamic_coefficients(
     };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, budget)) {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, budget)) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
@@ -237,7 +248,7 @@ pub(super) fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, locus_physics(e)?, budget)?
+            coefficients_at(case, search, ratio(e)?, locus_physics(e)?, budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),

@@ -4,6 +4,7 @@
 use std::f64::consts::PI;
 
 use super::{BushTemperatures, Case, Notes, Operating, MAX_TEMPERATURE_RISE_K};
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent, RootError, Stopping};
 
@@ -15,8 +16,9 @@ pub(super) fn thd_temperatures(
     notes: &mut Notes,
     case: &Case,
     t_in: f64,
-    eps: f64,
+    eccentricity: EccentricityRatio,
 ) -> Option<BushTemperatures> {
+    let eps = eccentricity.get();
     let lub = &case.lubricant;
     let g = case.geometry;
     let mu = lub.viscosity_pa_s(t_in);
