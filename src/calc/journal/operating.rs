@@ -180,9 +180,9 @@ impl Case {
         let g = self.geometry;
         let pressure_scale =
             self.lubricant.viscosity_pa_s(t) * self.speed_rps() * g.r_over_c().powi(2);
-        let at = |position: feed::FeedPosition| match position {
-            feed::FeedPosition::OppositeLoad => FeedLine::OppositeLoad,
-            feed::FeedPosition::AtMaxFilm => FeedLine::MaxFilm,
+        let at = |position: feed::Position| match position {
+            feed::Position::OppositeLoad => FeedLine::OppositeLoad,
+            feed::Position::AtMaxFilm => FeedLine::MaxFilm,
         };
         let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
             length_ratio,

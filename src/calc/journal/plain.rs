@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::eccentricity::EccentricityRatio;
-use super::feed::FeedSpec;
+use super::feed_spec::{FeedKind, FeedSpec};
 use super::film::Misalignment;
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
@@ -359,7 +359,7 @@ impl Validate for PlainInput {
             && self.effects.misalignment != Mode::Off
             && self
                 .feed
-                .is_some_and(|f| f.kind == super::feed::FeedKind::CircumferentialGroove)
+                .is_some_and(|f| f.kind == FeedKind::CircumferentialGroove)
         {
             errors.push(FieldError::new("/misalignment", "a misaligned bearing with a circumferential groove is not modelled (the two lands tilt differently)"));
         }
