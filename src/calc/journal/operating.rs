@@ -146,7 +146,7 @@ struct Operating {
     load_n: f64,
     viscosity_pa_s: f64,
     temperature_c: f64,
-    /// Equilibrium iterations (0 when ε was given).
+    /// S(ε) evaluations of the equilibrium search (0 when ε was given).
     evaluations: u32,
 }
 
