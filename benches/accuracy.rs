@@ -9,8 +9,10 @@ use std::fmt::Write;
 use std::time::Instant;
 
 use serde_json::Value;
+use stribeck::calc::journal::eccentricity::EccentricityRatio;
 use stribeck::calc::journal::film::{FilmModel, Mesh};
 use stribeck::calc::journal::performance::{self, Approximation, Method};
+use stribeck::calc::Budget;
 use stribeck::fidelity::Level;
 use stribeck::numerics::reynolds::Stopping;
 
@@ -28,6 +30,11 @@ const CASES: [(f64, f64); 12] = [
     (2.0, 0.8),
     (2.0, 0.9),
 ];
+
+/// ε of a case (all inside the clearance).
+fn ratio(eps: f64) -> EccentricityRatio {
+    EccentricityRatio::new(eps).expect("0 ≤ ε < 1")
+}
 
 fn median_ms(mut f: impl FnMut()) -> f64 {
     let mut times: Vec<f64> = (0..9)
@@ -213,9 +220,15 @@ fn main() {
     let reference: Vec<f64> = CASES
         .iter()
         .map(|&(ld, eps)| {
-            performance::at_eccentricity(eps, ld, converged, FilmModel::REYNOLDS, &mut || true)
-                .unwrap()
-                .sommerfeld_number
+            performance::at_eccentricity(
+                ratio(eps),
+                ld,
+                converged,
+                FilmModel::REYNOLDS,
+                &Budget::unlimited(),
+            )
+            .unwrap()
+            .sommerfeld_number
         })
         .collect();
 
@@ -260,17 +273,26 @@ fn main() {
                 Method::ClosedForm(_) if ld > 1.0 => Method::ClosedForm(Approximation::Long),
                 m => m,
             };
-            let p =
-                performance::at_eccentricity(eps, ld, method, FilmModel::REYNOLDS, &mut || true)
-                    .unwrap();
+            let p = performance::at_eccentricity(
+                ratio(eps),
+                ld,
+                method,
+                FilmModel::REYNOLDS,
+                &Budget::unlimited(),
+            )
+            .unwrap();
             worst_conv = worst_conv.max((p.sommerfeld_number / reference[k] - 1.0).abs());
             worst_table = worst_table.max((p.sommerfeld_number / table_s(ld, eps) - 1.0).abs());
             worst_reported = worst_reported.max(p.error_estimate.unwrap_or(0.0));
             times.push(median_ms(|| {
                 std::hint::black_box(
-                    performance::at_eccentricity(eps, ld, method, FilmModel::REYNOLDS, &mut || {
-                        true
-                    })
+                    performance::at_eccentricity(
+                        ratio(eps),
+                        ld,
+                        method,
+                        FilmModel::REYNOLDS,
+                        &Budget::unlimited(),
+                    )
                     .unwrap(),
                 );
             }));

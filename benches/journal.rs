@@ -8,8 +8,10 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
+use stribeck::calc::journal::eccentricity::EccentricityRatio;
 use stribeck::calc::journal::film::FilmModel;
 use stribeck::calc::journal::performance::{self, Approximation, Method};
+use stribeck::calc::Budget;
 use stribeck::fidelity::Level;
 
 fn journal(c: &mut Criterion) {
@@ -17,11 +19,11 @@ fn journal(c: &mut Criterion) {
     c.bench_function("film at ε = 0.8, L/D = 1, standard", |b| {
         b.iter(|| {
             performance::at_eccentricity(
-                black_box(0.8),
+                black_box(EccentricityRatio::new(0.8).unwrap()),
                 1.0,
                 standard,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })
@@ -35,7 +37,7 @@ fn journal(c: &mut Criterion) {
                     1.0,
                     standard,
                     FilmModel::REYNOLDS,
-                    &mut || true,
+                    &Budget::unlimited(),
                 )
                 .unwrap()
             })
@@ -45,11 +47,11 @@ fn journal(c: &mut Criterion) {
     c.bench_function("closed form, short bearing at ε = 0.8", |b| {
         b.iter(|| {
             performance::at_eccentricity(
-                black_box(0.8),
+                black_box(EccentricityRatio::new(0.8).unwrap()),
                 0.5,
                 short,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })
@@ -58,11 +60,11 @@ fn journal(c: &mut Criterion) {
     c.bench_function("closed form, long bearing (Reynolds) at ε = 0.8", |b| {
         b.iter(|| {
             performance::at_eccentricity(
-                black_box(0.8),
+                black_box(EccentricityRatio::new(0.8).unwrap()),
                 2.0,
                 long,
                 FilmModel::REYNOLDS,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap()
         })

@@ -17,6 +17,13 @@
 //! [`solve_mass_conserving`] solves the mass-conserving (JFO) alternative on the same stencil,
 //! with the film content θ_f as a second field: the wedge term becomes Λ ∂x(θ_f h), upwinded,
 //! and a film may be periodic in x with nodes held at a feed's pressure.
+//!
+//! Both sweep loops run under the solver driver ([`Driver`]): one iteration is one sweep, the
+//! budget is polled every 16 sweeps, the cap is [`Stopping::max_sweeps`]; a solve converges when
+//! the relative change per sweep is at or below the tolerance and diverges when it is not finite.
+
+use super::driver::{Budget, Driver, Stopped, Verdict};
+use crate::fidelity::{IterationUnit, SolverReport};
 
 /// The grid: node positions along x (both ends are boundary nodes), and a uniform spacing across.
 #[derive(Debug, Clone, PartialEq)]
@@ -250,42 +257,65 @@ pub struct Stopping {
     pub max_sweeps: u32,
 }
 
-/// A finished solve.
-#[derive(Debug, Clone, Copy, PartialEq)]
+/// A finished solve: the driver's report, with the two measures a caller reads.
+#[derive(Debug, Clone, PartialEq)]
 pub struct Solved {
     pub sweeps: u32,
     /// Last relative change max|Δp| / max|p|.
     pub change: f64,
     /// Scaled equation residual at the end (see [`Stencil::residual`]).
     pub residual: f64,
+    /// The driver's report (method, sweeps, the equation residual, elapsed time).
+    pub report: SolverReport,
 }
 
-/// Why a solve produced no field.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum SolveError {
-    NotConverged { sweeps: u32, change: f64 },
-    Diverged { sweeps: u32 },
-    Cancelled,
+impl Solved {
+    /// This solve counted together with the `earlier` one that started it (a coarse solve whose
+    /// field started this one): the sweeps of both, this one's change and residual.
+    #[must_use]
+    pub fn after(mut self, earlier: &Solved) -> Solved {
+        self.sweeps += earlier.sweeps;
+        self.report.iterations += earlier.report.iterations;
+        self.report.elapsed_ms += earlier.report.elapsed_ms;
+        self
+    }
+}
+
+/// Why a solve produced no field: the driver's stop (cap, deadline or divergence) and its report.
+pub type SolveError = Stopped;
+
+/// The driver of a sweep loop: `method`, sweeps capped by `stop`, the budget polled every 16.
+fn sweeps(method: &str, stop: Stopping, budget: &Budget) -> Driver {
+    Driver::new(method, IterationUnit::Sweeps, stop.max_sweeps, budget).check_every(16)
+}
+
+/// The converged solve from the driver's run: the last relative change is its value, the
+/// equation residual its report's.
+fn solved(run: super::driver::Converged<f64>) -> Solved {
+    Solved {
+        sweeps: run.report.iterations,
+        change: run.value,
+        residual: run.report.residual.unwrap_or(f64::NAN),
+        report: run.report,
+    }
 }
 
 /// Projected (when `cavitation`) SOR from the initial field `p` (boundary values stay as given,
-/// normally 0). `keep_going` is asked every 16 sweeps; false cancels the solve.
+/// normally 0), under the driver (method `finite_volume_psor`); `budget` stops a late solve.
 pub fn solve(
     stencil: &Stencil,
     omega: f64,
     p: &mut [f64],
     cavitation: bool,
     stop: Stopping,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Solved, SolveError> {
     debug_assert!(
         !stencil.periodic,
         "periodic films are mass-conserving solves"
     );
     let w = stencil.nx + 1;
-    let mut sweeps = 0;
-    loop {
-        sweeps += 1;
+    let run = sweeps("finite_volume_psor", stop, budget).run(|_| {
         let (mut change, mut size) = (0.0f64, 0.0f64);
         for j in 1..stencil.rows {
             let has_north = j + 1 < stencil.rows;
@@ -316,39 +346,16 @@ pub fn solve(
             }
         }
         if !change.is_finite() || !size.is_finite() {
-            return Err(SolveError::Diverged { sweeps });
+            return Verdict::Diverged(f64::NAN);
         }
         let relative = if size > 0.0 { change / size } else { change };
-        if let Some(end) = after_sweep(sweeps, relative, stop, keep_going) {
-            return end.map(|()| Solved {
-                sweeps,
-                change: relative,
-                residual: stencil.residual(p, cavitation),
-            });
+        if relative <= stop.tolerance {
+            Verdict::Converged(relative, stencil.residual(p, cavitation))
+        } else {
+            Verdict::Continue(relative)
         }
-    }
-}
-
-/// The verdict after a sweep with this relative change: converged (`Ok`), out of sweeps or
-/// cancelled (`Err`), or go on (`None`). The cancel check runs every 16 sweeps.
-fn after_sweep(
-    sweeps: u32,
-    relative: f64,
-    stop: Stopping,
-    keep_going: &mut dyn FnMut() -> bool,
-) -> Option<Result<(), SolveError>> {
-    if relative <= stop.tolerance {
-        Some(Ok(()))
-    } else if sweeps >= stop.max_sweeps {
-        Some(Err(SolveError::NotConverged {
-            sweeps,
-            change: relative,
-        }))
-    } else if sweeps.is_multiple_of(16) && !keep_going() {
-        Some(Err(SolveError::Cancelled))
-    } else {
-        None
-    }
+    })?;
+    Ok(solved(run))
 }
 
 /// Mass-conserving cavitation (Jakobsson–Floberg–Olsson, in Elrod and Adams' universal-variable
@@ -371,21 +378,19 @@ fn after_sweep(
 /// `content` holds θ on the same nodes as `p`; its values on the x = x0 boundary column are the
 /// supply's content (1: flooded) and stay as given. The pressure boundary values stay as given.
 /// Stops when both the relative pressure change and the largest content change per sweep fall
-/// below the tolerance.
+/// below the tolerance (under the driver, method `finite_volume_jfo_gauss_seidel`).
 pub fn solve_mass_conserving(
     stencil: &Stencil,
     omega: f64,
     p: &mut [f64],
     content: &mut [f64],
     stop: Stopping,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Solved, SolveError> {
     let w = stencil.nx + 1;
     let nx = stencil.nx;
     let first = if stencil.periodic { 0 } else { 1 };
-    let mut sweeps = 0;
-    loop {
-        sweeps += 1;
+    let run = sweeps("finite_volume_jfo_gauss_seidel", stop, budget).run(|_| {
         let (mut change, mut size, mut content_change) = (0.0f64, 0.0f64, 0.0f64);
         for j in 1..stencil.rows {
             let has_north = j + 1 < stencil.rows;
@@ -431,17 +436,16 @@ pub fn solve_mass_conserving(
             }
         }
         if !change.is_finite() || !size.is_finite() || !content_change.is_finite() {
-            return Err(SolveError::Diverged { sweeps });
+            return Verdict::Diverged(f64::NAN);
         }
         let relative = (if size > 0.0 { change / size } else { change }).max(content_change);
-        if let Some(end) = after_sweep(sweeps, relative, stop, keep_going) {
-            return end.map(|()| Solved {
-                sweeps,
-                change: relative,
-                residual: stencil.mass_residual(p, content),
-            });
+        if relative <= stop.tolerance {
+            Verdict::Converged(relative, stencil.mass_residual(p, content))
+        } else {
+            Verdict::Continue(relative)
         }
-    }
+    })?;
+    Ok(solved(run))
 }
 
 /// The flows across the modelled domain's boundaries, from a field and its content (θ = 1
@@ -603,6 +607,10 @@ pub fn prolong(coarse: &Grid, pc: &[f64], fine: &Grid) -> Vec<f64> {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::fidelity::StopReason;
+    use std::sync::atomic::AtomicBool;
+    use std::sync::Arc;
+    use std::time::Instant;
 
     fn uniform(nx: usize, ny: usize, width: f64, symmetric: bool) -> Grid {
         Grid {
@@ -644,7 +652,7 @@ mod tests {
                     tolerance: 1e-12,
                     max_sweeps: 20_000,
                 },
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap();
             let v = p[at(&grid, centre.0, centre.1)];
@@ -674,8 +682,8 @@ mod tests {
             tolerance: 1e-12,
             max_sweeps: 50_000,
         };
-        solve(&s, omega, &mut free, false, stop, &mut || true).unwrap();
-        solve(&s, omega, &mut cav, true, stop, &mut || true).unwrap();
+        solve(&s, omega, &mut free, false, stop, &Budget::unlimited()).unwrap();
+        solve(&s, omega, &mut cav, true, stop, &Budget::unlimited()).unwrap();
         assert!(free.iter().all(|&v| v >= -1e-12));
         for (a, b) in free.iter().zip(&cav) {
             assert!((a - b).abs() < 1e-8);
@@ -716,9 +724,11 @@ mod tests {
                 tolerance: 1e-14,
                 max_sweeps: 5,
             },
-            &mut || true,
+            &Budget::unlimited(),
         );
-        assert!(matches!(r, Err(SolveError::NotConverged { sweeps: 5, .. })));
+        assert!(
+            matches!(r, Err(ref s) if s.reason() == StopReason::IterationCap && s.report.iterations == 5)
+        );
         let r = solve(
             &s,
             1.5,
@@ -728,9 +738,9 @@ mod tests {
                 tolerance: 1e-14,
                 max_sweeps: 100,
             },
-            &mut || false,
+            &Budget::new(Instant::now(), Arc::new(AtomicBool::new(true))),
         );
-        assert_eq!(r, Err(SolveError::Cancelled));
+        assert!(matches!(r, Err(ref s) if s.reason() == StopReason::Deadline));
     }
 
     /// A one-dimensional film with two converging–diverging lobes, flooded at the inlet: the
@@ -759,10 +769,10 @@ mod tests {
         };
         let omega = s.sor_factor(&grid);
         let mut reynolds = vec![0.0; n];
-        solve(&s, omega, &mut reynolds, true, stop, &mut || true).unwrap();
+        solve(&s, omega, &mut reynolds, true, stop, &Budget::unlimited()).unwrap();
         let (mut p, mut theta) = (vec![0.0; n], vec![1.0; n]);
-        let done =
-            solve_mass_conserving(&s, omega, &mut p, &mut theta, stop, &mut || true).unwrap();
+        let done = solve_mass_conserving(&s, omega, &mut p, &mut theta, stop, &Budget::unlimited())
+            .unwrap();
         assert!(done.residual < 1e-8, "{done:?}");
         let flows = s.fluxes(&p, &theta);
         assert!(flows.imbalance().abs() < 1e-7, "{flows:?}");
@@ -845,7 +855,7 @@ mod tests {
         let open = Stencil::assemble(&grid, &open_problem);
         let omega = open.sor_factor(&grid);
         let (mut p0, mut t0) = (vec![0.0; n], vec![1.0; n]);
-        solve_mass_conserving(&open, omega, &mut p0, &mut t0, stop, &mut || true).unwrap();
+        solve_mass_conserving(&open, omega, &mut p0, &mut t0, stop, &Budget::unlimited()).unwrap();
         let f0 = open.fluxes(&p0, &t0);
 
         grid.periodic = true;
@@ -856,7 +866,15 @@ mod tests {
         };
         let periodic = Stencil::assemble(&grid, &problem);
         let (mut p1, mut t1) = (vec![0.0; n], vec![1.0; n]);
-        solve_mass_conserving(&periodic, omega, &mut p1, &mut t1, stop, &mut || true).unwrap();
+        solve_mass_conserving(
+            &periodic,
+            omega,
+            &mut p1,
+            &mut t1,
+            stop,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         let f1 = periodic.fluxes(&p1, &t1);
         for k in 0..n {
             assert!((p0[k] - p1[k]).abs() < 1e-9 * (1.0 + p0[k].abs()), "{k}");
@@ -879,7 +897,8 @@ mod tests {
                 }
             }
         }
-        let done = solve_mass_conserving(&s, omega, &mut p, &mut t, stop, &mut || true).unwrap();
+        let done =
+            solve_mass_conserving(&s, omega, &mut p, &mut t, stop, &Budget::unlimited()).unwrap();
         assert!(done.residual < 1e-8);
         let f = s.fluxes(&p, &t);
         assert!(f.inflow > 0.0 && f.outflow == 0.0, "{f:?}");

@@ -16,9 +16,10 @@
 
 use std::f64::consts::PI;
 
+use super::eccentricity::EccentricityRatio;
 use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
-use super::performance::{positioned_film, solve_error};
-use crate::calc::CalcError;
+use super::performance::positioned_film;
+use crate::calc::{Budget, CalcError};
 use crate::numerics::reynolds::Stopping;
 
 /// Dimensionless stiffness and damping in the load frame, [xx, xy, yx, yy].
@@ -37,15 +38,16 @@ fn force(f: &FilmSolution) -> [f64; 2] {
 
 /// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film.
 pub fn perturbation(
-    eps: f64,
+    eccentricity: EccentricityRatio,
     l_over_d: f64,
     physics: FilmModel,
     mesh: Mesh,
     stop: Stopping,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Coefficients, CalcError> {
     let (base, equilibrium, field) =
-        positioned_film(eps, l_over_d, physics, mesh, stop, None, keep_going)?;
+        positioned_film(eccentricity, l_over_d, physics, mesh, stop, None, budget)?;
+    let eps = eccentricity.get();
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
@@ -56,9 +58,8 @@ pub fn perturbation(
         tolerance: stop.tolerance.min(1e-11),
         max_sweeps: stop.max_sweeps.max(200_000),
     };
-    let mut solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
-        let (f, _) =
-            film::solve(film, mesh, stop, Some(field.clone()), keep_going).map_err(solve_error)?;
+    let solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
+        let (f, _) = film::solve(film, mesh, stop, Some(field.clone()), budget)?;
         Ok(force(&f))
     };
     // ∂F/∂(A, B): h̄ = 1 + A cos θ + B sin θ, the displacement is d̄ = −(A, B).
@@ -176,7 +177,7 @@ mod tests {
     fn short_bearing_limit() {
         for eps in [0.3, 0.5, 0.7] {
             let num = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 0.125,
                 FilmModel::REYNOLDS,
                 Mesh {
@@ -184,7 +185,7 @@ mod tests {
                     axial_half: 12,
                 },
                 STOP,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap();
             let (k, c) = closed_form::short_bearing_dynamic_coefficients(eps);
@@ -216,7 +217,15 @@ mod tests {
             circumferential: 96,
             axial_half: 12,
         };
-        let light = perturbation(0.2, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+        let light = perturbation(
+            EccentricityRatio::new(0.2).unwrap(),
+            1.0,
+            FilmModel::REYNOLDS,
+            mesh,
+            STOP,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         assert!(light.stiffness[0] > 0.0 && light.damping[0] > 0.0 && light.damping[3] > 0.0);
         let w = whirl(&light);
         let gamma = w
@@ -226,7 +235,15 @@ mod tests {
             gamma > 0.4 && gamma < 0.5,
             "half-frequency whirl, got {gamma}"
         );
-        let heavy = perturbation(0.9, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+        let heavy = perturbation(
+            EccentricityRatio::new(0.9).unwrap(),
+            1.0,
+            FilmModel::REYNOLDS,
+            mesh,
+            STOP,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         let w = whirl(&heavy);
         assert!(w.critical_mass_parameter.is_none_or(|m| m > 50.0), "{w:?}");
     }
@@ -243,14 +260,28 @@ mod tests {
             axial_half: 12,
         };
         for eps in [0.3, 0.7] {
-            let reynolds =
-                perturbation(eps, 1.0, FilmModel::REYNOLDS, mesh, STOP, &mut || true).unwrap();
+            let reynolds = perturbation(
+                EccentricityRatio::new(eps).unwrap(),
+                1.0,
+                FilmModel::REYNOLDS,
+                mesh,
+                STOP,
+                &Budget::unlimited(),
+            )
+            .unwrap();
             let jfo = |feed| FilmModel {
                 mass_conserving: Some(Supply::line(feed)),
                 ..FilmModel::REYNOLDS
             };
-            let flooded =
-                perturbation(eps, 1.0, jfo(FeedLine::MaxFilm), mesh, STOP, &mut || true).unwrap();
+            let flooded = perturbation(
+                EccentricityRatio::new(eps).unwrap(),
+                1.0,
+                jfo(FeedLine::MaxFilm),
+                mesh,
+                STOP,
+                &Budget::unlimited(),
+            )
+            .unwrap();
             let scale = |m: &[f64; 4]| m.iter().map(|v| v.abs()).fold(0.0, f64::max);
             for i in 0..4 {
                 let (k, c) = (reynolds.stiffness, reynolds.damping);
@@ -268,12 +299,12 @@ mod tests {
                 );
             }
             let top = perturbation(
-                eps,
+                EccentricityRatio::new(eps).unwrap(),
                 1.0,
                 jfo(FeedLine::OppositeLoad),
                 mesh,
                 STOP,
-                &mut || true,
+                &Budget::unlimited(),
             )
             .unwrap();
             assert!(top

@@ -1,72 +1,30 @@
 //! Oil feed: pressure-fed flow through a hole or axial grooves and the total flow the bearing
-//! draws, by Martin's model (Khonsari & Booser §8.13, Eq. 8.48–8.60, Table 8.8).
+//! draws, by Martin's model (Khonsari & Booser §8.13, Eq. 8.48–8.60, Table 8.8). The request's
+//! `feed` object is parsed into [`Feed`] by the wire (`feed_spec.rs`).
 
 use std::f64::consts::PI;
 
-use serde::Deserialize;
-use utoipa::ToSchema;
-
-use crate::calc::quantity::Positive;
-use crate::calc::FieldError;
-
-/// Where the oil enters.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum FeedKind {
-    /// A single feed hole (`hole_diameter_m`).
-    Hole,
-    /// A single axial groove (`groove_length_m`, `groove_width_m`).
-    AxialGroove,
-    /// Two axial grooves at ±90° to the load line (`groove_length_m`, `groove_width_m`).
-    TwoAxialGrooves,
-    /// A central circumferential groove (`groove_width_m`): each side is a bearing of length
-    /// (L − w_g)/2 carrying half the load (Khonsari & Booser §8.13, Eq. 8.61, 8.62).
-    CircumferentialGroove,
-}
+use super::eccentricity::EccentricityRatio;
 
 /// Where a single hole or groove sits.
-#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
-#[serde(rename_all = "snake_case")]
-pub enum FeedPosition {
-    /// Opposite the load (the usual place; Table 8.6's leakage applies unchanged).
-    #[default]
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Position {
+    /// Opposite the load (Table 8.6's leakage applies unchanged).
     OppositeLoad,
     /// At the maximum film thickness.
     AtMaxFilm,
-}
-
-/// The oil feed.
-#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct FeedSpec {
-    pub kind: FeedKind,
-    /// For a single hole or groove (default `opposite_load`).
-    #[serde(default)]
-    pub position: FeedPosition,
-    /// Supply pressure above ambient P_s, Pa (> 0, at most 1e8).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e8, example = 276000.0)]
-    pub supply_pressure_pa: Positive,
-    /// Feed-hole diameter D_H, m (hole; D_H/L from 0.05 to 0.5).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.01)]
-    pub hole_diameter_m: Option<Positive>,
-    /// Axial groove length L_g, m (grooves; L_g/L from 0.3 to 0.95).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.067)]
-    pub groove_length_m: Option<Positive>,
-    /// Groove width w_g, m (grooves; typically ≥ D/10).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.00476)]
-    pub groove_width_m: Option<Positive>,
 }
 
 /// A parsed feed.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Feed {
     Hole {
-        position: FeedPosition,
+        position: Position,
         supply_pressure_pa: f64,
         hole_over_length: f64,
     },
     AxialGroove {
-        position: FeedPosition,
+        position: Position,
         supply_pressure_pa: f64,
         length_ratio: f64,
         width_over_diameter: f64,
@@ -106,99 +64,6 @@ impl Feed {
     }
 }
 
-impl FeedSpec {
-    /// Check the feed against the bearing's length L and diameter D.
-    pub fn parse(self, length_m: f64, diameter_m: f64) -> Result<Feed, Vec<FieldError>> {
-        let p_s = self.supply_pressure_pa.get();
-        if p_s > 1e8 {
-            return Err(vec![FieldError::new(
-                "/feed/supply_pressure_pa",
-                "must be at most 1e8 Pa",
-            )]);
-        }
-        let grooves = || -> Result<(f64, f64), Vec<FieldError>> {
-            let (Some(lg), Some(wg)) = (self.groove_length_m, self.groove_width_m) else {
-                return Err(vec![FieldError::new(
-                    "/feed/groove_length_m",
-                    "grooves need groove_length_m and groove_width_m",
-                )]);
-            };
-            let ratio = lg.get() / length_m;
-            if !(0.3..=0.95).contains(&ratio) {
-                return Err(vec![FieldError::new(
-                    "/feed/groove_length_m",
-                    format!("L_g/L must be within [0.3, 0.95] (Martin's data), got {ratio:.3}"),
-                )]);
-            }
-            let w = wg.get() / diameter_m;
-            if !(0.01..=0.5).contains(&w) {
-                return Err(vec![FieldError::new(
-                    "/feed/groove_width_m",
-                    format!("w_g/D must be within [0.01, 0.5], got {w:.3}"),
-                )]);
-            }
-            Ok((ratio, w))
-        };
-        match self.kind {
-            FeedKind::Hole => {
-                let Some(dh) = self.hole_diameter_m else {
-                    return Err(vec![FieldError::new(
-                        "/feed/hole_diameter_m",
-                        "a hole feed needs hole_diameter_m",
-                    )]);
-                };
-                let ratio = dh.get() / length_m;
-                if !(0.05..=0.5).contains(&ratio) {
-                    return Err(vec![FieldError::new(
-                        "/feed/hole_diameter_m",
-                        format!("D_H/L must be within [0.05, 0.5], got {ratio:.3}"),
-                    )]);
-                }
-                Ok(Feed::Hole {
-                    position: self.position,
-                    supply_pressure_pa: p_s,
-                    hole_over_length: ratio,
-                })
-            }
-            FeedKind::AxialGroove => {
-                let (length_ratio, width_over_diameter) = grooves()?;
-                Ok(Feed::AxialGroove {
-                    position: self.position,
-                    supply_pressure_pa: p_s,
-                    length_ratio,
-                    width_over_diameter,
-                })
-            }
-            FeedKind::CircumferentialGroove => {
-                let Some(wg) = self.groove_width_m else {
-                    return Err(vec![FieldError::new(
-                        "/feed/groove_width_m",
-                        "a circumferential groove needs groove_width_m",
-                    )]);
-                };
-                if wg.get() >= 0.5 * length_m {
-                    return Err(vec![FieldError::new(
-                        "/feed/groove_width_m",
-                        "must be less than half the bearing length (each side keeps a land)",
-                    )]);
-                }
-                Ok(Feed::CircumferentialGroove {
-                    supply_pressure_pa: p_s,
-                    width_m: wg.get(),
-                })
-            }
-            FeedKind::TwoAxialGrooves => {
-                let (length_ratio, width_over_diameter) = grooves()?;
-                Ok(Feed::TwoAxialGrooves {
-                    supply_pressure_pa: p_s,
-                    length_ratio,
-                    width_over_diameter,
-                })
-            }
-        }
-    }
-}
-
 /// The bearing's flows at one operating point, m³/s.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Flows {
@@ -220,7 +85,7 @@ pub struct FlowPoint {
     pub clearance_m: f64,
     /// Viscosity at the supply temperature, Pa·s.
     pub mu_inlet: f64,
-    pub eps: f64,
+    pub eps: EccentricityRatio,
     /// Attitude angle, rad.
     pub attitude: f64,
 }
@@ -236,6 +101,7 @@ pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
         eps,
         attitude,
     } = at;
+    let eps = eps.get();
     let c3 = clearance_m.powi(3);
     // Film thickness at the feed, cubed: (h_g/C)³ (Eq. 8.55–8.57).
     let at_load_opposite = (1.0 + eps * attitude.cos()).powi(3);
@@ -254,14 +120,14 @@ pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
         } => {
             let f_g = 0.675 * (hole_over_length + 0.4).powf(1.75);
             let (h3, q_l) = match position {
-                FeedPosition::OppositeLoad => (at_load_opposite, leakage),
-                FeedPosition::AtMaxFilm => (at_max, 0.965 * leakage),
+                Position::OppositeLoad => (at_load_opposite, leakage),
+                Position::AtMaxFilm => (at_max, 0.965 * leakage),
             };
             let q_p = f_g * h3 * supply_pressure_pa * c3 / mu_inlet;
             let q_m = combine(q_l, q_p);
             let total = match position {
-                FeedPosition::OppositeLoad => q_m.powf(0.6) * q_p.powf(0.4), // S′ = 0.6, Eq. 8.59
-                FeedPosition::AtMaxFilm => q_m,
+                Position::OppositeLoad => q_m.powf(0.6) * q_p.powf(0.4), // S′ = 0.6, Eq. 8.59
+                Position::AtMaxFilm => q_m,
             };
             Flows {
                 leakage: q_l,
@@ -277,17 +143,17 @@ pub fn flows(feed: Feed, at: FlowPoint) -> Flows {
         } => {
             let f_g = groove_factor(length_ratio, width_over_diameter);
             let (h3, q_l) = match position {
-                FeedPosition::OppositeLoad => (at_load_opposite, leakage),
-                FeedPosition::AtMaxFilm => (at_max, 0.965 * leakage),
+                Position::OppositeLoad => (at_load_opposite, leakage),
+                Position::AtMaxFilm => (at_max, 0.965 * leakage),
             };
             let q_p = f_g * h3 * supply_pressure_pa * c3 / mu_inlet;
             let q_m = combine(q_l, q_p);
             let total = match position {
-                FeedPosition::OppositeLoad => {
+                Position::OppositeLoad => {
                     let s = 0.75 * length_ratio.powf(0.7) + 0.4; // S′ for a groove, Eq. 8.59
                     q_m.powf(s) * q_p.powf(1.0 - s)
                 }
-                FeedPosition::AtMaxFilm => q_m * length_ratio.powf(0.27 * (q_l / q_p).powf(0.27)), // Eq. 8.60
+                Position::AtMaxFilm => q_m * length_ratio.powf(0.27 * (q_l / q_p).powf(0.27)), // Eq. 8.60
             };
             Flows {
                 leakage: q_l,
@@ -357,7 +223,7 @@ mod tests {
     fn example_8_4_first_pass() {
         let (l, d) = (0.0762, 0.102);
         let feed = Feed::AxialGroove {
-            position: FeedPosition::OppositeLoad,
+            position: Position::OppositeLoad,
             supply_pressure_pa: 0.276e6,
             length_ratio: 0.067 / l,
             width_over_diameter: 4.76e-3 / d,
@@ -370,7 +236,7 @@ mod tests {
                 l_over_d: l / d,
                 clearance_m: d / 1600.0,
                 mu_inlet: 0.03,
-                eps: 0.45,
+                eps: EccentricityRatio::new(0.45).unwrap(),
                 attitude: 59.14f64.to_radians(),
             },
         );
@@ -394,7 +260,7 @@ mod tests {
     #[test]
     fn more_supply_pressure_more_flow() {
         let feed = |p: f64| Feed::Hole {
-            position: FeedPosition::OppositeLoad,
+            position: Position::OppositeLoad,
             supply_pressure_pa: p,
             hole_over_length: 0.2,
         };
@@ -404,7 +270,7 @@ mod tests {
             l_over_d: 1.0,
             clearance_m: 1e-4,
             mu_inlet: 0.02,
-            eps: 0.5,
+            eps: EccentricityRatio::new(0.5).unwrap(),
             attitude: 0.9,
         };
         let (a, b) = (flows(feed(1e5), at), flows(feed(3e5), at));
@@ -428,7 +294,7 @@ mod tests {
             l_over_d: 1.0,
             clearance_m: 1e-4,
             mu_inlet: 0.02,
-            eps,
+            eps: EccentricityRatio::new(eps).unwrap(),
             attitude: phi,
         };
         let f_g = (1.25 - 0.25 * 0.8) / (3.0 * (1.0f64 / 0.8 - 1.0).cbrt()) + 0.1 / (3.0 * 0.2);

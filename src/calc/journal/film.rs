@@ -21,6 +21,10 @@
 
 use std::f64::consts::PI;
 
+use crate::calc::Budget;
+use crate::fidelity::IterationUnit;
+use crate::numerics::driver::{Driver, Verdict};
+use crate::numerics::interpolate::Parabola;
 use crate::numerics::reynolds::{
     self, at, Axis, Fluxes, Grid, Problem, SolveError, Solved, Stencil, Stopping,
 };
@@ -157,13 +161,23 @@ pub fn circumferential_nodes(cells: usize, eps: f64) -> Vec<f64> {
 pub fn circumferential_nodes_from(start: f64, cells: usize, eps: f64) -> Vec<f64> {
     let kappa = 0.75 * eps.clamp(0.0, 1.0);
     let mut s0 = start;
-    for _ in 0..50 {
+    // The map is monotone, so Newton settles in a few steps; at the cap of 50 (not reached in
+    // practice) the last iterate is taken.
+    let _settled = Driver::new(
+        "newton_grid_start",
+        IterationUnit::NewtonSteps,
+        50,
+        &Budget::unlimited(),
+    )
+    .run(|_| {
         let step = (s0 + kappa * s0.sin() - start) / (1.0 + kappa * s0.cos());
         s0 -= step;
         if step.abs() < 1e-15 {
-            break;
+            Verdict::Converged((), step.abs())
+        } else {
+            Verdict::Continue(step.abs())
         }
-    }
+    });
     let mut x: Vec<f64> = (0..=cells)
         .map(|i| {
             let s = s0 + 2.0 * PI * i as f64 / cells as f64;
@@ -389,7 +403,7 @@ pub fn solve(
     mesh: Mesh,
     stop: Stopping,
     start: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
     let g = grid(mesh, &film);
     let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
@@ -478,14 +492,8 @@ pub fn solve(
                 }
             }
         }
-        let solved = reynolds::solve_mass_conserving(
-            &stencil,
-            omega,
-            &mut p,
-            &mut content,
-            stop,
-            keep_going,
-        )?;
+        let solved =
+            reynolds::solve_mass_conserving(&stencil, omega, &mut p, &mut content, stop, budget)?;
         let fluxes = stencil.fluxes(&p, &content);
         let solution = integrate(&g, &p, &film, solved, Some((&content, fluxes)));
         p.extend_from_slice(&content);
@@ -500,30 +508,19 @@ pub fn solve(
         &mut p,
         film.physics.cavitation,
         stop,
-        keep_going,
+        budget,
     )?;
     Ok((integrate(&g, &p, &film, solved, None), p))
 }
 
-/// Solve on `mesh` after a solve on the mesh with half the cells each way, whose field starts
-/// the fine one. Returns (fine, coarse, fine field): the pair gives the discretisation error.
-/// `warm`, a converged field on `mesh` at a nearby state, starts the fine solve instead.
-pub fn solve_nested(
-    film: Film,
-    mesh: Mesh,
-    stop: Stopping,
-    warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
-) -> Result<(FilmSolution, FilmSolution, Vec<f64>), SolveError> {
-    let coarse_mesh = mesh.coarse();
-    let (coarse, pc) = solve(film, coarse_mesh, stop, None, keep_going)?;
-    // (A mass-conserving field carries its content after the pressure: only the pressure is
-    // carried over; the content starts flooded and settles in the first sweeps.)
-    let coarse_grid = grid(coarse_mesh, &film);
-    let pc = &pc[..(coarse_grid.nx() + 1) * (coarse_grid.ny + 1)];
-    let start = warm.unwrap_or_else(|| reynolds::prolong(&coarse_grid, pc, &grid(mesh, &film)));
-    let (fine, p) = solve(film, mesh, stop, Some(start), keep_going)?;
-    Ok((fine, coarse, p))
+/// The field solved on `coarse` (a mesh of [`Mesh::coarse`]) carried over to `mesh`, to start
+/// the fine solve of a pair. A mass-conserving field carries its content after the pressure:
+/// only the pressure is carried over; the content starts flooded and settles in the first
+/// sweeps.
+pub fn prolonged(film: &Film, coarse: Mesh, field: &[f64], mesh: Mesh) -> Vec<f64> {
+    let coarse_grid = grid(coarse, film);
+    let pc = &field[..(coarse_grid.nx() + 1) * (coarse_grid.ny + 1)];
+    reynolds::prolong(&coarse_grid, pc, &grid(mesh, film))
 }
 
 /// The film's numbers from its field; `content` (mass-conserving films) carries θ_f and the
@@ -747,16 +744,13 @@ fn parabolic_peak(x: &[f64], y: &[f64], i: usize) -> (f64, f64) {
         return (y[i], x[i]);
     }
     let (x0, x1, x2) = (x[i - 1], x[i], x[i + 1]);
-    let (y0, y1, y2) = (y[i - 1], y[i], y[i + 1]);
-    let denom = (x0 - x1) * (x0 - x2) * (x1 - x2);
-    let a = (x2 * (y1 - y0) + x1 * (y0 - y2) + x0 * (y2 - y1)) / denom;
-    let b = (x2 * x2 * (y0 - y1) + x1 * x1 * (y2 - y0) + x0 * x0 * (y1 - y2)) / denom;
-    if a >= 0.0 {
+    let y1 = y[i];
+    let parabola = Parabola::through([x0, x1, x2], [y[i - 1], y1, y[i + 1]]);
+    if parabola.a >= 0.0 {
         return (y1, x1);
     }
-    let xv = (-b / (2.0 * a)).clamp(x0, x2);
-    let c = y1 - a * x1 * x1 - b * x1;
-    ((a * xv * xv + b * xv + c).max(y1), xv)
+    let xv = parabola.vertex().clamp(x0, x2);
+    (parabola.at(xv).max(y1), xv)
 }
 
 #[cfg(test)]

@@ -5,11 +5,15 @@
 //! - `performance`: dimensionless performance at ε by closed form or numerics, equilibrium;
 //! - `film`: the numerical film (finite-volume Reynolds with cavitation);
 //! - `closed_form`: infinitely short and long bearings;
-//! - `dynamics`: stiffness, damping and the whirl threshold.
+//! - `eccentricity`: the eccentricity ratio ε, checked once;
+//! - `dynamics`: stiffness, damping and the whirl threshold;
+//! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
 pub mod dynamics;
+pub mod eccentricity;
 pub mod feed;
+pub mod feed_spec;
 pub mod film;
 pub mod operating;
 pub mod performance;

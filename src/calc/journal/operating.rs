@@ -14,6 +14,7 @@ pub use solution::{
 };
 
 use super::dynamics::Coefficients;
+use super::eccentricity::EccentricityRatio;
 use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
 use super::performance::{self, Method, Point};
@@ -52,7 +53,7 @@ impl Geometry {
 #[derive(Debug, Clone, Copy)]
 pub enum Given {
     Load(f64),
-    Eccentricity(f64),
+    Eccentricity(EccentricityRatio),
 }
 
 /// The validated plain-bearing case.
@@ -66,7 +67,8 @@ pub struct Case {
     pub feed: Option<Feed>,
     /// Bearing arc, rad, centred on the load line; None for 360°.
     pub arc: Option<f64>,
-    /// The journal's tilt; None when aligned.
+    /// The journal's tilt the request gives; None when aligned. Whether it applies is the
+    /// misalignment effect's mode ([`Case::tilt`]).
     pub misalignment: Option<Misalignment>,
     pub rotor_mass_kg: Option<f64>,
     /// Shaft stiffness in series with the film, N/m (None: rigid).
@@ -106,13 +108,15 @@ impl Cavitation {
     }
 }
 
-/// The effect modes the plain bearing understands (misalignment is decided from the geometry).
+/// The effect modes the plain bearing understands.
 #[derive(Debug, Clone, Copy, Default)]
 pub struct Effects {
     pub thermal: Mode,
     pub cavitation: Cavitation,
     pub turbulence: Mode,
     pub inertia: Mode,
+    /// Applies the request's misalignment (auto, on) or not (off).
+    pub misalignment: Mode,
 }
 
 /// What the model says beside its numbers, in the order it said it: the decision on each effect
@@ -142,7 +146,7 @@ struct Operating {
     load_n: f64,
     viscosity_pa_s: f64,
     temperature_c: f64,
-    /// Equilibrium iterations (0 when ε was given).
+    /// S(ε) evaluations of the equilibrium search (0 when ε was given).
     evaluations: u32,
 }
 
@@ -159,6 +163,12 @@ impl Case {
         self.effects.cavitation != Cavitation::Off
     }
 
+    /// The misalignment the film is solved with: the request's, unless the effect is off.
+    fn tilt(&self) -> Option<Misalignment> {
+        self.misalignment
+            .filter(|_| self.effects.misalignment != Mode::Off)
+    }
+
     /// Mass-conserving cavitation, and its supply at oil temperature t: without a feed (or with a
     /// circumferential groove, or on a partial arc) a flooded line at h_max at the edges'
     /// pressure; a hole or axial groove(s) as ports at supply pressure in a periodic film,
@@ -170,9 +180,9 @@ impl Case {
         let g = self.geometry;
         let pressure_scale =
             self.lubricant.viscosity_pa_s(t) * self.speed_rps() * g.r_over_c().powi(2);
-        let at = |position: feed::FeedPosition| match position {
-            feed::FeedPosition::OppositeLoad => FeedLine::OppositeLoad,
-            feed::FeedPosition::AtMaxFilm => FeedLine::MaxFilm,
+        let at = |position: feed::Position| match position {
+            feed::Position::OppositeLoad => FeedLine::OppositeLoad,
+            feed::Position::AtMaxFilm => FeedLine::MaxFilm,
         };
         let port = |length_ratio: f64, width_m: f64, p_s: f64| Port {
             length_ratio,
@@ -250,7 +260,7 @@ impl Case {
             cavitation: self.cavitation(),
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
-            misalignment: self.misalignment,
+            misalignment: self.tilt(),
             mass_conserving: self.supply(t),
         }
     }
@@ -265,7 +275,6 @@ impl Case {
         }
         let scale = self.load_scale(mu);
         let l_over_d = self.geometry.l_over_d();
-        let mut alive = || budget.alive();
         let (point, load_n, evaluations) = match self.given {
             Given::Load(w) => {
                 let (p, n) = performance::equilibrium(
@@ -273,7 +282,7 @@ impl Case {
                     l_over_d,
                     self.method,
                     self.physics(temperature_c),
-                    &mut alive,
+                    budget,
                 )?;
                 (p, w, n)
             }
@@ -283,7 +292,7 @@ impl Case {
                     l_over_d,
                     self.method,
                     self.physics(temperature_c),
-                    &mut alive,
+                    budget,
                 )?;
                 let w = scale / p.sommerfeld_number;
                 (p, w, 0)
@@ -588,7 +597,7 @@ fn outputs(
                 direction: dir,
                 from_line_of_centres: from_centres,
                 ..
-            } = case.misalignment.unwrap_or_default();
+            } = case.tilt().unwrap_or_default();
             let towards = if from_centres {
                 // From the line of centres (h_min lies φ ahead of the load line).
                 dir + point.attitude_angle
@@ -638,35 +647,33 @@ fn dimensional_dynamics(
     }
 }
 
+/// The response's solver block. Numerical: the film solves' driver report (the sweeps of the
+/// fine and the coarse mesh, the fine field's equation residual), at the level and on the mesh
+/// asked, with the error estimate; the equilibrium search's S evaluations (each a film solve, or
+/// an attitude search of them) as its evaluations. Closed form: a direct evaluation, counting the
+/// S evaluations of the equilibrium search's Brent (the count the block has always carried).
 fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
     match case.method {
-        Method::ClosedForm(_) => SolverReport {
-            method: format!(
-                "closed_form_{}",
-                decisions::approximation_name(case).unwrap_or_default()
-            ),
-            iterations: evaluations,
-            iterations_unit: IterationUnit::RootSearchSteps,
-            evaluations: None,
-            stop_reason: StopReason::Converged,
-            ..SolverReport::closed_form("closed_form")
-        },
-        Method::Numerical { level, mesh, .. } => SolverReport {
-            method: if case.mass_conserving() {
-                "finite_volume_jfo_gauss_seidel"
-            } else {
-                "finite_volume_psor"
+        Method::ClosedForm(_) => {
+            let name = decisions::approximation_name(case).unwrap_or_default();
+            let mut report = SolverReport::closed_form(&format!("closed_form_{name}"));
+            if evaluations > 0 {
+                report.iterations = evaluations;
+                report.iterations_unit = IterationUnit::Evaluations;
+                report.stop_reason = StopReason::Converged;
             }
-            .into(),
-            fidelity: level,
-            grid: Some(vec![mesh.circumferential as u32, mesh.axial_half as u32]),
-            iterations: point.sweeps,
-            iterations_unit: IterationUnit::Sweeps,
-            evaluations: None,
-            stop_reason: StopReason::Converged,
-            residual: point.residual,
-            error_estimate: point.error_estimate,
-            elapsed_ms: 0.0,
-        },
+            report
+        }
+        Method::Numerical { level, mesh, .. } => {
+            let mut report = point
+                .solve
+                .clone()
+                .expect("a numerical point carries its film solves' report")
+                .at(level)
+                .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
+                .with_error_estimate(point.error_estimate);
+            report.evaluations = (evaluations > 0).then_some(evaluations);
+            report
+        }
     }
 }

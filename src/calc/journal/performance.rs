@@ -4,10 +4,13 @@
 use std::f64::consts::PI;
 
 use super::closed_form::{self, Boundary};
+use super::eccentricity::EccentricityRatio;
 use super::film::{self, FeedLine, Film, FilmModel, FilmSolution, Mesh};
-use crate::calc::CalcError;
-use crate::fidelity::Level;
-use crate::numerics::reynolds::{SolveError, Stopping};
+use crate::calc::{Budget, CalcError};
+use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
+use crate::numerics::driver::{Driver, Verdict};
+use crate::numerics::refine::{refine, Judgement, Pair, RefineError, Refined};
+use crate::numerics::reynolds::Stopping;
 use crate::numerics::richardson;
 use crate::numerics::roots::{self, brent, RootError};
 
@@ -99,20 +102,21 @@ impl Method {
 /// attitude φ where the film force lies along the load (Stachowiak & Batchelor's attitude
 /// iteration in PARTIAL, here a bracketed root of the angle between the force and the load).
 pub fn positioned_film(
-    eps: f64,
+    eccentricity: EccentricityRatio,
     l_over_d: f64,
     model: FilmModel,
     mesh: Mesh,
     stop: Stopping,
     warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(Film, FilmSolution, Vec<f64>), CalcError> {
+    let eps = eccentricity.get();
     let base = Film {
         physics: model,
         ..Film::steady(eps, l_over_d)
     };
     if !placed(&model) {
-        let (f, p) = film::solve(base, mesh, stop, warm, keep_going).map_err(solve_error)?;
+        let (f, p) = film::solve(base, mesh, stop, warm, budget)?;
         return Ok((base, f, p));
     }
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
@@ -145,7 +149,7 @@ pub fn positioned_film(
             failure.get_or_insert(touching(eps));
             return f64::NAN;
         }
-        match film::solve(film, mesh, stop, warm.take(), keep_going) {
+        match film::solve(film, mesh, stop, warm.take(), budget) {
             Ok((f, p)) => {
                 warm = Some(p);
                 // The load is −F; its signed angle from the load line's direction.
@@ -154,7 +158,7 @@ pub fn positioned_film(
                 (wa * db - wb * da).atan2(wa * da + wb * db)
             }
             Err(e) => {
-                failure.get_or_insert(solve_error(e));
+                failure.get_or_insert(e.into());
                 f64::NAN
             }
         }
@@ -172,12 +176,8 @@ pub fn positioned_film(
     }
     let phi = match root {
         Ok(r) => r.x,
-        Err(RootError::NotConverged { iterations, width }) => {
-            return Err(CalcError::NotConverged {
-                method: "brent_attitude",
-                iterations,
-                residual: width,
-            })
+        Err(e @ RootError::NotConverged { .. }) => {
+            return Err(CalcError::from_root("brent_attitude", e))
         }
         Err(_) => {
             // Not "/misalignment": that pointer means the journal touches.
@@ -185,7 +185,7 @@ pub fn positioned_film(
         }
     };
     let film = place(phi);
-    let (f, p) = film::solve(film, mesh, stop, warm, keep_going).map_err(solve_error)?;
+    let (f, p) = film::solve(film, mesh, stop, warm, budget)?;
     // Brent can also settle on the ±180° jump of the angle: only a force on the load line counts.
     let (wa, wb) = (-f.load_radial, f.load_tangential);
     let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
@@ -248,7 +248,7 @@ fn touching(eps: f64) -> CalcError {
 /// One operating point, dimensionless (Table 8.6 conventions).
 #[derive(Debug, Clone, PartialEq)]
 pub struct Point {
-    pub eccentricity_ratio: f64,
+    pub eccentricity_ratio: EccentricityRatio,
     pub sommerfeld_number: f64,
     pub attitude_angle: f64,
     pub friction_parameter: f64,
@@ -267,10 +267,9 @@ pub struct Point {
     /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
     pub midplane_content: Option<Vec<f64>>,
     pub cavitated_fraction: Option<f64>,
-    /// Numerical work: sweeps of the last field solve, total sweeps, residual, relative error
-    /// estimate of S, the mesh.
-    pub sweeps: u32,
-    pub residual: Option<f64>,
+    /// Numerical work: the film solves' report (the sweeps of the fine and the coarse mesh,
+    /// the fine field's equation residual), the relative error estimate of S, the mesh.
+    pub solve: Option<SolverReport>,
     pub error_estimate: Option<f64>,
     pub mesh: Option<Mesh>,
 }
@@ -284,22 +283,6 @@ pub fn friction_parameter(f: &FilmSolution) -> f64 {
     0.5 * f.pressure_shear / load + PI * f.sommerfeld_number() * f.couette_shear
 }
 
-pub fn solve_error(e: SolveError) -> CalcError {
-    match e {
-        SolveError::Cancelled => CalcError::DeadlineExceeded,
-        SolveError::NotConverged { sweeps, change } => CalcError::NotConverged {
-            method: "finite_volume_psor",
-            iterations: sweeps,
-            residual: change,
-        },
-        SolveError::Diverged { sweeps } => CalcError::NotConverged {
-            method: "finite_volume_psor",
-            iterations: sweeps,
-            residual: f64::INFINITY,
-        },
-    }
-}
-
 /// A vector of the film frame (towards h_max, 90° ahead) in the load frame: x along the load
 /// W = −F, y 90° ahead of it in the direction of rotation.
 pub fn load_frame(f: &FilmSolution, v: [f64; 2]) -> [f64; 2] {
@@ -310,7 +293,7 @@ pub fn load_frame(f: &FilmSolution, v: [f64; 2]) -> [f64; 2] {
     [v[0] * x[0] + v[1] * x[1], v[0] * y[0] + v[1] * y[1]]
 }
 
-fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
+fn from_film(eps: EccentricityRatio, f: &FilmSolution, physics: FilmModel) -> Point {
     let s = f.sommerfeld_number();
     let phi = f.attitude_angle();
     Point {
@@ -328,8 +311,7 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
         midplane_content: f.midplane_content.clone(),
         moment_nd: physics.misalignment.map(|_| load_frame(f, f.moment)),
         cavitated_fraction: f.cavitated_fraction,
-        sweeps: f.solved.sweeps,
-        residual: Some(f.solved.residual),
+        solve: Some(f.solved.report.clone()),
         error_estimate: None,
         mesh: None,
     }
@@ -337,23 +319,23 @@ fn from_film(eps: f64, f: &FilmSolution, physics: FilmModel) -> Point {
 
 /// Performance at eccentricity ratio `eps` for L/D = `l_over_d`.
 pub fn at_eccentricity(
-    eps: f64,
+    eps: EccentricityRatio,
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Point, CalcError> {
-    at_eccentricity_from(eps, l_over_d, method, physics, None, keep_going)
+    at_eccentricity_from(eps, l_over_d, method, physics, None, budget)
 }
 
 /// As [`at_eccentricity`], the fine solve starting from `warm` (a field on the method's mesh).
 fn at_eccentricity_from(
-    eps: f64,
+    eps: EccentricityRatio,
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
     warm: Option<Vec<f64>>,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<Point, CalcError> {
     match method {
         Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, physics.cavitation)),
@@ -363,32 +345,54 @@ fn at_eccentricity_from(
             richardson,
             ..
         } => {
+            // The pair: the mesh with half the cells each way, then the method's mesh, started
+            // from `warm` or (an unplaced film) from the coarse field; one rung of refinement,
+            // whose estimate is reported, not acted on (the tolerance is not tested).
             let load_fixed = placed(&physics);
-            let (fine, coarse) = match load_fixed {
-                false => {
-                    let film = Film {
-                        physics,
-                        ..Film::steady(eps, l_over_d)
-                    };
-                    let (fine, coarse, _) = film::solve_nested(film, mesh, stop, warm, keep_going)
-                        .map_err(solve_error)?;
-                    (fine, coarse)
-                }
-                true => {
-                    let half = mesh.coarse();
-                    let (_, coarse, _) =
-                        positioned_film(eps, l_over_d, physics, half, stop, None, keep_going)?;
-                    let (_, fine, _) =
-                        positioned_film(eps, l_over_d, physics, mesh, stop, warm, keep_going)?;
-                    (fine, coarse)
+            let film = Film {
+                physics,
+                ..Film::steady(eps.get(), l_over_d)
+            };
+            let solve_on = |m: Mesh, start: Option<Vec<f64>>| {
+                if load_fixed {
+                    positioned_film(eps, l_over_d, physics, m, stop, start, budget)
+                        .map(|(_, f, p)| (f, p))
+                } else {
+                    film::solve(film, m, stop, start, budget).map_err(CalcError::from)
                 }
             };
-            let mut point = from_film(eps, &fine, physics);
-            let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+            let half = mesh.coarse();
+            let mut warm = warm;
             // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
             // when the coarse mesh halves both spacings.
             let r = mesh.refinement_ratio();
-            point.error_estimate = Some(((sf - sc) / (r * r - 1.0) / sf).abs());
+            let refined = refine(
+                half,
+                solve_on(half, None)?,
+                f64::INFINITY,
+                |m| (m == half).then_some(mesh),
+                |m, (_, coarse_field): &(FilmSolution, Vec<f64>)| {
+                    let start = warm.take().or_else(|| {
+                        (!load_fixed).then(|| film::prolonged(&film, half, coarse_field, m))
+                    });
+                    solve_on(m, start)
+                },
+                |(coarse, _), (fine, _)| {
+                    let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+                    Judgement::Resolved(((sf - sc) / (r * r - 1.0) / sf).abs())
+                },
+            );
+            let (Pair { coarse, fine, .. }, error) = match refined {
+                Ok(Refined::Converged { pair, error } | Refined::GridLimited { pair, error }) => {
+                    (pair, error)
+                }
+                Ok(Refined::FellBack { failure, .. })
+                | Err(RefineError::Failed { failure, .. }) => return Err(failure),
+                Err(e) => return Err(CalcError::Internal(format!("mesh pair: {e:?}"))),
+            };
+            let (coarse, fine) = (coarse.0, fine.0);
+            let mut point = from_film(eps, &fine, physics);
+            point.error_estimate = Some(error);
             // Richardson's extrapolation needs the same ratio both ways: only exact halvings
             // (the `high` mesh is one) are extrapolated.
             debug_assert!(!richardson || mesh.halves_exactly(), "{mesh:?}");
@@ -412,14 +416,20 @@ fn at_eccentricity_from(
                     ..from_film(eps, &film, physics)
                 };
             }
-            point.sweeps = fine.solved.sweeps + coarse.solved.sweeps;
+            point.solve = Some(fine.solved.clone().after(&coarse.solved).report);
             point.mesh = Some(mesh);
             Ok(point)
         }
     }
 }
 
-fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> Point {
+fn closed(
+    eccentricity: EccentricityRatio,
+    l_over_d: f64,
+    approx: Approximation,
+    cavitation: bool,
+) -> Point {
+    let eps = eccentricity.get();
     let p = match approx {
         Approximation::Long => closed_form::long_bearing(
             eps,
@@ -440,7 +450,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         }
     };
     Point {
-        eccentricity_ratio: eps,
+        eccentricity_ratio: eccentricity,
         sommerfeld_number: p.sommerfeld_number,
         attitude_angle: p.attitude_angle_rad,
         friction_parameter: p.friction_parameter,
@@ -454,8 +464,7 @@ fn closed(eps: f64, l_over_d: f64, approx: Approximation, cavitation: bool) -> P
         midplane_content: None,
         cavitated_fraction: None,
         moment_nd: None,
-        sweeps: 0,
-        residual: None,
+        solve: None,
         error_estimate: None,
         mesh: None,
     }
@@ -473,7 +482,7 @@ pub fn equilibrium(
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
-    keep_going: &mut dyn FnMut() -> bool,
+    budget: &Budget,
 ) -> Result<(Point, u32), CalcError> {
     let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
     let mut evaluations = 0u32;
@@ -501,20 +510,20 @@ pub fn equilibrium(
     let u = match coarse {
         // Near the ends of the bracket the two meshes may disagree on whether a root exists:
         // the fine mesh decides.
-        Some(coarse) => match searcher.bracketed(coarse, bracket, 1e-5, keep_going) {
-            Ok(u) => searcher.polish(method, u, bracket, keep_going)?,
+        Some(coarse) => match searcher.bracketed(coarse, bracket, 1e-5, budget) {
+            Ok(u) => searcher.polish(method, u, bracket, budget)?,
             Err(CalcError::Impossible { .. }) => {
-                searcher.bracketed(method, bracket, 1e-10, keep_going)?
+                searcher.bracketed(method, bracket, 1e-10, budget)?
             }
             Err(e) => return Err(e),
         },
-        None => searcher.bracketed(method, bracket, 1e-10, keep_going)?,
+        None => searcher.bracketed(method, bracket, 1e-10, budget)?,
     };
     let warm = searcher.warm.take().and_then(|(m, p)| match method {
         Method::Numerical { mesh, .. } if mesh == m => Some(p),
         _ => None,
     });
-    let point = at_eccentricity_from(to_eps(u), l_over_d, method, physics, warm, keep_going)?;
+    let point = at_eccentricity_from(to_eps(u)?, l_over_d, method, physics, warm, budget)?;
     // A root at the edge where a misaligned journal starts to touch carries less than asked.
     if physics.misalignment.is_some() && (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
         return Err(CalcError::impossible(
@@ -525,8 +534,10 @@ pub fn equilibrium(
     Ok((point, evaluations))
 }
 
-fn to_eps(u: f64) -> f64 {
-    1.0 / (1.0 + (-u).exp())
+/// ε(u) = 1/(1 + e^−u), inside (0, 1) for every u of the search's bracket.
+fn to_eps(u: f64) -> Result<EccentricityRatio, CalcError> {
+    EccentricityRatio::new(1.0 / (1.0 + (-u).exp()))
+        .ok_or_else(|| CalcError::Internal(format!("equilibrium: no ε at u = {u}")))
 }
 
 fn to_u(eps: f64) -> f64 {
@@ -544,14 +555,9 @@ struct Searcher<'a> {
 }
 
 impl Searcher<'_> {
-    fn residual(
-        &mut self,
-        method: Method,
-        u: f64,
-        keep_going: &mut dyn FnMut() -> bool,
-    ) -> Result<f64, CalcError> {
+    fn residual(&mut self, method: Method, u: f64, budget: &Budget) -> Result<f64, CalcError> {
         *self.evaluations += 1;
-        let eps = to_eps(u);
+        let eps = to_eps(u)?;
         let s = match method {
             Method::ClosedForm(approx) => {
                 closed(eps, self.l_over_d, approx, self.physics.cavitation).sommerfeld_number
@@ -559,20 +565,11 @@ impl Searcher<'_> {
             Method::Numerical {
                 richardson: true, ..
             } => {
-                at_eccentricity(eps, self.l_over_d, method, self.physics, keep_going)?
-                    .sommerfeld_number
+                at_eccentricity(eps, self.l_over_d, method, self.physics, budget)?.sommerfeld_number
             }
             Method::Numerical { mesh, stop, .. } => {
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
-                match positioned_film(
-                    eps,
-                    self.l_over_d,
-                    self.physics,
-                    mesh,
-                    stop,
-                    start,
-                    keep_going,
-                ) {
+                match positioned_film(eps, self.l_over_d, self.physics, mesh, stop, start, budget) {
                     Ok((_, f, p)) => {
                         self.warm = Some((mesh, p));
                         f.sommerfeld_number()
@@ -598,12 +595,12 @@ impl Searcher<'_> {
         method: Method,
         (lo, hi): (f64, f64),
         x_tolerance: f64,
-        keep_going: &mut dyn FnMut() -> bool,
+        budget: &Budget,
     ) -> Result<f64, CalcError> {
         let mut failure = None;
         let s_target = self.s_target;
         let root = brent(
-            |u| match self.residual(method, u, keep_going) {
+            |u| match self.residual(method, u, budget) {
                 Ok(r) => r,
                 Err(e) => {
                     failure.get_or_insert(e);
@@ -631,14 +628,7 @@ impl Searcher<'_> {
                 };
                 Err(CalcError::impossible("/load_n", message))
             }
-            Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
-                method: "brent_equilibrium",
-                iterations,
-                residual: width,
-            }),
-            Err(RootError::NonFinite { .. }) => Err(CalcError::Internal(
-                "equilibrium: non-finite Sommerfeld number".into(),
-            )),
+            Err(e) => Err(CalcError::from_root("brent_equilibrium", e)),
         }
     }
 
@@ -649,37 +639,61 @@ impl Searcher<'_> {
         method: Method,
         u0: f64,
         bracket: (f64, f64),
-        keep_going: &mut dyn FnMut() -> bool,
+        budget: &Budget,
     ) -> Result<f64, CalcError> {
-        let (mut ua, mut fa) = (u0, self.residual(method, u0, keep_going)?);
+        let (mut ua, mut fa) = (u0, self.residual(method, u0, budget)?);
         if fa.abs() < 1e-10 {
             return Ok(ua);
         }
         // ln S falls with u at roughly the coarse slope; a small first step finds the fine one.
         let mut ub = (u0 + if fa > 0.0 { 1e-3 } else { -1e-3 }).clamp(bracket.0, bracket.1);
-        let mut fb = self.residual(method, ub, keep_going)?;
-        for _ in 0..12 {
+        let mut fb = self.residual(method, ub, budget)?;
+        // One iteration: one secant step and its film solve. A slope that is not a falling
+        // one stalls the steps; the root is then judged below.
+        let mut failure = None;
+        let run = Driver::new(
+            "secant_equilibrium",
+            IterationUnit::RootSearchSteps,
+            12,
+            budget,
+        )
+        .run(|_| {
             if fb.abs() < 1e-10 {
-                return Ok(ub);
+                return Verdict::Converged(ub, fb.abs());
             }
             let slope = (fb - fa) / (ub - ua);
             if !(slope.is_finite() && slope < 0.0) {
-                break;
+                return Verdict::Stalled(fb.abs());
             }
             let next = (ub - fb / slope).clamp(bracket.0, bracket.1);
             (ua, fa) = (ub, fb);
             ub = next;
-            fb = self.residual(method, ub, keep_going)?;
+            fb = match self.residual(method, ub, budget) {
+                Ok(r) => r,
+                Err(e) => {
+                    failure = Some(e);
+                    return Verdict::Diverged(f64::NAN);
+                }
+            };
             if (ub - ua).abs() < 1e-9 {
-                return Ok(ub);
+                return Verdict::Converged(ub, (ub - ua).abs());
             }
+            Verdict::Continue(fb.abs())
+        });
+        if let Some(e) = failure {
+            return Err(e);
+        }
+        match run {
+            Ok(root) => return Ok(root.value),
+            Err(stopped) if stopped.reason() == StopReason::Deadline => return Err(stopped.into()),
+            Err(_) => {}
         }
         // The solver's own tolerance bounds how small the residual gets: accept a root good
         // to 1e-7 in ln S (the load to 1e-7), else search the whole bracket on this mesh.
         if fb.abs() < 1e-7 {
             return Ok(ub);
         }
-        self.bracketed(method, bracket, 1e-10, keep_going)
+        self.bracketed(method, bracket, 1e-10, budget)
     }
 }
 
@@ -693,7 +707,7 @@ mod tests {
     fn equilibrium_is_cheap_and_exact() {
         let m = Method::numerical(Level::Standard, None, None);
         for s in [0.0447, 0.5, 0.005, 20.0] {
-            let (p, n) = equilibrium(s, 1.0, m, FilmModel::REYNOLDS, &mut || true).unwrap();
+            let (p, n) = equilibrium(s, 1.0, m, FilmModel::REYNOLDS, &Budget::unlimited()).unwrap();
             assert!(
                 (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
                 "S {s}: {}",

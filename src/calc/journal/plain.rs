@@ -6,7 +6,8 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::feed::FeedSpec;
+use super::eccentricity::EccentricityRatio;
+use super::feed_spec::{FeedKind, FeedSpec};
 use super::film::Misalignment;
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
@@ -112,6 +113,12 @@ pub struct JournalEffects {
     /// Fluid inertia: reported from the reduced Reynolds number Re·C/R against 1; not modelled.
     #[serde(default)]
     pub inertia: Mode,
+    /// Journal misalignment (Khonsari & Booser Eq. 8.70: the whole-length film of a tilted
+    /// journal). `auto` and `on` apply the request's `misalignment` when it gives one (the
+    /// journal is aligned otherwise); `off` solves the aligned journal whatever `misalignment`
+    /// gives.
+    #[serde(default)]
+    pub misalignment: Mode,
 }
 
 impl From<JournalEffects> for Effects {
@@ -121,6 +128,7 @@ impl From<JournalEffects> for Effects {
             cavitation: e.cavitation.into(),
             turbulence: e.turbulence,
             inertia: e.inertia,
+            misalignment: e.misalignment,
         }
     }
 }
@@ -233,7 +241,7 @@ impl Validate for PlainInput {
                 None
             }
             (None, Some(eps)) if (1e-4..=MAX_ECCENTRICITY).contains(&eps) => {
-                Some(operating::Given::Eccentricity(eps))
+                EccentricityRatio::new(eps).map(operating::Given::Eccentricity)
             }
             (None, Some(eps)) => {
                 errors.push(FieldError::new(
@@ -332,7 +340,9 @@ impl Validate for PlainInput {
                         format!("the ends of the journal move {tilt:.3} C apart: it would touch the bearing even when centred"),
                     ));
                 }
-                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm)) {
+                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
+                    && self.effects.misalignment != Mode::Off
+                {
                     errors.push(FieldError::new(
                         "/misalignment",
                         "the closed forms are for an aligned journal; use a numerical fidelity",
@@ -346,9 +356,10 @@ impl Validate for PlainInput {
             }
         };
         if misalignment.is_some()
+            && self.effects.misalignment != Mode::Off
             && self
                 .feed
-                .is_some_and(|f| f.kind == super::feed::FeedKind::CircumferentialGroove)
+                .is_some_and(|f| f.kind == FeedKind::CircumferentialGroove)
         {
             errors.push(FieldError::new("/misalignment", "a misaligned bearing with a circumferential groove is not modelled (the two lands tilt differently)"));
         }
@@ -684,7 +695,7 @@ impl From<Solution> for PlainOutput {
         PlainOutput {
             load_n: s.load_n,
             sommerfeld_number: s.sommerfeld_number,
-            eccentricity_ratio: s.eccentricity_ratio,
+            eccentricity_ratio: s.eccentricity_ratio.get(),
             attitude_angle_deg: s.attitude_angle.to_degrees(),
             min_film_thickness_m: s.min_film_thickness_m,
             max_pressure_pa: s.max_pressure_pa,

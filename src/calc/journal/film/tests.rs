@@ -1,4 +1,5 @@
 use super::*;
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::performance::positioned_film;
 use crate::calc::CalcError;
 
@@ -32,12 +33,19 @@ fn fed_at_max_film_it_carries_the_reynolds_load_and_conserves_mass() {
     };
     for ld in [0.5, 1.0] {
         for eps in [0.2, 0.6, 0.9] {
-            let (r, _) = solve(Film::steady(eps, ld), mesh, STOP, None, &mut || true).unwrap();
+            let (r, _) = solve(
+                Film::steady(eps, ld),
+                mesh,
+                STOP,
+                None,
+                &Budget::unlimited(),
+            )
+            .unwrap();
             let film = Film {
                 physics: jfo(FeedLine::MaxFilm),
                 ..Film::steady(eps, ld)
             };
-            let (j, _) = solve(film, mesh, STOP, None, &mut || true).unwrap();
+            let (j, _) = solve(film, mesh, STOP, None, &Budget::unlimited()).unwrap();
             let ratio = j.sommerfeld_number() / r.sommerfeld_number();
             assert!((ratio - 1.0).abs() < 0.02, "L/D {ld} ε {eps}: {ratio}");
             let dphi = (j.attitude_angle() - r.attitude_angle()).to_degrees();
@@ -66,15 +74,22 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
         axial_half: 12,
     };
     for (eps, least) in [(0.05, 1.10), (0.3, 1.02)] {
-        let (r, _) = solve(Film::steady(eps, 1.0), mesh, STOP, None, &mut || true).unwrap();
+        let (r, _) = solve(
+            Film::steady(eps, 1.0),
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         let (film, j, _) = positioned_film(
-            eps,
+            EccentricityRatio::new(eps).unwrap(),
             1.0,
             jfo(FeedLine::OppositeLoad),
             mesh,
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap();
         let ratio = j.sommerfeld_number() / r.sommerfeld_number();
@@ -107,7 +122,7 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
 fn the_reformation_case_converges_under_refinement() {
     let s = |n: usize, m: usize| {
         positioned_film(
-            0.3,
+            EccentricityRatio::new(0.3).unwrap(),
             1.0,
             jfo(FeedLine::OppositeLoad),
             Mesh {
@@ -116,7 +131,7 @@ fn the_reformation_case_converges_under_refinement() {
             },
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap()
         .1
@@ -132,9 +147,17 @@ fn the_reformation_case_converges_under_refinement() {
             axial_half: m,
         };
         let model = ported(FeedLine::OppositeLoad, 0.5, 0.25, 1.0);
-        let f = positioned_film(0.5, 1.0, model, mesh, STOP, None, &mut || true)
-            .unwrap()
-            .1;
+        let f = positioned_film(
+            EccentricityRatio::new(0.5).unwrap(),
+            1.0,
+            model,
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap()
+        .1;
         (f.sommerfeld_number(), f.inlet_flow_nd)
     };
     // S settles within 0.1 % from 48 × 6 on (0.18402, 0.18393, 0.18393, 0.18404: the port's
@@ -164,7 +187,15 @@ fn finite_from_light_to_heavy_load() {
                 ported(FeedLine::TwoGrooves, 0.8, 0.3, 2.0),
             ] {
                 let feed = model.mass_conserving;
-                let j = match positioned_film(eps, ld, model, mesh, STOP, None, &mut || true) {
+                let j = match positioned_film(
+                    EccentricityRatio::new(eps).unwrap(),
+                    ld,
+                    model,
+                    mesh,
+                    STOP,
+                    None,
+                    &Budget::unlimited(),
+                ) {
                     Ok((_, j, _)) => j,
                     // At light load a port's supply pressure may outweigh the film.
                     Err(CalcError::Impossible { pointer, .. })
@@ -238,11 +269,26 @@ fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
         axial_half: 12,
     };
     let s = |model: FilmModel| {
-        let (_, f, _) = positioned_film(0.7, 1.0, model, mesh, STOP, None, &mut || true)
-            .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
+        let (_, f, _) = positioned_film(
+            EccentricityRatio::new(0.7).unwrap(),
+            1.0,
+            model,
+            mesh,
+            STOP,
+            None,
+            &Budget::unlimited(),
+        )
+        .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
         f
     };
-    let (r, _) = solve(Film::steady(0.7, 1.0), mesh, STOP, None, &mut || true).unwrap();
+    let (r, _) = solve(
+        Film::steady(0.7, 1.0),
+        mesh,
+        STOP,
+        None,
+        &Budget::unlimited(),
+    )
+    .unwrap();
     let line = s(ported(FeedLine::MaxFilm, 1.0, 0.0, 0.0));
     assert!((line.sommerfeld_number() / r.sommerfeld_number() - 1.0).abs() < 1e-3);
     let hole = s(ported(FeedLine::OppositeLoad, 0.2, 0.2, 0.5));
@@ -274,13 +320,13 @@ fn more_supply_pressure_floods_more_of_the_film() {
     let mut last: Option<FilmSolution> = None;
     for p in [0.1, 1.0, 10.0] {
         let (_, f, _) = positioned_film(
-            0.5,
+            EccentricityRatio::new(0.5).unwrap(),
             1.0,
             ported(FeedLine::OppositeLoad, 0.2, 0.2, p),
             mesh,
             STOP,
             None,
-            &mut || true,
+            &Budget::unlimited(),
         )
         .unwrap();
         if let Some(prev) = &last {

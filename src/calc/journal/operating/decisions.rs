@@ -114,10 +114,11 @@ pub(super) fn validity_warnings(notes: &mut Notes, case: &Case, point: &Point) {
         ),
         _ => {}
     }
-    if point.eccentricity_ratio > 0.95 {
+    let eps = point.eccentricity_ratio.get();
+    if eps > 0.95 {
         notes.warn(
             "very_high_eccentricity",
-            format!("ε = {:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", point.eccentricity_ratio, 100.0 * (1.0 - point.eccentricity_ratio)),
+            format!("ε = {eps:.4}: the minimum film is {:.1} % of the clearance; surface roughness, elastic and thermal distortion matter here", 100.0 * (1.0 - eps)),
         );
     }
 }
@@ -159,17 +160,22 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
     notes.decide("cavitation", cavitation);
 }
 
-/// Misalignment: applied when the request tilts the journal.
+/// Misalignment: applied when the request tilts the journal and the effect is not off.
 pub(super) fn decide_misalignment(notes: &mut Notes, case: &Case) {
+    let mode = case.effects.misalignment;
     notes.decide(
         "misalignment",
-        match case.misalignment {
-            None => Decision::not_applicable(Mode::Auto, "the request gives no misalignment: journal aligned"),
-            Some(Misalignment {
+        match (case.misalignment, mode) {
+            (None, _) => Decision::not_applicable(mode, "the request gives no misalignment: journal aligned"),
+            (Some(Misalignment { tilt: e, .. }), Mode::Off) => Decision::not_applicable(
+                mode,
+                format!("requested off: the misalignment given (ε′ = {e:.4} of the clearance) is not applied; journal aligned"),
+            ),
+            (Some(Misalignment {
                 tilt: e,
                 direction: dir,
                 from_line_of_centres: from_centres,
-            }) => Decision {
+            }), Mode::Auto | Mode::On) => Decision {
                 applied: true,
                 mode: Mode::On,
                 reason: format!(

@@ -1,6 +1,7 @@
 //! The plain bearing's domain result: what the model computes, in SI units and radians; the
 //! wire (`plain.rs`) maps it into the response.
 
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::feed::Flows;
 use crate::fidelity::SolverReport;
 
@@ -13,7 +14,7 @@ pub struct Solution {
     /// Steady load W, N (the whole bearing's).
     pub load_n: f64,
     pub sommerfeld_number: f64,
-    pub eccentricity_ratio: f64,
+    pub eccentricity_ratio: EccentricityRatio,
     /// φ, between the load line and the line of centres, rad.
     pub attitude_angle: f64,
     pub min_film_thickness_m: f64,

@@ -6,20 +6,24 @@ use std::f64::consts::PI;
 use super::{Case, Notes, Operating, RotorStability, GRAVITY};
 use crate::calc::journal::closed_form;
 use crate::calc::journal::dynamics::{self, Coefficients};
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::film::FilmModel;
 use crate::calc::journal::performance::{self, Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::{Budget, CalcError};
+use crate::fidelity::{IterationUnit, StopReason};
+use crate::numerics::driver::{Driver, Verdict};
 use crate::numerics::roots::{brent, Stopping};
 
 /// Coefficients at ε for the case's method (None for the long closed form), and S there.
 pub(super) fn coefficients_at(
     case: &Case,
     method: Method,
-    eps: f64,
+    eccentricity: EccentricityRatio,
     physics: FilmModel,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
+    let eps = eccentricity.get();
     match method {
         Method::ClosedForm(Approximation::Short) => {
             let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
@@ -33,10 +37,15 @@ pub(super) fn coefficients_at(
         }
         Method::ClosedForm(Approximation::Long) => Ok(None),
         Method::Numerical { mesh, stop, .. } => {
-            let mut alive = || budget.alive();
-            dynamics::perturbation(eps, ld, physics, mesh, stop, &mut alive).map(Some)
+            dynamics::perturbation(eccentricity, ld, physics, mesh, stop, budget).map(Some)
         }
     }
+}
+
+/// A point of the locus walk or the threshold search as an eccentricity ratio (they stay
+/// within [10⁻³, MAX_ECCENTRICITY]).
+fn ratio(e: f64) -> Result<EccentricityRatio, CalcError> {
+    EccentricityRatio::new(e).ok_or_else(|| CalcError::Internal(format!("stability: ε = {e}")))
 }
 
 pub(super) fn dynamic_coefficients(
@@ -52,9 +61,11 @@ pub(super) fn dynamic_coefficients(
         );
         return Ok(None);
     }
-    let eps = op.point.eccentricity_ratio;
+    let eccentricity = op.point.eccentricity_ratio;
+    let eps = eccentricity.get();
     let physics = case.physics(op.temperature_c);
-    let Some(coefficients) = coefficients_at(case, case.method, eps, physics, budget)? else {
+    let Some(coefficients) = coefficients_at(case, case.method, eccentricity, physics, budget)?
+    else {
         notes.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
     };
@@ -90,10 +101,9 @@ pub(super) fn dynamic_coefficients(
     // S_op on the search mesh: one film solve, not a set of perturbations.
     let s_op = match search {
         Method::Numerical { mesh, stop, .. } => {
-            let mut alive = || budget.alive();
             let ld = case.geometry.l_over_d();
             let (_, film, _) =
-                performance::positioned_film(eps, ld, physics, mesh, stop, None, &mut alive)?;
+                performance::positioned_film(eccentricity, ld, physics, mesh, stop, None, budget)?;
             film.sommerfeld_number()
         }
         _ => s_op,
@@ -110,23 +120,48 @@ pub(super) fn dynamic_coefficients(
             return Ok(physics);
         };
         let ld = case.geometry.l_over_d();
+        let e = ratio(e)?;
         let mut re = re_op;
+        let mut failure = None;
         // 10⁻⁴ in Re moves the Ng–Pan factors by far less than the mesh error; a contraction
-        // this mild settles in three or four solves, and twelve bound the cost.
-        for _ in 0..12 {
-            let mut alive = || budget.alive();
+        // this mild settles in three or four solves, and twelve bound the cost (the last Re is
+        // taken at the cap). One iteration: one film solve.
+        let run = Driver::new(
+            "fixed_point_reynolds_number",
+            IterationUnit::Evaluations,
+            12,
+            budget,
+        )
+        .run(|_| {
             let with = FilmModel {
                 turbulence_reynolds: Some(re),
                 ..physics
             };
-            let (_, film, _) =
-                performance::positioned_film(e, ld, with, mesh, stop, None, &mut alive)?;
-            let next = re_op * film.sommerfeld_number() / s_op;
-            let settled = (next / re - 1.0).abs() < 1e-4;
-            re = next;
-            if settled {
-                break;
+            match performance::positioned_film(e, ld, with, mesh, stop, None, budget) {
+                Ok((_, film, _)) => {
+                    let next = re_op * film.sommerfeld_number() / s_op;
+                    let change = (next / re - 1.0).abs();
+                    re = next;
+                    if change < 1e-4 {
+                        Verdict::Converged((), change)
+                    } else {
+                        Verdict::Continue(change)
+                    }
+                }
+                Err(err) => {
+                    failure = Some(err);
+                    Verdict::Diverged(f64::NAN)
+                }
             }
+        });
+        if let Some(err) = failure {
+            return Err(err);
+        }
+        match run {
+            Err(stopped) if stopped.reason() != StopReason::IterationCap => {
+                return Err(stopped.into())
+            }
+            _ => {}
         }
         Ok(FilmModel {
             turbulence_reynolds: Some(re),
@@ -135,7 +170,7 @@ pub(super) fn dynamic_coefficients(
     };
     let failure = std::cell::RefCell::new(None);
     let mut margin = |e: f64| -> f64 {
-        match locus_physics(e).and_then(|ph| coefficients_at(case, search, e, ph, budget)) {
+        match locus_physics(e).and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, budget)) {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
@@ -157,32 +192,43 @@ pub(super) fn dynamic_coefficients(
         }
     };
     let m0 = if stable_now { 1.0 } else { -1.0 };
-    let mut bracket = None;
+    // Walk the locus towards lighter (stable now) or heavier loads, ε shrinking or growing by
+    // 0.6 each step, until the margin changes sign: the bracket of the threshold. One iteration:
+    // one margin (a set of coefficients); the walk ends without a bracket where the locus does
+    // (ε = 10⁻³ or MAX_ECCENTRICITY, or a margin that cannot be taken), or after ten steps.
     let mut previous = eps;
     let mut lightest = eps;
-    for k in 1..=10 {
+    let mut k = 0;
+    let walk = Driver::new("locus_walk", IterationUnit::Evaluations, 10, budget).run(|_| {
+        k += 1;
         let next = if stable_now {
             (eps * 0.6f64.powi(k)).max(1e-3)
         } else {
             (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
         };
+        let width = (next - previous).abs();
         let m = margin(next);
         if m.is_nan() {
-            break;
+            return Verdict::Converged(None, width);
         }
         lightest = lightest.min(next);
         if m.signum() != m0 {
-            bracket = Some((previous, next));
-            break;
+            return Verdict::Converged(Some((previous, next)), width);
         }
         previous = next;
         if next <= 1e-3 || next >= MAX_ECCENTRICITY {
-            break;
+            return Verdict::Converged(None, width);
         }
-    }
+        Verdict::Continue(width)
+    });
     if let Some(e) = failure.borrow_mut().take() {
         return Err(e);
     }
+    let bracket = match walk {
+        Ok(found) => found.value,
+        Err(stopped) if stopped.reason() == StopReason::IterationCap => None,
+        Err(stopped) => return Err(stopped.into()),
+    };
     let threshold_eps = match bracket {
         Some((a, b)) => brent(
             &mut margin,
@@ -202,7 +248,7 @@ pub(super) fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, e, locus_physics(e)?, budget)?
+            coefficients_at(case, search, ratio(e)?, locus_physics(e)?, budget)?
                 .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),

@@ -4,6 +4,7 @@
 use std::f64::consts::PI;
 
 use super::{BushTemperatures, Case, Notes, Operating, MAX_TEMPERATURE_RISE_K};
+use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent, RootError, Stopping};
 
@@ -15,8 +16,9 @@ pub(super) fn thd_temperatures(
     notes: &mut Notes,
     case: &Case,
     t_in: f64,
-    eps: f64,
+    eccentricity: EccentricityRatio,
 ) -> Option<BushTemperatures> {
+    let eps = eccentricity.get();
     let lub = &case.lubricant;
     let g = case.geometry;
     let mu = lub.viscosity_pa_s(t_in);
@@ -96,11 +98,9 @@ pub(super) fn effective_temperature(
         Ok(r) => case
             .operate(r.x, budget)
             .or_else(|_| last.ok_or(CalcError::Internal("thermal".into()))),
-        Err(RootError::NotConverged { iterations, width }) => Err(CalcError::NotConverged {
-            method: "brent_effective_temperature",
-            iterations,
-            residual: width,
-        }),
+        Err(e @ RootError::NotConverged { .. }) => {
+            Err(CalcError::from_root("brent_effective_temperature", e))
+        }
         Err(e) => Err(CalcError::impossible(
             "/inlet_temperature_c",
             format!(

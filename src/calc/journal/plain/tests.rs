@@ -7,8 +7,7 @@ use super::*;
 use crate::calc::testing;
 
 /// Effects are named once: the effects the room decides at run time (the README example) are
-/// the ones `EFFECTS` lists, and the request's `effects` object has a field for each of them
-/// but `misalignment`, which the request's `misalignment` geometry decides.
+/// the ones `EFFECTS` lists, and the request's `effects` object has a field for each of them.
 #[test]
 fn decided_effects_match_the_list_and_the_request_fields() {
     let request: Value = serde_json::from_str(PlainJournal::EXAMPLE).expect("the example is JSON");
@@ -32,10 +31,32 @@ fn decided_effects_match_the_list_and_the_request_fields() {
         .map(String::as_str)
         .collect();
     fields.sort_unstable();
-    let requested: Vec<&str> = listed
-        .iter()
-        .copied()
-        .filter(|e| *e != "misalignment")
-        .collect();
-    assert_eq!(fields, requested);
+    assert_eq!(fields, listed);
+}
+
+/// Misalignment is an effect like the others: `off` solves the aligned journal whatever the
+/// request's `misalignment` gives, and says so; `on` without a misalignment is not applicable.
+#[test]
+fn misalignment_off_solves_the_aligned_journal() {
+    let mut request: Value = serde_json::from_str(PlainJournal::EXAMPLE).expect("JSON");
+    request["fidelity"] = "fast".into();
+    request["dynamics"] = false.into();
+    let aligned = testing::ok::<PlainJournal>(&request);
+    request["effects"] = serde_json::json!({"misalignment": "on"});
+    let on_without = testing::ok::<PlainJournal>(&request);
+    assert_eq!(on_without["effects"]["misalignment"]["applied"], false);
+    assert_eq!(on_without["effects"]["misalignment"]["mode"], "on");
+    request["misalignment"] = serde_json::json!({"slope_rad": 0.0001});
+    request["effects"] = serde_json::json!({"misalignment": "off"});
+    let off = testing::ok::<PlainJournal>(&request);
+    let decision = &off["effects"]["misalignment"];
+    assert_eq!(
+        (&decision["applied"], &decision["mode"]),
+        (&false.into(), &"off".into())
+    );
+    assert!(decision["reason"]
+        .as_str()
+        .is_some_and(|r| r.contains("not applied")));
+    assert!(off["result"].get("misalignment_moment").is_none());
+    assert_eq!(off["result"], aligned["result"]);
 }
