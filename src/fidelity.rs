@@ -100,6 +100,17 @@ impl SolverReport {
         }
     }
 
+    /// A closed form inverted by a search (an equilibrium from the closed form's load): the
+    /// closed form evaluated `evaluations` times until the search converged.
+    pub fn closed_form_search(method: &str, evaluations: u32) -> Self {
+        SolverReport {
+            iterations: evaluations,
+            iterations_unit: IterationUnit::Evaluations,
+            stop_reason: StopReason::Converged,
+            ..SolverReport::closed_form(method)
+        }
+    }
+
     /// The same report under the room's name for its method.
     #[must_use]
     pub fn named(mut self, method: impl Into<String>) -> Self {

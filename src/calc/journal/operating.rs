@@ -20,9 +20,9 @@ use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
 use super::performance::{self, Method, Point};
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::Lubricant;
-use crate::calc::{Budget, CalcError, Warning};
+use crate::calc::{Budget, CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::fidelity::{IterationUnit, SolverReport, StopReason};
+use crate::fidelity::SolverReport;
 
 /// Standard gravity, m/s² (the default rotor mass is W/g).
 const GRAVITY: f64 = 9.80665;
@@ -117,26 +117,6 @@ pub struct Effects {
     pub inertia: Mode,
     /// Applies the request's misalignment (auto, on) or not (off).
     pub misalignment: Mode,
-}
-
-/// What the model says beside its numbers, in the order it said it: the decision on each effect
-/// and the warnings (the caller records them).
-#[derive(Debug, Clone, Default)]
-pub struct Notes {
-    pub decisions: Vec<(&'static str, Decision)>,
-    pub warnings: Vec<Warning>,
-}
-
-impl Notes {
-    fn decide(&mut self, effect: &'static str, decision: Decision) {
-        self.decisions.push((effect, decision));
-    }
-    fn warn(&mut self, code: &'static str, message: impl Into<String>) {
-        self.warnings.push(Warning {
-            code,
-            message: message.into(),
-        });
-    }
 }
 
 /// A solved operating point at one viscosity.
@@ -656,24 +636,23 @@ fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
     match case.method {
         Method::ClosedForm(_) => {
             let name = decisions::approximation_name(case).unwrap_or_default();
-            let mut report = SolverReport::closed_form(&format!("closed_form_{name}"));
-            if evaluations > 0 {
-                report.iterations = evaluations;
-                report.iterations_unit = IterationUnit::Evaluations;
-                report.stop_reason = StopReason::Converged;
+            let method = format!("closed_form_{name}");
+            match evaluations {
+                0 => SolverReport::closed_form(&method),
+                n => SolverReport::closed_form_search(&method, n),
             }
-            report
         }
         Method::Numerical { level, mesh, .. } => {
-            let mut report = point
+            let report = point
                 .solve
                 .clone()
-                .expect("a numerical point carries its film solves' report")
+                .expect("a numerical point carries its film solves' report");
+            let sweeps = report.iterations;
+            report
                 .at(level)
                 .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
-                .with_error_estimate(point.error_estimate);
-            report.evaluations = (evaluations > 0).then_some(evaluations);
-            report
+                .with_error_estimate(point.error_estimate)
+                .counting(sweeps, evaluations)
         }
     }
 }

@@ -679,12 +679,7 @@ impl Calculation for PlainJournal {
 
     fn run(case: Case, ctx: &mut Context) -> Result<PlainOutput, CalcError> {
         let solution = operating::solve(&case, &ctx.budget())?;
-        for (effect, decision) in &solution.notes.decisions {
-            ctx.decide(effect, decision.clone());
-        }
-        for warning in &solution.notes.warnings {
-            ctx.warn(warning.code, warning.message.clone());
-        }
+        ctx.record(&solution.notes);
         ctx.report(solution.report.clone());
         Ok(PlainOutput::from(solution))
     }
