@@ -8,6 +8,7 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::iso76::StaticCapacityCase;
 use super::kinematics::{self, ContactAngle, KinematicsCase, KinematicsOutput};
 use super::life::{
     self, BearingKind, ContaminationFactor, LifeCase, LifeInput, LifeOutput, Reliability,
@@ -17,9 +18,7 @@ use super::load_distribution::{
     LoadDistributionRequest, Loading,
 };
 use super::roller::RollerBearingSpec;
-use super::static_capacity::{
-    self, StaticCapacity, StaticCapacityCase, StaticCapacityOutput, StaticLoading,
-};
+use super::static_capacity::{self, StaticCapacity, StaticCapacityOutput, StaticLoading};
 use crate::calc::contact::ehl::closed_form::{self, FilmCase, FilmEffects};
 use crate::calc::contact::ehl::film::EhlFilmOutput;
 use crate::calc::contact::hertz::{Body, Contact, Field, Method, Shape};
