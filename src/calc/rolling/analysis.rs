@@ -8,11 +8,10 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::iso281::LifeCase;
 use super::iso76::StaticCapacityCase;
 use super::kinematics::{self, ContactAngle, KinematicsCase, KinematicsOutput};
-use super::life::{
-    self, BearingKind, ContaminationFactor, LifeCase, LifeInput, LifeOutput, Reliability,
-};
+use super::life::{self, BearingKind, ContaminationFactor, LifeInput, LifeOutput, Reliability};
 use super::load_distribution::{
     self, parse_at, ContactAngleMode, LoadDistributionEffects, LoadDistributionOutput,
     LoadDistributionRequest, Loading,

@@ -21,6 +21,7 @@ mod ball_equilibrium;
 pub mod friction;
 pub mod geometry;
 pub mod grease_life;
+mod iso281;
 mod iso76;
 pub mod kinematics;
 pub mod life;
