@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use utoipa::ToSchema;
 
-use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::bearing_spec::{BallBearingSpec, MaterialSpec, RollerBearingSpec};
 use super::iso281::LifeCase;
 use super::iso76::StaticCapacityCase;
 use super::kinematics::{self, ContactAngle, KinematicsCase, KinematicsOutput};
@@ -16,7 +16,6 @@ use super::load_distribution::{
     self, parse_at, ContactAngleMode, LoadDistributionEffects, LoadDistributionOutput,
     LoadDistributionRequest, Loading,
 };
-use super::roller::RollerBearingSpec;
 use super::static_capacity::{self, StaticCapacity, StaticCapacityOutput, StaticLoading};
 use crate::calc::contact::ehl::closed_form::{self, FilmCase, FilmEffects};
 use crate::calc::contact::ehl::film::EhlFilmOutput;

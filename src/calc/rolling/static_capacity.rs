@@ -10,12 +10,13 @@ use utoipa::ToSchema;
 
 use serde_json::Value;
 
-use super::geometry::{BallBearing, BallBearingSpec};
+use super::bearing_spec::{BallBearingSpec, RollerBearingSpec};
+use super::geometry::BallBearing;
 use super::iso76::{
     self, iso_factors, Operation, QuietRunning, StaticCapacityCase, REFERENCE_CONFORMITY,
 };
 use super::load_distribution::{parse_at, LoadDistributionBearing};
-use super::roller::{RollerBearing, RollerBearingSpec};
+use super::roller::RollerBearing;
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
