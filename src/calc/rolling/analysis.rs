@@ -7,19 +7,16 @@ use serde::{Deserialize, Serialize};
 use serde_json::Value;
 use utoipa::ToSchema;
 
-use super::geometry::{BallBearingSpec, MaterialSpec};
+use super::bearing_spec::{BallBearingSpec, MaterialSpec, RollerBearingSpec};
+use super::iso281::LifeCase;
+use super::iso76::StaticCapacityCase;
 use super::kinematics::{self, ContactAngle, KinematicsCase, KinematicsOutput};
-use super::life::{
-    self, BearingKind, ContaminationFactor, LifeCase, LifeInput, LifeOutput, Reliability,
-};
+use super::life::{self, BearingKind, ContaminationFactor, LifeInput, LifeOutput, Reliability};
 use super::load_distribution::{
     self, parse_at, ContactAngleMode, LoadDistributionEffects, LoadDistributionOutput,
     LoadDistributionRequest, Loading,
 };
-use super::roller::RollerBearingSpec;
-use super::static_capacity::{
-    self, StaticCapacity, StaticCapacityCase, StaticCapacityOutput, StaticLoading,
-};
+use super::static_capacity::{self, StaticCapacity, StaticCapacityOutput, StaticLoading};
 use crate::calc::contact::ehl::closed_form::{self, FilmCase, FilmEffects};
 use crate::calc::contact::ehl::film::EhlFilmOutput;
 use crate::calc::contact::hertz::{Body, Contact, Field, Method, Shape};

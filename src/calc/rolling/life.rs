@@ -2,6 +2,8 @@
 //! (factor a1), and the modified life a1·a_ISO·L10 of ISO 281:2007 from the lubrication
 //! (viscosity ratio κ) and contamination (e_C C_u/P).
 //!
+//! This file is the wire; the formulas below are computed by the model `iso281.rs`.
+//!
 //! - Basic rating life (Khonsari & Booser RB-3, eqs 13.5–13.7; Hamrock 21.3.6):
 //!   L10 = (C/P)^p million revolutions, p = 3 for balls (point contact), 10/3 for rollers (line
 //!   contact); L10h = 10⁶ L10/(60 n).
@@ -40,6 +42,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::iso281::{self, FactorSet, KappaSource, Kind, LifeCase, Lubrication};
 use crate::calc::quantity::{NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
@@ -56,16 +59,8 @@ const SPEED_RANGE_RPM: (f64, f64) = (1e-6, 1e7);
 const MAX_PITCH_DIAMETER_M: f64 = 100.0;
 /// Largest number of duty-cycle steps.
 const MAX_DUTY_STEPS: usize = 1000;
-/// κ range of the a_ISO formulas (ISO 281:2007 §9.3.3.4); outside, κ is clipped with a warning.
-const KAPPA_RANGE: (f64, f64) = (0.1, 4.0);
-/// a_ISO is capped here (ISO 281:2007; Khonsari & Booser RB-7: "do not use > 50").
-const A_ISO_CAP: f64 = 50.0;
-/// Reliability range of ISO 281:2007's a1 table, percent.
-const ISO_RELIABILITY_RANGE: (f64, f64) = (90.0, 99.95);
 /// Default Weibull slope of the texts' a1 (Khonsari & Booser Table 13.9).
 const TEXTS_WEIBULL_SLOPE: f64 = 1.5;
-/// ν1's speed break, rpm.
-const NU1_BREAK_RPM: f64 = 1000.0;
 
 /// Ball or roller bearing: the life exponent and the a_ISO constants.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, Serialize, ToSchema)]
@@ -80,10 +75,7 @@ pub enum BearingKind {
 impl BearingKind {
     /// The life exponent p of L10 = (C/P)^p.
     pub fn life_exponent(self) -> f64 {
-        match self {
-            BearingKind::Ball => 3.0,
-            BearingKind::Roller => 10.0 / 3.0,
-        }
+        Kind::from(self).life_exponent()
     }
 }
 
@@ -220,42 +212,6 @@ pub struct LifeInput {
     /// Fatigue load limit C_u (SKF's P_u), N, > 0 (catalogue); needed for a_ISO.
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e12, example = 980.0)]
     pub fatigue_load_limit_n: Option<Positive>,
-}
-
-/// Where κ comes from.
-#[derive(Debug, Clone, Copy, PartialEq)]
-enum KappaSource {
-    Given(f64),
-    /// κ = ν/ν1 with ν1 from the speed and the pitch diameter.
-    Viscosity {
-        viscosity_mm2_s: f64,
-        pitch_diameter_mm: f64,
-    },
-}
-
-/// What the modified life needs: κ's source, e_C and C_u.
-#[derive(Debug, Clone, Copy, PartialEq)]
-struct Lubrication {
-    kappa: KappaSource,
-    contamination: f64,
-    fatigue_load_limit_n: f64,
-}
-
-/// The validated case, in N, rpm, percent and mm.
-#[derive(Debug, Clone, PartialEq)]
-pub struct LifeCase {
-    kind: BearingKind,
-    rating_n: f64,
-    load_n: f64,
-    /// Set when P = X F_r + Y F_a fell below F_r and was raised to it: (X F_r + Y F_a, F_r).
-    raised_from_n: Option<f64>,
-    speed_rpm: f64,
-    duty_steps: usize,
-    reliability_percent: f64,
-    factor_set: ReliabilityFactorSet,
-    weibull_slope: f64,
-    pitch_diameter_mm: Option<f64>,
-    lubrication: Option<Lubrication>,
 }
 
 /// The load and speed the life uses.
@@ -648,14 +604,14 @@ impl Validate for LifeInput {
         let lubrication = self.lubrication(&mut errors);
         match loading {
             Some(l) if errors.is_empty() => Ok(LifeCase {
-                kind: self.bearing_kind,
+                kind: self.bearing_kind.into(),
                 rating_n,
                 load_n: l.load_n,
                 raised_from_n: l.raised_from_n,
                 speed_rpm: l.speed_rpm,
                 duty_steps: l.duty_steps,
                 reliability_percent: self.reliability_percent.map_or(90.0, |r| r.0),
-                factor_set,
+                factor_set: factor_set.into(),
                 weibull_slope,
                 pitch_diameter_mm,
                 lubrication,
@@ -751,165 +707,68 @@ impl Calculation for Life {
     }
 }
 
-/// Reliability factor a1 at `reliability_percent` (see the module documentation).
-fn reliability_factor(set: ReliabilityFactorSet, reliability_percent: f64, slope: f64) -> f64 {
-    let w = (100.0 / reliability_percent).ln() / (100.0_f64 / 90.0).ln();
-    match set {
-        ReliabilityFactorSet::Weibull => w.powf(1.0 / slope),
-        ReliabilityFactorSet::Iso281_2007 => 0.95 * w.powf(2.0 / 3.0) + 0.05,
-    }
-}
-
-/// Rated viscosity ν1, mm²/s, at `speed_rpm` for a pitch diameter in mm.
-fn rated_viscosity(speed_rpm: f64, pitch_diameter_mm: f64) -> f64 {
-    if speed_rpm < NU1_BREAK_RPM {
-        45_000.0 * speed_rpm.powf(-0.83) / pitch_diameter_mm.sqrt()
-    } else {
-        4_500.0 / speed_rpm.sqrt() / pitch_diameter_mm.sqrt()
-    }
-}
-
-/// ISO 281:2007's a_ISO for κ already within [0.1, 4] and x = e_C C_u/P ≥ 0, capped at 50.
-fn a_iso(kind: BearingKind, kappa: f64, x: f64) -> f64 {
-    let (x1, m, q, r) = match kind {
-        BearingKind::Ball => (2.5671, 0.83, 1.0 / 3.0, 9.3),
-        BearingKind::Roller => (1.5859, 1.0, 0.4, 9.185),
-    };
-    let (x2, e) = match (kind, kappa) {
-        (BearingKind::Ball, k) if k < 0.4 => (2.2649, 0.054381),
-        (BearingKind::Roller, k) if k < 0.4 => (1.3993, 0.054381),
-        (BearingKind::Ball, k) if k < 1.0 => (1.9987, 0.19087),
-        (BearingKind::Roller, k) if k < 1.0 => (1.2348, 0.19087),
-        (BearingKind::Ball, _) => (1.9987, 0.071739),
-        (BearingKind::Roller, _) => (1.2348, 0.071739),
-    };
-    // At κ = 0.1 the lubrication term x₁ − x₂/κ^e is 0 to the constants' rounding (8·10⁻⁵ for
-    // balls, −1·10⁻⁴ for rollers): it is taken as ≥ 0, so a_ISO = 0.1 there for any x.
-    let lubrication = (x1 - x2 / kappa.powf(e)).max(0.0);
-    let bracket = 1.0 - lubrication.powf(m) * x.powf(q);
-    if bracket <= 0.0 {
-        return A_ISO_CAP;
-    }
-    (0.1 * bracket.powf(-r)).min(A_ISO_CAP)
-}
-
-/// The whole calculation, with its warnings.
+/// The whole calculation, with its warnings: the model's lives as the response.
 pub(super) fn life(case: &LifeCase, ctx: &mut Context) -> LifeOutput {
-    let p = case.kind.life_exponent();
-    let ratio = case.rating_n / case.load_n;
-    let l10 = ratio.powf(p);
-    let hours_per_million = 1e6 / (60.0 * case.speed_rpm);
-    let l10_hours = l10 * hours_per_million;
-    if ratio < 1.0 {
-        ctx.warn(
-            "load_above_rating",
-            format!(
-                "P = {:.6} N exceeds the dynamic load rating C = {} N: L10 < 10⁶ revolutions, beyond the range the rating life is meant for (and likely beyond the static capacity)",
-                case.load_n, case.rating_n
-            ),
-        );
-    }
-    if let Some(raw) = case.raised_from_n {
-        ctx.warn(
-            "equivalent_load_raised_to_radial",
-            format!(
-                "X F_r + Y F_a = {raw:.6} N is below the radial load; P = F_r = {:.6} N is used (Khonsari & Booser RB-4)",
-                case.load_n
-            ),
-        );
-    }
-    if case.duty_steps > 0 && case.lubrication.is_some() {
-        ctx.warn(
-            "duty_cycle_mean_speed",
-            format!(
-                "the rated viscosity and a_ISO use the duty cycle's time-mean speed {:.6} rpm and mean load {:.6} N",
-                case.speed_rpm, case.load_n
-            ),
-        );
-    }
-    let r = case.reliability_percent;
-    if r < ISO_RELIABILITY_RANGE.0 {
-        ctx.warn(
-            "reliability_below_90",
-            format!(
-                "R = {r} % is below the rating's 90 %: a1 > 1 extrapolates the Weibull relation"
-            ),
-        );
-    } else if case.factor_set == ReliabilityFactorSet::Iso281_2007 && r > ISO_RELIABILITY_RANGE.1 {
-        ctx.warn(
-            "reliability_beyond_iso_281",
-            format!(
-                "R = {r} % exceeds ISO 281:2007's a1 table (up to {} %): the formula is extrapolated",
-                ISO_RELIABILITY_RANGE.1
-            ),
-        );
-    }
-    let a1 = reliability_factor(case.factor_set, r, case.weibull_slope);
-    let rated = case
-        .pitch_diameter_mm
-        .map(|dm| rated_viscosity(case.speed_rpm, dm));
-    let mut out = LifeOutput {
-        bearing_kind: case.kind,
-        life_exponent: p,
+    let r = iso281::life(case);
+    ctx.record(&r.notes);
+    let m = r.modified;
+    LifeOutput {
+        bearing_kind: case.kind.into(),
+        life_exponent: r.life_exponent,
         equivalent_load_n: case.load_n,
-        load_ratio: ratio,
+        load_ratio: r.load_ratio,
         speed_rpm: case.speed_rpm,
-        l10_million_revolutions: l10,
-        l10_hours,
-        reliability_percent: r,
-        reliability_factor: case.factor_set,
-        a1,
-        life_at_reliability_million_revolutions: a1 * l10,
-        life_at_reliability_hours: a1 * l10_hours,
-        rated_viscosity_mm2_s: rated,
-        kappa: None,
-        kappa_used: None,
-        contamination_load_ratio: None,
-        a_iso: None,
-        modified_life_million_revolutions: None,
-        modified_life_hours: None,
-    };
-    let Some(lub) = case.lubrication else {
-        return out;
-    };
-    let kappa = match lub.kappa {
-        KappaSource::Given(k) => k,
-        KappaSource::Viscosity {
-            viscosity_mm2_s,
-            pitch_diameter_mm,
-        } => viscosity_mm2_s / rated_viscosity(case.speed_rpm, pitch_diameter_mm),
-    };
-    let kappa_used = kappa.clamp(KAPPA_RANGE.0, KAPPA_RANGE.1);
-    if kappa_used != kappa {
-        ctx.warn(
-            "kappa_clipped",
-            format!(
-                "κ = {kappa:.6} is outside ISO 281's range [{}, {}]: a_ISO uses κ = {kappa_used}{}",
-                KAPPA_RANGE.0,
-                KAPPA_RANGE.1,
-                if kappa < KAPPA_RANGE.0 {
-                    " (below 0.1 the film cannot separate the surfaces; the modified life is not reliable)"
-                } else {
-                    " (a thicker film does not lengthen the life further)"
-                }
-            ),
-        );
+        l10_million_revolutions: r.l10_million_revolutions,
+        l10_hours: r.l10_hours,
+        reliability_percent: case.reliability_percent,
+        reliability_factor: case.factor_set.into(),
+        a1: r.a1,
+        life_at_reliability_million_revolutions: r.life_at_reliability_million_revolutions,
+        life_at_reliability_hours: r.life_at_reliability_hours,
+        rated_viscosity_mm2_s: r.rated_viscosity_mm2_s,
+        kappa: m.map(|m| m.kappa),
+        kappa_used: m.map(|m| m.kappa_used),
+        contamination_load_ratio: m.map(|m| m.contamination_load_ratio),
+        a_iso: m.map(|m| m.a_iso),
+        modified_life_million_revolutions: m.map(|m| m.modified_life_million_revolutions),
+        modified_life_hours: m.map(|m| m.modified_life_hours),
     }
-    let x = lub.contamination * lub.fatigue_load_limit_n / case.load_n;
-    let a = a_iso(case.kind, kappa_used, x);
-    if a >= A_ISO_CAP {
-        ctx.warn(
-            "a_iso_capped",
-            format!("a_ISO reaches its cap {A_ISO_CAP} (e_C C_u/P = {x:.6}, κ = {kappa_used:.4}): the load is near or below the fatigue load limit"),
-        );
+}
+
+impl From<BearingKind> for Kind {
+    fn from(k: BearingKind) -> Self {
+        match k {
+            BearingKind::Ball => Kind::Ball,
+            BearingKind::Roller => Kind::Roller,
+        }
     }
-    out.kappa = Some(kappa);
-    out.kappa_used = Some(kappa_used);
-    out.contamination_load_ratio = Some(x);
-    out.a_iso = Some(a);
-    out.modified_life_million_revolutions = Some(a1 * a * l10);
-    out.modified_life_hours = Some(a1 * a * l10_hours);
-    out
+}
+
+impl From<Kind> for BearingKind {
+    fn from(k: Kind) -> Self {
+        match k {
+            Kind::Ball => BearingKind::Ball,
+            Kind::Roller => BearingKind::Roller,
+        }
+    }
+}
+
+impl From<ReliabilityFactorSet> for FactorSet {
+    fn from(s: ReliabilityFactorSet) -> Self {
+        match s {
+            ReliabilityFactorSet::Weibull => FactorSet::Weibull,
+            ReliabilityFactorSet::Iso281_2007 => FactorSet::Iso281_2007,
+        }
+    }
+}
+
+impl From<FactorSet> for ReliabilityFactorSet {
+    fn from(s: FactorSet) -> Self {
+        match s {
+            FactorSet::Weibull => ReliabilityFactorSet::Weibull,
+            FactorSet::Iso281_2007 => ReliabilityFactorSet::Iso281_2007,
+        }
+    }
 }
 
 #[cfg(test)]

@@ -1,5 +1,6 @@
 //! The life room's tests: the texts' examples, the a1 and a_ISO tables, warnings and the 422s.
 
+use super::iso281::{a_iso, rated_viscosity, reliability_factor, A_ISO_CAP};
 use super::*;
 
 use proptest::prelude::*;
@@ -121,7 +122,7 @@ fn khonsari_ex13_4_modified_life() {
     // The third cross-check of the spec, (κ = 2.5, "0.157") → 11.38, is e_C = 0.8:
     // x = 0.8 · 0.196 = 0.1568 (at x = 0.157 exactly a_ISO = 11.41).
     assert_rel(
-        a_iso(BearingKind::Ball, 2.5, 0.8 * 0.196),
+        a_iso(Kind::Ball, 2.5, 0.8 * 0.196),
         11.38,
         1e-3,
         "a_ISO(0.1568)",
@@ -161,13 +162,13 @@ fn reliability_factors_match_both_published_sets() {
         (98.0, 0.33, 0.33252, 0.37),
         (99.0, 0.21, 0.20877, 0.25),
     ] {
-        let w = reliability_factor(ReliabilityFactorSet::Weibull, r, TEXTS_WEIBULL_SLOPE);
+        let w = reliability_factor(FactorSet::Weibull, r, TEXTS_WEIBULL_SLOPE);
         assert!((w - table).abs() <= 0.005, "Table 13.9 {r}: {w} vs {table}");
         assert_rel(w, exact, 2e-5, &format!("texts {r}"));
-        let i = reliability_factor(ReliabilityFactorSet::Iso281_2007, r, 1.5);
+        let i = reliability_factor(FactorSet::Iso281_2007, r, 1.5);
         assert!((i - iso).abs() <= 0.005, "ISO {r}: {i} vs {iso}");
     }
-    let i = reliability_factor(ReliabilityFactorSet::Iso281_2007, 99.95, 1.5);
+    let i = reliability_factor(FactorSet::Iso281_2007, 99.95, 1.5);
     assert!((i - 0.077).abs() <= 0.0005, "ISO 99.95: {i}");
     let r = ok(
         &json!({"bearing_kind": "roller", "dynamic_load_rating_n": 1e5,
@@ -181,7 +182,7 @@ fn reliability_factors_match_both_published_sets() {
 #[test]
 fn roller_a_iso_is_continuous_across_its_kappa_bands() {
     for x in [0.01, 0.1, 0.5] {
-        for kind in [BearingKind::Ball, BearingKind::Roller] {
+        for kind in [Kind::Ball, Kind::Roller] {
             for k in [0.4, 1.0] {
                 let below = a_iso(kind, k * (1.0 - 1e-9), x);
                 let above = a_iso(kind, k, x);
@@ -490,7 +491,7 @@ fn bad_input_is_refused_with_its_pointer() {
     }
 }
 
-fn case(kind: BearingKind, c: f64, p: f64, reliability: f64) -> LifeCase {
+fn case(kind: Kind, c: f64, p: f64, reliability: f64) -> LifeCase {
     LifeCase {
         kind,
         rating_n: c,
@@ -499,7 +500,7 @@ fn case(kind: BearingKind, c: f64, p: f64, reliability: f64) -> LifeCase {
         speed_rpm: 1500.0,
         duty_steps: 0,
         reliability_percent: reliability,
-        factor_set: ReliabilityFactorSet::Weibull,
+        factor_set: FactorSet::Weibull,
         weibull_slope: TEXTS_WEIBULL_SLOPE,
         pitch_diameter_mm: Some(70.0),
         lubrication: Some(Lubrication {
@@ -518,11 +519,11 @@ fn run(case: &LifeCase) -> LifeOutput {
     life(case, &mut ctx)
 }
 
-fn kind_of(roller: bool) -> BearingKind {
+fn kind_of(roller: bool) -> Kind {
     if roller {
-        BearingKind::Roller
+        Kind::Roller
     } else {
-        BearingKind::Ball
+        Kind::Ball
     }
 }
 
@@ -543,7 +544,7 @@ proptest! {
     #[test]
     fn a1_decreases_with_reliability(r1 in 1.0f64..99.99, r2 in 1.0f64..99.99, iso in any::<bool>(), slope in 0.1f64..10.0) {
         prop_assume!((r1 - r2).abs() > 1e-6);
-        let set = if iso { ReliabilityFactorSet::Iso281_2007 } else { ReliabilityFactorSet::Weibull };
+        let set = if iso { FactorSet::Iso281_2007 } else { FactorSet::Weibull };
         let (lo, hi) = if r1 < r2 { (r1, r2) } else { (r2, r1) };
         let (a_lo, a_hi) = (reliability_factor(set, lo, slope), reliability_factor(set, hi, slope));
         prop_assert!(a_lo > a_hi && a_hi > 0.0 && a_lo.is_finite(), "{a_lo} {a_hi}");
@@ -571,7 +572,7 @@ proptest! {
         let mut lc = case(kind_of(roller), c, c / 10f64.powf(log_ratio), r);
         lc.speed_rpm = speed;
         lc.pitch_diameter_mm = Some(dm * 1e3);
-        lc.factor_set = if iso { ReliabilityFactorSet::Iso281_2007 } else { ReliabilityFactorSet::Weibull };
+        lc.factor_set = if iso { FactorSet::Iso281_2007 } else { FactorSet::Weibull };
         lc.lubrication = Some(Lubrication {
             kappa: KappaSource::Viscosity { viscosity_mm2_s: nu, pitch_diameter_mm: dm * 1e3 },
             contamination: e_c,

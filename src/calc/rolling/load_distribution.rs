@@ -39,11 +39,12 @@ use serde_json::Value;
 use utoipa::ToSchema;
 
 use super::ball_equilibrium::Gyro;
-use super::geometry::{BallBearing, BallBearingSpec, Race};
+use super::bearing_spec::{BallBearingSpec, RollerBearingSpec};
+use super::geometry::{BallBearing, Race};
 use super::ring_equilibrium::{
     classic, general, load_scale, tilt_arm, AngleMode, LoadDistributionCase, SpeedModel,
 };
-use super::roller::{self, RollerBearing, RollerBearingSpec, RollerCase, ROLLER_STATIC_LIMIT_PA};
+use super::roller::{self, RollerBearing, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::{Footprint, Solution};
 use crate::calc::quantity::{NonNegative, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate, Warning};

@@ -10,17 +10,23 @@
 //! the 6210 defect frequencies), and ISO 281:2007 for a_ISO and the rated viscosity ν1 (outside
 //! the texts; each constant cites where it was checked).
 //!
-//! Layout: `analysis`, `friction`, `grease_life`, `kinematics`, `life`, `load_distribution`,
-//! `static_capacity` are the rooms' wire files (each with its description in `<room>.md` and
-//! long tests in `<room>_tests.rs`); `ring_equilibrium` and `ball_equilibrium` solve the ball
-//! bearing's equilibrium, `roller` the roller bearing's, `geometry` holds the ball bearing's
-//! internal geometry and raceway contacts.
+//! Layout. Wire files (serde, `Validate`, `impl Calculation`): `analysis`, `friction`,
+//! `grease_life`, `kinematics`, `life`, `load_distribution`, `static_capacity` are the rooms
+//! (each with its description in `<room>.md` and long tests in `<room>_tests.rs`);
+//! `bearing_spec` is the requests' shared `bearing` object (ball and roller bearing specs,
+//! materials) and its validation. Model files (plain types and functions): `geometry` holds the
+//! ball bearing's internal geometry and raceway contacts, `ring_equilibrium` and
+//! `ball_equilibrium` solve the ball bearing's equilibrium, `roller` the roller bearing's,
+//! `iso76` computes the static rating (C0, P0, s0) and `iso281` the fatigue lives.
 
 pub mod analysis;
 mod ball_equilibrium;
+mod bearing_spec;
 pub mod friction;
 pub mod geometry;
 pub mod grease_life;
+mod iso281;
+mod iso76;
 pub mod kinematics;
 pub mod life;
 pub mod load_distribution;

@@ -1,5 +1,6 @@
-//! Cylindrical roller bearings in the load distribution room: the `bearing` object's roller
-//! variant, its validation, and the radial equilibrium of the inner ring on line contacts.
+//! Cylindrical roller bearings in the load distribution room (model): the validated roller
+//! bearing (the `bearing` object's roller variant and its validation are the wire file
+//! `bearing_spec.rs`) and the radial equilibrium of the inner ring on line contacts.
 //!
 //! Model (Khonsari & Booser §14.2 RI-4 and §14.4 RI-6; Hamrock §21.3.6):
 //! - Straight (uncrowned) rollers of effective length L (the length less the corner radii or
@@ -27,67 +28,19 @@
 //!   pressure, half-width b (reported as the semi-minor axis; the semi-major axis is L/2) and
 //!   Hamrock's approach with its logarithms (eq. 21.51).
 
-use serde::Deserialize;
-use utoipa::ToSchema;
-
-use super::geometry::MaterialSpec;
+use super::geometry::Material;
 use super::ring_equilibrium::{balanced, load_balance_root, MAX_BRENT_ITERATIONS};
 use crate::calc::contact::hertz::{Body, Contact, Invalid, Method, Shape, Solution};
-use crate::calc::quantity::Positive;
-use crate::calc::{CalcError, FieldError};
+use crate::calc::CalcError;
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::driver::{Budget, Driver};
 
-/// Largest diameter or length accepted, m.
-const MAX_SIZE_M: f64 = 100.0;
-const ROLLER_COUNT: (u32, u32) = (3, 1000);
-/// Largest interference −P_d/2 accepted, as a fraction of the roller diameter.
-const MAX_INTERFERENCE: f64 = 0.01;
 /// Palmgren's constant, mm per N^0.9 mm^−0.8, and the steel E′ it holds for, Pa (Khonsari RI-4).
 const PALMGREN_MM: f64 = 3.84e-5;
 const PALMGREN_STEEL_E_PA: f64 = 2.19e11;
 const TOLERANCE: f64 = 1e-9;
 /// ISO 76's contact pressure at C0 for roller bearings, Pa.
 pub const ROLLER_STATIC_LIMIT_PA: f64 = 4.0e9;
-
-/// A single-row cylindrical roller bearing (N, NU type) with straight rollers.
-#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct RollerBearingSpec {
-    /// Roller diameter D, m (> 0, at most 100, less than the pitch diameter).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.01)]
-    pub roller_diameter_m: Positive,
-    /// Effective roller length L, m: the length in contact, less corner radii or undercuts
-    /// (> 0, at most 100).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.009601)]
-    pub roller_effective_length_m: Positive,
-    /// Pitch diameter d_m = (d_i + d_o)/2 of the raceway diameters, m.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.0650115)]
-    pub pitch_diameter_m: Positive,
-    /// Number of rollers Z, 3 … 1000; they must fit: D < d_m sin(π/Z).
-    #[schema(minimum = 3, maximum = 1000, example = 14)]
-    pub roller_count: u32,
-    /// Diametral clearance P_d = d_o − d_i − 2D, m (negative: preload, at most 1 % of D per
-    /// roller; positive at most D).
-    #[schema(minimum = -1.0, maximum = 1.0, example = 4.1e-5)]
-    pub diametral_clearance_m: f64,
-    /// The rollers' material.
-    pub rollers: MaterialSpec,
-    /// The rings' material.
-    pub rings: MaterialSpec,
-    /// The rollers' profile; absent: straight (uncrowned).
-    pub profile: Option<RollerProfile>,
-}
-
-/// A crowned roller profile: the crown's radius across the roller, along its axis.
-#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
-#[serde(deny_unknown_fields)]
-pub struct RollerProfile {
-    /// Crown radius R along the roller axis, m (≥ the effective length, at most 1e4 m; about
-    /// 100 D for cylindrical rollers, Hamrock A.1.8).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e4, example = 1.0)]
-    pub crown_radius_m: Positive,
-}
 
 /// Laminae of a crowned roller.
 const LAMINAE: usize = 40;
@@ -102,98 +55,8 @@ pub struct RollerBearing {
     pub clearance_m: f64,
     /// Crown radius, m (None: straight).
     pub crown_radius_m: Option<f64>,
-    rollers: MaterialSpec,
-    rings: MaterialSpec,
-}
-
-impl RollerBearingSpec {
-    pub fn validate_at(self, at: &str) -> Result<RollerBearing, Vec<FieldError>> {
-        let mut errors = Vec::new();
-        let (d, l, dm) = (
-            self.roller_diameter_m.get(),
-            self.roller_effective_length_m.get(),
-            self.pitch_diameter_m.get(),
-        );
-        for (v, field) in [
-            (d, "roller_diameter_m"),
-            (l, "roller_effective_length_m"),
-            (dm, "pitch_diameter_m"),
-        ] {
-            if v > MAX_SIZE_M {
-                errors.push(FieldError::new(
-                    format!("{at}/{field}"),
-                    format!("must be at most {MAX_SIZE_M} m, got {v}"),
-                ));
-            }
-        }
-        let z = self.roller_count;
-        if !(ROLLER_COUNT.0..=ROLLER_COUNT.1).contains(&z) {
-            errors.push(FieldError::new(
-                format!("{at}/roller_count"),
-                format!(
-                    "must be within [{}, {}], got {z}",
-                    ROLLER_COUNT.0, ROLLER_COUNT.1
-                ),
-            ));
-        } else if d >= dm * (std::f64::consts::PI / z as f64).sin() {
-            errors.push(FieldError::new(
-                format!("{at}/roller_count"),
-                format!(
-                    "{z} rollers of diameter {d} m do not fit on a pitch circle of {dm} m: adjacent rollers overlap unless D < d_m sin(π/Z) = {:.6e} m",
-                    dm * (std::f64::consts::PI / z as f64).sin()
-                ),
-            ));
-        }
-        let p_d = self.diametral_clearance_m;
-        if !(p_d.is_finite() && -2.0 * MAX_INTERFERENCE * d <= p_d && p_d <= d) {
-            errors.push(FieldError::new(
-                format!("{at}/diametral_clearance_m"),
-                format!(
-                    "must be a finite clearance within [−{} D, D] = [{:.4e}, {d:.4e}] m (a preload beyond 1 % of D per roller is outside Palmgren's law), got {p_d}",
-                    2.0 * MAX_INTERFERENCE,
-                    -2.0 * MAX_INTERFERENCE * d
-                ),
-            ));
-        }
-        for (m, field) in [(self.rollers, "rollers"), (self.rings, "rings")] {
-            let e = m.elastic_modulus_pa.get();
-            if e > 1e13 {
-                errors.push(FieldError::new(
-                    format!("{at}/{field}/elastic_modulus_pa"),
-                    format!("must be at most 1e13 Pa, got {e}"),
-                ));
-            }
-            if m.density_kg_m3.is_some_and(|r| r.get() > 1e5) {
-                errors.push(FieldError::new(
-                    format!("{at}/{field}/density_kg_m3"),
-                    "must be at most 1e5 kg/m³",
-                ));
-            }
-        }
-        if let Some(p) = self.profile {
-            let r = p.crown_radius_m.get();
-            if !(l..=1e4).contains(&r) {
-                errors.push(FieldError::new(
-                    format!("{at}/profile/crown_radius_m"),
-                    format!("must be within [L, 1e4] m = [{l:.4e}, 1e4] m (a crown sharper than the roller's length is not a cylindrical roller), got {r}"),
-                ));
-            }
-        }
-        if errors.is_empty() {
-            Ok(RollerBearing {
-                roller_diameter_m: d,
-                length_m: l,
-                pitch_diameter_m: dm,
-                roller_count: z as usize,
-                clearance_m: p_d,
-                crown_radius_m: self.profile.map(|p| p.crown_radius_m.get()),
-                rollers: self.rollers,
-                rings: self.rings,
-            })
-        } else {
-            Err(errors)
-        }
-    }
+    pub(super) rollers: Material,
+    pub(super) rings: Material,
 }
 
 /// The validated roller case.
@@ -216,7 +79,7 @@ pub struct RollerEquilibrium {
 impl RollerBearing {
     /// E′ of the pair, Pa (Hamrock: 2/E′ = Σ (1 − ν²)/E).
     fn effective_modulus(&self) -> f64 {
-        let c = |m: MaterialSpec| {
+        let c = |m: Material| {
             let nu = m.poisson_ratio.get();
             (1.0 - nu * nu) / m.elastic_modulus_pa.get()
         };
@@ -280,7 +143,7 @@ impl RollerBearing {
         } else {
             -0.5 * (self.pitch_diameter_m + d)
         };
-        let body = |r: f64, m: MaterialSpec| Body {
+        let body = |r: f64, m: Material| Body {
             radius_x_m: Some(r),
             radius_y_m: None,
             modulus_pa: m.elastic_modulus_pa.get(),
