@@ -416,28 +416,30 @@ fn jfo_sweep(stencil: &Stencil, omega: f64, p: &mut [f64], content: &mut [f64]) 
     let w = stencil.nx + 1;
     let nx = stencil.nx;
     let first = if stencil.periodic { 0 } else { 1 };
+    // The coefficient rows as plain slices, so their bounds are checked once per sweep.
+    let (ap, an, ae, aw, a_s) = (
+        &stencil.ap[..],
+        &stencil.an[..],
+        &stencil.ae[..],
+        &stencil.aw[..],
+        &stencil.a_s[..],
+    );
+    let (cw, ce, src) = (&stencil.cw[..], &stencil.ce[..], &stencil.src[..]);
     let (mut change, mut size, mut content_change) = (0.0f64, 0.0f64, 0.0f64);
     for j in 1..stencil.rows {
         let has_north = j + 1 < stencil.rows;
         for i in first..nx {
             let k = j * w + i;
-            let ap = stencil.ap[k];
-            if ap <= 0.0 {
+            let ap_k = ap[k];
+            if ap_k <= 0.0 {
                 continue;
             }
             // Across the seam of a periodic film the west neighbour is column nx − 1.
             let kw = if i == 0 { k + nx - 1 } else { k - 1 };
-            let north = if has_north {
-                stencil.an[k] * p[k + w]
-            } else {
-                0.0
-            };
-            let nb = stencil.ae[k] * p[k + 1]
-                + stencil.aw[k] * p[kw]
-                + north
-                + stencil.a_s[k] * p[k - w];
-            let inflow = stencil.cw[k] * content[kw];
-            let out = stencil.ce[k] + stencil.src[k];
+            let north = if has_north { an[k] * p[k + w] } else { 0.0 };
+            let nb = ae[k] * p[k + 1] + aw[k] * p[kw] + north + a_s[k] * p[k - w];
+            let inflow = cw[k] * content[kw];
+            let out = ce[k] + src[k];
             let balanced = if out > 0.0 {
                 (nb + inflow) / out
             } else {
@@ -446,7 +448,7 @@ fn jfo_sweep(stencil: &Stencil, omega: f64, p: &mut [f64], content: &mut [f64]) 
             let (next_p, next_theta) = if balanced < 1.0 {
                 (0.0, balanced.max(0.0))
             } else {
-                let gs = (nb + inflow - out) / ap;
+                let gs = (nb + inflow - out) / ap_k;
                 ((p[k] + omega * (gs - p[k])).max(0.0), 1.0)
             };
             change = change.max((next_p - p[k]).abs());
