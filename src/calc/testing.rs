@@ -35,6 +35,16 @@ pub fn result_field(v: &Value, field: &str) -> f64 {
         .unwrap_or_else(|| panic!("{field} missing in {v}"))
 }
 
+/// The codes of an envelope's warnings, in order.
+pub fn warning_codes(v: &Value) -> Vec<String> {
+    v["warnings"]
+        .as_array()
+        .unwrap_or_else(|| panic!("no warnings list in {v}"))
+        .iter()
+        .map(|w| w["code"].as_str().unwrap().to_owned())
+        .collect()
+}
+
 /// |got/want − 1| ≤ rel.
 pub fn assert_rel(got: f64, want: f64, rel: f64, what: &str) {
     assert!(

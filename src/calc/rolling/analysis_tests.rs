@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::calc::rolling::load_distribution::LoadDistribution;
-use crate::calc::testing::{invalid_pointers, ok};
+use crate::calc::testing::{invalid_pointers, ok, warning_codes as codes};
 use serde_json::json;
 
 fn example() -> Value {
@@ -67,15 +67,6 @@ fn at_speed_the_outer_film_carries_the_centrifugal_force() {
         .unwrap();
     let p_ld = ld["outer_contact"]["max_pressure_pa"].as_f64().unwrap();
     assert!((p_film / p_ld - 1.0).abs() < 1e-3, "{p_film} vs {p_ld}");
-}
-
-fn codes(v: &Value) -> Vec<String> {
-    v["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w["code"].as_str().unwrap().to_owned())
-        .collect()
 }
 
 /// Khonsari & Booser Ex 14.7: a 110 mm shaft at 5000 rpm, pitch diameter 150 mm: d·n =

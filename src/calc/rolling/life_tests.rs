@@ -15,16 +15,7 @@ fn pointers(request: &Value) -> Vec<String> {
     crate::calc::testing::invalid_pointers::<Life>(request)
 }
 
-use crate::calc::testing::{assert_rel, result_field as get};
-
-fn codes(v: &Value) -> Vec<String> {
-    v["warnings"]
-        .as_array()
-        .unwrap()
-        .iter()
-        .map(|w| w["code"].as_str().unwrap().to_owned())
-        .collect()
-}
+use crate::calc::testing::{assert_rel, result_field as get, warning_codes as codes};
 
 #[test]
 fn the_example_runs() {

@@ -3,7 +3,7 @@
 
 use super::*;
 use crate::calc::contact::hertz::Hertz;
-use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field};
+use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field, warning_codes};
 use serde_json::{json, Value};
 
 fn steel() -> Value {
@@ -147,14 +147,7 @@ fn equivalent_load_and_guidelines() {
         "p",
     );
     // s0 = 2 meets the normal guideline 1 but not high demands on quiet running (2 is met).
-    let codes = |v: &Value| -> Vec<String> {
-        v["warnings"]
-            .as_array()
-            .unwrap()
-            .iter()
-            .map(|w| w["code"].as_str().unwrap().to_owned())
-            .collect()
-    };
+    let codes = warning_codes;
     assert!(codes(&v).is_empty());
     with["operation"] = json!("shock");
     with["quiet_running"] = json!("high");
