@@ -1,5 +1,6 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
+pub mod banded;
 pub mod dense;
 pub mod driver;
 pub mod elliptic;

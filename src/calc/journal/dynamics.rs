@@ -4,11 +4,14 @@
 //!
 //! Perturbation: the journal centre is displaced by ±δ and moved at ±δ̇ along each axis about
 //! equilibrium; the film keeps its equilibrium grid and its feed line at the equilibrium h_max
-//! (the groove is fixed in the bearing), and cavitation is solved afresh in every perturbed
-//! film (Reynolds condition), so the rupture boundary moves consistently. Central differences.
-//! A mass-conserving film re-solves pressure and film content in each perturbed film from the
-//! equilibrium field (ports stay where the bearing holds them), with the squeeze term weighted
-//! by the content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t: the content's own rate is neglected).
+//! (the groove is fixed in the bearing). A Reynolds-condition film answers linearly: the
+//! pressure's derivative solves the equilibrium's own free-node operator with the perturbed
+//! equations' residual as the right side (Lund's first-order perturbation equations; at the
+//! Reynolds condition p = ∂p/∂n = 0 the rupture line's movement is second order), one
+//! factorisation for all four derivatives. A mass-conserving film re-solves pressure and film
+//! content in each perturbed film from the equilibrium field (ports stay where the bearing
+//! holds them), with the squeeze term weighted by the content (∂(θ_f h)/∂t ≈ θ_f ∂h/∂t: the
+//! content's own rate is neglected). Central differences in both.
 //!
 //! Frame: x along the static load, y perpendicular to it, 90° ahead in the direction of rotation.
 //! Dimensionless k_ij = K_ij C/W, c_ij = C_ij C ω/W, order [xx, xy, yx, yy]; a force
@@ -17,7 +20,7 @@
 use std::f64::consts::PI;
 
 use super::eccentricity::EccentricityRatio;
-use super::film::{self, Film, FilmModel, FilmSolution, Mesh};
+use super::film::{self, Film, FilmModel, FilmSolution, Mesh, Response};
 use super::performance::positioned_film;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::reynolds::Stopping;
@@ -52,46 +55,11 @@ pub fn perturbation(
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
     let delta = 1e-3 * (1.0 - eps).max(1e-3);
-    let rate = 2.0 * PI * delta;
-    // The perturbed forces differ from the base by O(δ): solve them well below that.
-    let stop = Stopping {
-        tolerance: stop.tolerance.min(1e-11),
-        max_sweeps: stop.max_sweeps.max(200_000),
+    let (k, c) = if physics.has_content() {
+        resolved_derivatives(base, mesh, stop, &field, delta, budget)?
+    } else {
+        linear_derivatives(base, mesh, field, delta)?
     };
-    let solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
-        let (f, _) = film::solve(film, mesh, stop, Some(field.clone()), budget)?;
-        Ok(force(&f))
-    };
-    // ∂F/∂(A, B): h̄ = 1 + A cos θ + B sin θ, the displacement is d̄ = −(A, B).
-    let mut k = [[0.0; 2]; 2];
-    let mut c = [[0.0; 2]; 2];
-    for j in 0..2 {
-        let shift = |sign: f64| {
-            let mut f = base;
-            if j == 0 {
-                f.cos_offset = sign * delta
-            } else {
-                f.sin_offset = sign * delta
-            }
-            f
-        };
-        let (plus, minus) = (solve_at(shift(1.0))?, solve_at(shift(-1.0))?);
-        let moving = |sign: f64| {
-            let mut f = base;
-            if j == 0 {
-                f.cos_rate = sign * rate
-            } else {
-                f.sin_rate = sign * rate
-            }
-            f
-        };
-        let (vplus, vminus) = (solve_at(moving(1.0))?, solve_at(moving(-1.0))?);
-        for i in 0..2 {
-            // K = −∂F/∂d = +∂F/∂A; C = −∂F/∂ḋ = +∂F/∂Ȧ.
-            k[i][j] = (plus[i] - minus[i]) / (2.0 * delta);
-            c[i][j] = (vplus[i] - vminus[i]) / (2.0 * rate);
-        }
-    }
     // Load frame: x along the load W = −F, y = x turned 90° with the rotation.
     let norm = f0[0].hypot(f0[1]);
     let x = [-f0[0] / norm, -f0[1] / norm];
@@ -118,6 +86,96 @@ pub fn perturbation(
         sommerfeld_number: s,
     })
 }
+
+/// The film `film` with its offset (`shape`) and rate (`rate`) along axis j set (0: A, the cos
+/// term; 1: B).
+fn perturbed(film: Film, j: usize, shape: f64, rate: f64) -> Film {
+    let mut f = film;
+    if j == 0 {
+        f.cos_offset = shape;
+        f.cos_rate = rate;
+    } else {
+        f.sin_offset = shape;
+        f.sin_rate = rate;
+    }
+    f
+}
+
+/// ∂F/∂(A, B) and ∂F/∂(Ȧ, Ḃ) in the film frame by the linear response of the Reynolds film
+/// (one factorisation, four right sides).
+fn linear_derivatives(
+    base: Film,
+    mesh: Mesh,
+    field: Vec<f64>,
+    delta: f64,
+) -> Result<Derivatives, CalcError> {
+    let response = Response::at(&base, mesh, field).map_err(|e| {
+        CalcError::Internal(format!(
+            "film operator not positive definite at row {}",
+            e.row
+        ))
+    })?;
+    let mut k = [[0.0; 2]; 2];
+    let mut c = [[0.0; 2]; 2];
+    let rate = 2.0 * PI * delta;
+    for j in 0..2 {
+        let shape = response.load_derivative(
+            &perturbed(base, j, delta, 0.0),
+            &perturbed(base, j, -delta, 0.0),
+            delta,
+        );
+        let motion = response.load_derivative(
+            &perturbed(base, j, 0.0, rate),
+            &perturbed(base, j, 0.0, -rate),
+            rate,
+        );
+        // Force components [a, b] = [radial, −tangential].
+        for (i, sign) in [1.0, -1.0].into_iter().enumerate() {
+            k[i][j] = sign * shape[i];
+            c[i][j] = sign * motion[i];
+        }
+    }
+    Ok((k, c))
+}
+
+/// As [`linear_derivatives`] for a mass-conserving film, by central differences of re-solved
+/// films (pressure and content), each started from the equilibrium field.
+fn resolved_derivatives(
+    base: Film,
+    mesh: Mesh,
+    stop: Stopping,
+    field: &[f64],
+    delta: f64,
+    budget: &Budget,
+) -> Result<Derivatives, CalcError> {
+    let rate = 2.0 * PI * delta;
+    // The perturbed forces differ from the base by O(δ): solve them well below that.
+    let stop = Stopping {
+        tolerance: stop.tolerance.min(1e-11),
+        max_sweeps: stop.max_sweeps.max(200_000),
+    };
+    let solve_at = |film: Film| -> Result<[f64; 2], CalcError> {
+        let (f, _) = film::solve(film, mesh, stop, Some(field.to_vec()), budget)?;
+        Ok(force(&f))
+    };
+    let mut k = [[0.0; 2]; 2];
+    let mut c = [[0.0; 2]; 2];
+    for j in 0..2 {
+        let plus = solve_at(perturbed(base, j, delta, 0.0))?;
+        let minus = solve_at(perturbed(base, j, -delta, 0.0))?;
+        let vplus = solve_at(perturbed(base, j, 0.0, rate))?;
+        let vminus = solve_at(perturbed(base, j, 0.0, -rate))?;
+        for i in 0..2 {
+            // K = −∂F/∂d = +∂F/∂A; C = −∂F/∂ḋ = +∂F/∂Ȧ.
+            k[i][j] = (plus[i] - minus[i]) / (2.0 * delta);
+            c[i][j] = (vplus[i] - vminus[i]) / (2.0 * rate);
+        }
+    }
+    Ok((k, c))
+}
+
+/// ∂F_i/∂(A, B)_j and ∂F_i/∂(Ȧ, Ḃ)_j.
+type Derivatives = ([[f64; 2]; 2], [[f64; 2]; 2]);
 
 /// Lund's rigid-rotor stability numbers from dimensionless coefficients.
 #[derive(Debug, Clone, Copy, PartialEq)]

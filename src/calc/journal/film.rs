@@ -23,10 +23,11 @@ use std::f64::consts::PI;
 
 use crate::calc::Budget;
 use crate::fidelity::IterationUnit;
+use crate::numerics::banded::NotPositiveDefinite;
 use crate::numerics::driver::{Driver, Verdict};
 use crate::numerics::interpolate::Parabola;
 use crate::numerics::reynolds::{
-    self, at, Axis, Fluxes, Grid, Problem, SolveError, Solved, Stencil, Stopping,
+    self, at, Axis, Fluxes, Grid, Linearised, Problem, SolveError, Solved, Stencil, Stopping,
 };
 
 /// Cells around the circumference and across the half-length.
@@ -384,6 +385,14 @@ impl Film {
         1.0 + self.a() * theta.cos() + self.sin_offset * theta.sin() - tilt
     }
 
+    /// ∂h̄/∂θ at (θ, ȳ).
+    pub fn slope(&self, theta: f64, y: f64) -> f64 {
+        let tilt = self
+            .tilt
+            .map_or(0.0, |(e, dir)| e * (y - 0.5) * (theta - dir).sin());
+        -self.a() * theta.sin() + self.sin_offset * theta.cos() + tilt
+    }
+
     /// The smallest h̄ anywhere in the clearance: 1 − |e| of the journal centre at the mid-plane,
     /// or at the worse end when tilted.
     pub fn min_thickness(&self) -> f64 {
@@ -406,16 +415,6 @@ pub fn solve(
     budget: &Budget,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
     let g = grid(mesh, &film);
-    let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
-    let squeeze = move |theta: f64, _y: f64| {
-        12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
-    };
-    let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
-    let turbulent = move |theta: f64, y: f64, axis: Axis| {
-        let h = film.thickness(theta, y);
-        let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
-        h.powi(3) * if axis == Axis::X { gx } else { gy }
-    };
     // Port nodes (a periodic film fed at supply pressure): the columns within the port's
     // angular width of each groove centre (the film's start, and π on for two grooves; always
     // the nearest column), the rows within its axial extent (always the mid-plane).
@@ -445,21 +444,12 @@ pub fn solve(
                 d.abs() <= 0.5 * p.width + 1e-12
             })
     };
-    let problem = Problem {
-        film: &thickness,
-        conductance: if film.physics.turbulence_reynolds.is_some() {
-            Some(&turbulent)
-        } else {
-            None
-        },
-        anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
-        wedge: 12.0 * PI,
-        source: if moving { Some(&squeeze) } else { None },
-        held: if port.is_some() { Some(&held) } else { None },
-    };
-    let stencil = Stencil::assemble(&g, &problem);
+    let stencil = assemble(
+        &film,
+        &g,
+        port.is_some().then_some(&held as &dyn Fn(f64, f64) -> bool),
+    );
     let n = (g.nx() + 1) * (g.ny + 1);
-    let omega = stencil.sor_factor(&g);
     if film.physics.has_content() {
         // The field is [P̄; θ_f]; a pressure-only start begins flooded.
         let start = start.unwrap_or_default();
@@ -492,6 +482,7 @@ pub fn solve(
                 }
             }
         }
+        let omega = stencil.sor_factor(&g);
         let solved =
             reynolds::solve_mass_conserving(&stencil, omega, &mut p, &mut content, stop, budget)?;
         let fluxes = stencil.fluxes(&p, &content);
@@ -502,15 +493,37 @@ pub fn solve(
     let mut p = start
         .filter(|s| s.len() == n)
         .unwrap_or_else(|| vec![0.0; n]);
-    let solved = reynolds::solve(
-        &stencil,
-        omega,
-        &mut p,
-        film.physics.cavitation,
-        stop,
-        budget,
-    )?;
+    let solved = reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?;
     Ok((integrate(&g, &p, &film, solved, None), p))
+}
+
+/// The film's five-point stencil on `g`: h̄, the squeeze source of a moving film, the Ng–Pan
+/// conductances of a turbulent one, and the `held` nodes of ported supplies.
+fn assemble(film: &Film, g: &Grid, held: Option<&dyn Fn(f64, f64) -> bool>) -> Stencil {
+    let film = *film;
+    let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
+    let squeeze = move |theta: f64, _y: f64| {
+        12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
+    };
+    let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
+    let turbulent = move |theta: f64, y: f64, axis: Axis| {
+        let h = film.thickness(theta, y);
+        let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
+        h.powi(3) * if axis == Axis::X { gx } else { gy }
+    };
+    let problem = Problem {
+        film: &thickness,
+        conductance: if film.physics.turbulence_reynolds.is_some() {
+            Some(&turbulent)
+        } else {
+            None
+        },
+        anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
+        wedge: 12.0 * PI,
+        source: if moving { Some(&squeeze) } else { None },
+        held,
+    };
+    Stencil::assemble(g, &problem)
 }
 
 /// The field solved on `coarse` (a mesh of [`Mesh::coarse`]) carried over to `mesh`, to start
@@ -521,6 +534,59 @@ pub fn prolonged(film: &Film, coarse: Mesh, field: &[f64], mesh: Mesh) -> Vec<f6
     let coarse_grid = grid(coarse, film);
     let pc = &field[..(coarse_grid.nx() + 1) * (coarse_grid.ny + 1)];
     reynolds::prolong(&coarse_grid, pc, &grid(mesh, film))
+}
+
+/// The load ∫∫ P̄ (−cos θ, sin θ) dθ dȳ over the whole length: along the line of centres
+/// towards h_max, and perpendicular to it against the rotation (see [`FilmSolution`]).
+fn load(g: &Grid, p: &[f64]) -> [f64; 2] {
+    let halves = if g.symmetric { 2.0 } else { 1.0 };
+    let (mut radial, mut tangential) = (0.0, 0.0);
+    for i in 0..=g.nx() {
+        let (sin, cos) = g.x[i].sin_cos();
+        let column: f64 = (0..=g.ny).map(|j| p[at(g, i, j)] * g.cv_y(j)).sum();
+        let w = g.cv_x(i) * halves;
+        radial -= column * cos * w;
+        tangential += column * sin * w;
+    }
+    [radial, tangential]
+}
+
+/// The film's linear response about a converged Reynolds-condition field: the load's
+/// derivative with respect to a parameter of the film (its shape or motion), from one
+/// factorisation of the free nodes' operator ([`reynolds::Linearised`]) — Lund's perturbation
+/// of the Reynolds equation, on the same grid, stencil and cavitated region as the field.
+pub struct Response {
+    grid: Grid,
+    field: Vec<f64>,
+    operator: Linearised,
+}
+
+impl Response {
+    /// About `film`'s converged `field` on `mesh` (a Reynolds-condition film, not a
+    /// mass-conserving one).
+    pub fn at(film: &Film, mesh: Mesh, field: Vec<f64>) -> Result<Response, NotPositiveDefinite> {
+        debug_assert!(!film.physics.has_content());
+        let grid = grid(mesh, film);
+        let operator = Linearised::at(&assemble(film, &grid, None), &field)?;
+        Ok(Response {
+            grid,
+            field,
+            operator,
+        })
+    }
+
+    /// ∂(load)/∂q between the films `plus` and `minus` at q ± `step` (same grid): the central
+    /// difference of the equations' residual at the field, through the free operator.
+    pub fn load_derivative(&self, plus: &Film, minus: &Film, step: f64) -> [f64; 2] {
+        let rp = assemble(plus, &self.grid, None).residuals(&self.field);
+        let rm = assemble(minus, &self.grid, None).residuals(&self.field);
+        let change: Vec<f64> = rp
+            .iter()
+            .zip(&rm)
+            .map(|(a, b)| (a - b) / (2.0 * step))
+            .collect();
+        load(&self.grid, &self.operator.response(&change, &self.field))
+    }
 }
 
 /// The film's numbers from its field; `content` (mass-conserving films) carries θ_f and the
@@ -537,23 +603,21 @@ fn integrate(
     // A symmetric grid holds half the length: its integrals count twice.
     let halves = if g.symmetric { 2.0 } else { 1.0 };
     let mid_row = if g.symmetric { g.ny } else { g.ny / 2 };
-    let (mut radial, mut tangential, mut pressure_shear) = (0.0, 0.0, 0.0);
+    let [radial, tangential] = load(g, p);
+    let mut pressure_shear = 0.0;
     // The moment about the mid-plane centre (zero on a symmetric grid, by symmetry).
     let mut moment = [0.0; 2];
     for j in 0..=g.ny {
         for i in 0..=g.nx() {
             let w = g.cv_x(i) * g.cv_y(j) * halves;
             let v = p[at(g, i, j)];
-            radial -= v * g.x[i].cos() * w;
-            tangential += v * g.x[i].sin() * w;
             if !g.symmetric {
                 let arm = g.y(j) - 0.5;
                 moment[0] += v * arm * g.x[i].sin() * w;
                 moment[1] -= v * arm * g.x[i].cos() * w;
             }
             // −∂h̄/∂θ for the pressure part of the journal's shear (integrated by parts).
-            let dh = (h(g.x[i] + 1e-6, g.y(j)) - h(g.x[i] - 1e-6, g.y(j))) / 2e-6;
-            pressure_shear -= v * dh * w;
+            pressure_shear -= v * film.slope(g.x[i], g.y(j)) * w;
         }
     }
 

@@ -212,6 +212,12 @@ impl Case {
         })
     }
 
+    /// Whether the film model is the same at every oil temperature: laminar, and no ported
+    /// supply (whose dimensionless pressure follows the viscosity).
+    fn film_independent_of_temperature(&self) -> bool {
+        !self.turbulent && !self.ported()
+    }
+
     fn mass_conserving(&self) -> bool {
         self.cavitation() && self.effects.cavitation == Cavitation::Jfo
     }
@@ -478,7 +484,12 @@ fn equilibrium_at_effective_temperature(
             };
             let decision = Decision::decide(case.effects.thermal, criterion, "thermal");
             if decision.applied {
-                op = thermal::effective_temperature(case, t_in, k * rise, budget)?;
+                op = match case.given {
+                    Given::Load(w) if case.film_independent_of_temperature() => {
+                        thermal::thermal_equilibrium(case, t_in, w, &isothermal, budget)?
+                    }
+                    _ => thermal::effective_temperature(case, t_in, k * rise, budget)?,
+                };
             }
             notes.decide("thermal", decision);
         }

@@ -470,13 +470,38 @@ fn closed(
     }
 }
 
-/// The eccentricity ratio at which the bearing carries Sommerfeld number `s_target`.
-///
-/// Brent on ln S against u = ln(ε/(1 − ε)) — S spans six decades and ε crowds towards 1, and S
-/// falls monotonically with ε, so the bracket [1e-4, 0.999] holds every reachable load. A
-/// numerical method first finds the root on the mesh with half the cells (an eighth of the
-/// work), then polishes it on its own mesh by safeguarded secant steps: the two meshes' S(ε)
-/// differ by a nearly constant factor, so the fine root is a step or three away.
+/// What an equilibrium search balances at ε: a residual of the operating point that falls as ε
+/// grows (0 at equilibrium), and the reason when no ε of the bracket balances it.
+pub trait Balance {
+    fn residual(&self, point: &Point) -> Result<f64, CalcError>;
+    /// Why no ε balances: `at_start` and `at_end` are the residuals at the bracket's ends.
+    fn out_of_reach(&self, at_start: f64, at_end: f64) -> CalcError;
+}
+
+/// The load: ln S(ε) − ln S_target.
+struct LoadBalance {
+    s_target: f64,
+}
+
+impl Balance for LoadBalance {
+    fn residual(&self, point: &Point) -> Result<f64, CalcError> {
+        Ok(point.sommerfeld_number.ln() - self.s_target.ln())
+    }
+
+    fn out_of_reach(&self, fa: f64, fb: f64) -> CalcError {
+        let s_target = self.s_target;
+        let (s_lo, s_hi) = (s_target * fa.exp(), s_target * fb.exp());
+        let message = if s_target > s_lo {
+            format!("the Sommerfeld number {s_target:.4e} is above {s_lo:.4e}, the value at ε = {MIN_ECCENTRICITY}: the load is too light for a hydrodynamic equilibrium this model resolves")
+        } else {
+            format!("the Sommerfeld number {s_target:.4e} is below {s_hi:.4e}, the value at ε = {MAX_ECCENTRICITY}: the load is too high for this bearing (minimum film below 0.1 % of the clearance)")
+        };
+        CalcError::impossible("/load_n", message)
+    }
+}
+
+/// The eccentricity ratio at which the bearing carries Sommerfeld number `s_target`, and the
+/// film solves the search took ([`balance`] over the whole bracket).
 pub fn equilibrium(
     s_target: f64,
     l_over_d: f64,
@@ -484,7 +509,34 @@ pub fn equilibrium(
     physics: FilmModel,
     budget: &Budget,
 ) -> Result<(Point, u32), CalcError> {
-    let bracket = (to_u(MIN_ECCENTRICITY), to_u(MAX_ECCENTRICITY));
+    let load = LoadBalance { s_target };
+    let (point, residual, n) = balance(&load, MIN_ECCENTRICITY, l_over_d, method, physics, budget)?;
+    // A root at the edge where a misaligned journal starts to touch carries less than asked.
+    if physics.misalignment.is_some() && residual.abs() > 1e-5 {
+        return Err(CalcError::impossible(
+            "/load_n",
+            "the load exceeds what the bearing carries before the journal touches it",
+        ));
+    }
+    Ok((point, n))
+}
+
+/// The operating point in [`from_eccentricity`, MAX_ECCENTRICITY] where `target` balances, its
+/// residual there, and the film solves the search took.
+///
+/// Brent against u = ln(ε/(1 − ε)) — ε crowds towards 1. A numerical method first finds the
+/// root on the mesh with half the cells (an eighth of the work), then polishes it on its own
+/// mesh by safeguarded secant steps: the two meshes' residuals differ by a nearly constant
+/// amount, so the fine root is a step or three away.
+pub fn balance(
+    target: &dyn Balance,
+    from_eccentricity: f64,
+    l_over_d: f64,
+    method: Method,
+    physics: FilmModel,
+    budget: &Budget,
+) -> Result<(Point, f64, u32), CalcError> {
+    let bracket = (to_u(from_eccentricity), to_u(MAX_ECCENTRICITY));
     let mut evaluations = 0u32;
     let coarse = match method {
         Method::Numerical {
@@ -501,7 +553,7 @@ pub fn equilibrium(
         _ => None,
     };
     let mut searcher = Searcher {
-        s_target,
+        target,
         l_over_d,
         physics,
         warm: None,
@@ -524,14 +576,8 @@ pub fn equilibrium(
         _ => None,
     });
     let point = at_eccentricity_from(to_eps(u)?, l_over_d, method, physics, warm, budget)?;
-    // A root at the edge where a misaligned journal starts to touch carries less than asked.
-    if physics.misalignment.is_some() && (point.sommerfeld_number / s_target - 1.0).abs() > 1e-5 {
-        return Err(CalcError::impossible(
-            "/load_n",
-            "the load exceeds what the bearing carries before the journal touches it",
-        ));
-    }
-    Ok((point, evaluations))
+    let residual = target.residual(&point)?;
+    Ok((point, residual, evaluations))
 }
 
 /// ε(u) = 1/(1 + e^−u), inside (0, 1) for every u of the search's bracket.
@@ -544,9 +590,9 @@ fn to_u(eps: f64) -> f64 {
     (eps / (1.0 - eps)).ln()
 }
 
-/// The residual ln S(ε(u)) − ln S_target and the roots of it.
+/// The balance's residual at ε(u) and the roots of it.
 struct Searcher<'a> {
-    s_target: f64,
+    target: &'a dyn Balance,
     l_over_d: f64,
     physics: FilmModel,
     /// Each probe starts from the last field: successive ε are close once the search homes in.
@@ -558,23 +604,22 @@ impl Searcher<'_> {
     fn residual(&mut self, method: Method, u: f64, budget: &Budget) -> Result<f64, CalcError> {
         *self.evaluations += 1;
         let eps = to_eps(u)?;
-        let s = match method {
+        let point = match method {
             Method::ClosedForm(approx) => {
-                closed(eps, self.l_over_d, approx, self.physics.cavitation).sommerfeld_number
+                closed(eps, self.l_over_d, approx, self.physics.cavitation)
             }
             Method::Numerical {
                 richardson: true, ..
-            } => {
-                at_eccentricity(eps, self.l_over_d, method, self.physics, budget)?.sommerfeld_number
-            }
+            } => at_eccentricity(eps, self.l_over_d, method, self.physics, budget)?,
             Method::Numerical { mesh, stop, .. } => {
                 let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
                 match positioned_film(eps, self.l_over_d, self.physics, mesh, stop, start, budget) {
                     Ok((_, f, p)) => {
                         self.warm = Some((mesh, p));
-                        f.sommerfeld_number()
+                        from_film(eps, &f, self.physics)
                     }
-                    // A misaligned journal touching at an end carries any load: S → 0.
+                    // A misaligned journal touching at an end carries any load: S → 0, the
+                    // far side of every balance.
                     Err(CalcError::Impossible { pointer, .. }) if pointer == "/misalignment" => {
                         return Ok(-50.0)
                     }
@@ -586,7 +631,7 @@ impl Searcher<'_> {
                 }
             }
         };
-        Ok(s.ln() - self.s_target.ln())
+        self.target.residual(&point)
     }
 
     /// Brent over the bracket; no sign change means the load is out of reach: a 422 naming it.
@@ -598,7 +643,6 @@ impl Searcher<'_> {
         budget: &Budget,
     ) -> Result<f64, CalcError> {
         let mut failure = None;
-        let s_target = self.s_target;
         let root = brent(
             |u| match self.residual(method, u, budget) {
                 Ok(r) => r,
@@ -619,15 +663,7 @@ impl Searcher<'_> {
         }
         match root {
             Ok(r) => Ok(r.x),
-            Err(RootError::NoSignChange { fa, fb, .. }) => {
-                let (s_lo, s_hi) = (s_target * fa.exp(), s_target * fb.exp());
-                let message = if s_target > s_lo {
-                    format!("the Sommerfeld number {s_target:.4e} is above {s_lo:.4e}, the value at ε = {MIN_ECCENTRICITY}: the load is too light for a hydrodynamic equilibrium this model resolves")
-                } else {
-                    format!("the Sommerfeld number {s_target:.4e} is below {s_hi:.4e}, the value at ε = {MAX_ECCENTRICITY}: the load is too high for this bearing (minimum film below 0.1 % of the clearance)")
-                };
-                Err(CalcError::impossible("/load_n", message))
-            }
+            Err(RootError::NoSignChange { fa, fb, .. }) => Err(self.target.out_of_reach(fa, fb)),
             Err(e) => Err(CalcError::from_root("brent_equilibrium", e)),
         }
     }

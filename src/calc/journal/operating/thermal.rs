@@ -5,6 +5,7 @@ use std::f64::consts::PI;
 
 use super::{BushTemperatures, Case, Notes, Operating, MAX_TEMPERATURE_RISE_K};
 use crate::calc::journal::eccentricity::EccentricityRatio;
+use crate::calc::journal::performance::{self, Balance, Point, MAX_ECCENTRICITY};
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent, RootError, Stopping};
 
@@ -54,8 +55,109 @@ pub(super) fn thd_temperatures(
     })
 }
 
+/// The effective temperature and the equilibrium together, for a film whose model does not
+/// depend on the temperature (laminar, no ported supply): one root in ε. At ε the film gives
+/// S(ε), hence the viscosity that carries the load, μ = S W/(N_s L D (R/C)²), hence the
+/// temperature T(ε) of that viscosity; the balance is T_in + k ΔT(ε) − T(ε) (Eq. 8.63/8.64),
+/// which falls as ε grows (a hotter, thinner oil runs more eccentric and its rise falls), from
+/// k ΔT_iso at the isothermal ε. No root below ε = 0.999 means the film cannot carry the load
+/// at the temperature it would run at.
+pub(super) fn thermal_equilibrium(
+    case: &Case,
+    t_in: f64,
+    w: f64,
+    isothermal: &Operating,
+    budget: &Budget,
+) -> Result<Operating, CalcError> {
+    let balance = HeatBalance { case, t_in, w };
+    let l_over_d = case.geometry.l_over_d();
+    let (point, _, evaluations) = performance::balance(
+        &balance,
+        isothermal.point.eccentricity_ratio.get(),
+        l_over_d,
+        case.method,
+        case.physics(t_in),
+        budget,
+    )?;
+    let op = balance.operating(point)?;
+    Ok(Operating { evaluations, ..op })
+}
+
+/// The heat balance at the given load (see [`thermal_equilibrium`]).
+struct HeatBalance<'a> {
+    case: &'a Case,
+    t_in: f64,
+    w: f64,
+}
+
+impl HeatBalance<'_> {
+    /// The operating point at the temperature whose viscosity carries the load with `point`'s
+    /// S; an error when that temperature lies beyond the search's reach.
+    fn operating(&self, point: Point) -> Result<Operating, CalcError> {
+        let lub = &self.case.lubricant;
+        let mu = point.sommerfeld_number * self.w / self.case.load_scale(1.0);
+        let hottest = self.t_in + MAX_TEMPERATURE_RISE_K;
+        let ln_mu = mu.ln();
+        let gap = |t: f64| lub.viscosity_pa_s(t).ln() - ln_mu;
+        let too_hot = || {
+            CalcError::impossible(
+                "/load_n",
+                format!("the film carries this load only with the oil thinner than at {hottest:.0} °C ({MAX_TEMPERATURE_RISE_K:.0} K above the inlet): the load is too high for the bearing at this speed and oil"),
+            )
+        };
+        let beyond = gap(hottest);
+        if beyond.is_nan() || beyond >= 0.0 {
+            return Err(too_hot());
+        }
+        let t = if gap(self.t_in) <= 0.0 {
+            self.t_in
+        } else {
+            brent(
+                gap,
+                self.t_in,
+                hottest,
+                Stopping {
+                    x_tolerance: 1e-9,
+                    max_iterations: 100,
+                },
+            )
+            .map_err(|e| CalcError::from_root("brent_viscosity_temperature", e))?
+            .x
+        };
+        Ok(Operating {
+            point,
+            load_n: self.w,
+            viscosity_pa_s: mu,
+            temperature_c: t,
+            evaluations: 0,
+        })
+    }
+}
+
+impl Balance for HeatBalance<'_> {
+    fn residual(&self, point: &Point) -> Result<f64, CalcError> {
+        let op = match self.operating(point.clone()) {
+            Ok(op) => op,
+            // Hotter than the search reaches: past the balance.
+            Err(CalcError::Impossible { .. }) => return Ok(-MAX_TEMPERATURE_RISE_K),
+            Err(e) => return Err(e),
+        };
+        let rise = self.case.temperature_rise(&op).unwrap_or(0.0);
+        Ok(self.t_in + self.case.effective_fraction() * rise - op.temperature_c)
+    }
+
+    fn out_of_reach(&self, _at_start: f64, at_end: f64) -> CalcError {
+        CalcError::impossible(
+            "/load_n",
+            format!("no thermal equilibrium below ε = {MAX_ECCENTRICITY}: at the temperature the oil would reach, the film cannot carry the load (at ε = {MAX_ECCENTRICITY} the heat balance still lacks {:.1} K); the load is too high for this bearing at this speed and oil", -at_end),
+        )
+    }
+}
+
 /// Effective temperature: T solves T = T_in + k ΔT(μ(T)) — a bracketed root on [T_in, T_in + k ΔT_iso]
-/// (the rise falls as the oil thins, so the bracket holds).
+/// (the rise falls as the oil thins, so the bracket holds), each trial an equilibrium search:
+/// for films whose model depends on the temperature (turbulent, or fed through ports at a
+/// supply pressure whose dimensionless value follows μ) or a given eccentricity.
 pub(super) fn effective_temperature(
     case: &Case,
     t_in: f64,

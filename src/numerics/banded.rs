@@ -1,0 +1,174 @@
+//! Symmetric positive definite band matrices: the Cholesky factor A = L Lᵀ in band storage
+//! (Golub & Van Loan §4.3.5) and solves with it. A matrix of order n with b sub-diagonals costs
+//! n b²/2 multiply–adds to factor and 2 n b to solve: for the five-point Reynolds stencil with
+//! the short direction numbered first, b is the count across, so the work grows with the node
+//! count times the square of that count.
+
+/// The lower band of a symmetric matrix: row i holds columns i − b ..= i.
+#[derive(Debug, Clone)]
+pub struct SymmetricBand {
+    n: usize,
+    b: usize,
+    /// Row-major, b + 1 values per row; the diagonal is each row's last.
+    data: Vec<f64>,
+}
+
+/// The matrix is not positive definite: a pivot at `row` was not positive.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct NotPositiveDefinite {
+    pub row: usize,
+}
+
+impl SymmetricBand {
+    /// The zero matrix of order `n` with `b` sub-diagonals.
+    pub fn zeros(n: usize, b: usize) -> Self {
+        SymmetricBand {
+            n,
+            b,
+            data: vec![0.0; n * (b + 1)],
+        }
+    }
+
+    pub fn order(&self) -> usize {
+        self.n
+    }
+
+    /// Sets A_ij = A_ji = v, for j ≤ i within the band.
+    pub fn set(&mut self, i: usize, j: usize, v: f64) {
+        debug_assert!(
+            j <= i && i - j <= self.b,
+            "({i}, {j}) outside the band {}",
+            self.b
+        );
+        self.data[i * (self.b + 1) + self.b + j - i] = v;
+    }
+
+    /// A = L Lᵀ, in place.
+    pub fn cholesky(mut self) -> Result<BandCholesky, NotPositiveDefinite> {
+        let (n, b) = (self.n, self.b);
+        let w = b + 1;
+        let a = &mut self.data;
+        for i in 0..n {
+            let first = i.saturating_sub(b);
+            for j in first..=i {
+                // L_ij = (A_ij − Σ_k L_ik L_jk)/L_jj over the columns both rows hold.
+                let from = first.max(j.saturating_sub(b));
+                let (ri, rj) = (i * w + b - i, j * w + b - j);
+                let mut sum = a[ri + j];
+                for k in from..j {
+                    sum -= a[ri + k] * a[rj + k];
+                }
+                if i == j {
+                    if sum.is_nan() || sum <= 0.0 {
+                        return Err(NotPositiveDefinite { row: i });
+                    }
+                    a[ri + i] = sum.sqrt();
+                } else {
+                    a[ri + j] = sum / a[rj + j];
+                }
+            }
+        }
+        Ok(BandCholesky { factor: self })
+    }
+}
+
+/// The Cholesky factor of a [`SymmetricBand`].
+#[derive(Debug, Clone)]
+pub struct BandCholesky {
+    factor: SymmetricBand,
+}
+
+impl BandCholesky {
+    /// Solves A x = r in place (forward with L, back with Lᵀ).
+    pub fn solve(&self, x: &mut [f64]) {
+        let SymmetricBand { n, b, ref data } = self.factor;
+        let w = b + 1;
+        for i in 0..n {
+            let row = i * w + b - i;
+            let mut sum = x[i];
+            for k in i.saturating_sub(b)..i {
+                sum -= data[row + k] * x[k];
+            }
+            x[i] = sum / data[row + i];
+        }
+        for i in (0..n).rev() {
+            x[i] /= data[i * w + b];
+            let row = i * w + b - i;
+            for k in i.saturating_sub(b)..i {
+                x[k] -= data[row + k] * x[i];
+            }
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The 1-D Laplacian tridiag(−1, 2, −1) of order 50 against its exact inverse applied to a
+    /// unit load, and a 2-D five-point operator against a product with the dense matrix.
+    #[test]
+    fn solves_tridiagonal_and_five_point_systems() {
+        let n = 50;
+        let mut a = SymmetricBand::zeros(n, 1);
+        for i in 0..n {
+            a.set(i, i, 2.0);
+            if i > 0 {
+                a.set(i, i - 1, -1.0);
+            }
+        }
+        let l = a.cholesky().unwrap();
+        let mut x = vec![1.0; n];
+        l.solve(&mut x);
+        // −u'' = 1 discretely: u_i = i'(n + 1 − i')/2 with i' = i + 1.
+        for (i, v) in x.iter().enumerate() {
+            let k = (i + 1) as f64;
+            assert!(
+                (v - k * (n as f64 + 1.0 - k) / 2.0).abs() < 1e-9,
+                "{i}: {v}"
+            );
+        }
+
+        // 7 × 5 grid, column-major (5 across): band 5.
+        let (nx, ny) = (7, 5);
+        let n = nx * ny;
+        let mut dense = vec![vec![0.0; n]; n];
+        let mut a = SymmetricBand::zeros(n, ny);
+        for c in 0..nx {
+            for r in 0..ny {
+                let k = c * ny + r;
+                let d = 4.0 + 0.1 * k as f64;
+                a.set(k, k, d);
+                dense[k][k] = d;
+                if r > 0 {
+                    a.set(k, k - 1, -1.0);
+                    dense[k][k - 1] = -1.0;
+                    dense[k - 1][k] = -1.0;
+                }
+                if c > 0 {
+                    a.set(k, k - ny, -0.5);
+                    dense[k][k - ny] = -0.5;
+                    dense[k - ny][k] = -0.5;
+                }
+            }
+        }
+        let x_true: Vec<f64> = (0..n).map(|k| (k as f64 * 0.37).sin()).collect();
+        let mut x: Vec<f64> = dense
+            .iter()
+            .map(|row| row.iter().zip(&x_true).map(|(a, x)| a * x).sum())
+            .collect();
+        a.cholesky().unwrap().solve(&mut x);
+        for (v, t) in x.iter().zip(&x_true) {
+            assert!((v - t).abs() < 1e-12, "{v} vs {t}");
+        }
+    }
+
+    #[test]
+    fn an_indefinite_matrix_is_refused() {
+        let mut a = SymmetricBand::zeros(2, 1);
+        a.set(0, 0, 1.0);
+        a.set(1, 0, 2.0);
+        a.set(1, 1, 1.0);
+        assert_eq!(a.cholesky().unwrap_err(), NotPositiveDefinite { row: 1 });
+    }
+}

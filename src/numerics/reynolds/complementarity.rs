@@ -1,0 +1,263 @@
+//! The Reynolds (Swift–Stieber) film solved exactly: the linear complementarity problem
+//! p ≥ 0, r = A p + b ≥ 0, p r = 0 of the five-point stencil (A is symmetric and an M-matrix)
+//! by the primal–dual active-set method (Hintermüller, Ito & Kunisch 2003, a semismooth Newton
+//! method; for an M-matrix it ends in finitely many steps from any start). Each step solves the
+//! free nodes' equations with the cavitated nodes held at p = 0 by a banded Cholesky
+//! factorisation (the nodes numbered across the short direction first), then frees every
+//! cavitated node whose equation pulls its pressure above zero and cavitates every free node
+//! whose pressure fell below it. The active set that no longer changes is the exact discrete
+//! solution: there is no sweep tolerance.
+//!
+//! The factorisation of the converged active set also gives the film's linear response to a
+//! change of its coefficients ([`Linearised`]): the dynamic coefficients without a re-solve.
+
+use super::{Budget, SolveError, Solved, Stencil};
+use crate::fidelity::IterationUnit;
+use crate::numerics::banded::{BandCholesky, NotPositiveDefinite, SymmetricBand};
+use crate::numerics::driver::{Driver, Verdict};
+
+/// Active-set steps before a solve counts as stopped (a few suffice from a warm start, a few
+/// tens from a cold one).
+const MAX_STEPS: u32 = 200;
+
+/// A cavitated node is freed when its equation's pull exceeds this share of the largest
+/// a_P·p (round-off must not flip a node that sits on the rupture line).
+const FREEING_THRESHOLD: f64 = 1e-12;
+
+/// The unknowns (interior, not held, a_P > 0), numbered column by column across y.
+#[derive(Debug, Clone)]
+struct Numbering {
+    /// Grid node of each unknown.
+    nodes: Vec<usize>,
+    /// Unknown of each grid node (usize::MAX: a boundary or held node).
+    index: Vec<usize>,
+    /// Sub-diagonals of the band: the largest distance between neighbouring unknowns.
+    band: usize,
+}
+
+impl Numbering {
+    fn of(stencil: &Stencil) -> Numbering {
+        let w = stencil.nx + 1;
+        let mut index = vec![usize::MAX; w * stencil.rows];
+        let mut nodes = Vec::new();
+        for i in 1..stencil.nx {
+            for j in 1..stencil.rows {
+                let k = j * w + i;
+                if stencil.ap[k] > 0.0 && !stencil.held[k] {
+                    index[k] = nodes.len();
+                    nodes.push(k);
+                }
+            }
+        }
+        let band = nodes
+            .iter()
+            .map(|&k| {
+                let r = index[k];
+                let west = index[k - 1];
+                if west == usize::MAX {
+                    1
+                } else {
+                    r - west
+                }
+            })
+            .max()
+            .unwrap_or(1);
+        Numbering { nodes, index, band }
+    }
+
+    fn unknown(&self, k: usize) -> Option<usize> {
+        let r = self.index[k];
+        (r != usize::MAX).then_some(r)
+    }
+}
+
+/// The free nodes' operator A_FF, the cavitated ones' rows replaced by the identity (so the
+/// matrix stays symmetric and positive definite), factored.
+fn factor(
+    stencil: &Stencil,
+    numbering: &Numbering,
+    free: &[bool],
+) -> Result<BandCholesky, NotPositiveDefinite> {
+    let w = stencil.nx + 1;
+    let mut a = SymmetricBand::zeros(numbering.nodes.len(), numbering.band);
+    for (r, &k) in numbering.nodes.iter().enumerate() {
+        if !free[r] {
+            a.set(r, r, 1.0);
+            continue;
+        }
+        a.set(r, r, stencil.ap[k]);
+        if let Some(west) = numbering.unknown(k - 1).filter(|&c| free[c]) {
+            a.set(r, west, -stencil.aw[k]);
+        }
+        if let Some(south) = numbering.unknown(k - w).filter(|&c| free[c]) {
+            a.set(r, south, -stencil.a_s[k]);
+        }
+    }
+    a.cholesky()
+}
+
+/// Σ a_nb p_nb − b at node k: the free equation's right side (a_P p_P equals it).
+fn pull(stencil: &Stencil, p: &[f64], k: usize) -> f64 {
+    let w = stencil.nx + 1;
+    let north = if k + w < p.len() && (k / w) + 1 < stencil.rows {
+        stencil.an[k] * p[k + w]
+    } else {
+        0.0
+    };
+    stencil.ae[k] * p[k + 1] + stencil.aw[k] * p[k - 1] + north + stencil.a_s[k] * p[k - w]
+        - stencil.b[k]
+}
+
+/// The film from the start `p` (its positive nodes the first free set; all free when none is
+/// positive; boundary values stay as given), with cavitation (`cavitation`) or without (one
+/// linear solve), under the driver (method `finite_volume_active_set`, one iteration an
+/// active-set step); `budget` stops a late solve.
+pub fn solve(
+    stencil: &Stencil,
+    p: &mut [f64],
+    cavitation: bool,
+    budget: &Budget,
+) -> Result<Solved, SolveError> {
+    debug_assert!(
+        !stencil.periodic,
+        "periodic films are mass-conserving solves"
+    );
+    let numbering = Numbering::of(stencil);
+    let warm = numbering.nodes.iter().any(|&k| p[k] > 0.0);
+    let mut free: Vec<bool> = numbering
+        .nodes
+        .iter()
+        .map(|&k| !cavitation || !warm || p[k] > 0.0)
+        .collect();
+    let mut x = vec![0.0; numbering.nodes.len()];
+    let run = Driver::new(
+        "finite_volume_active_set",
+        IterationUnit::NewtonSteps,
+        MAX_STEPS,
+        budget,
+    )
+    .run(|_| {
+        let Ok(cholesky) = factor(stencil, &numbering, &free) else {
+            return Verdict::Diverged(f64::NAN);
+        };
+        // The right side: −b plus the fixed boundary values' pull; cavitated rows hold 0.
+        for (r, &k) in numbering.nodes.iter().enumerate() {
+            x[r] = if free[r] {
+                let w = stencil.nx + 1;
+                let fixed = |nb: usize, a: f64| {
+                    if numbering.unknown(nb).is_none() {
+                        a * p[nb]
+                    } else {
+                        0.0
+                    }
+                };
+                let north = if (k / w) + 1 < stencil.rows {
+                    fixed(k + w, stencil.an[k])
+                } else {
+                    0.0
+                };
+                fixed(k + 1, stencil.ae[k])
+                    + fixed(k - 1, stencil.aw[k])
+                    + fixed(k - w, stencil.a_s[k])
+                    + north
+                    - stencil.b[k]
+            } else {
+                0.0
+            };
+        }
+        cholesky.solve(&mut x);
+        if x.iter().any(|v| !v.is_finite()) {
+            return Verdict::Diverged(f64::NAN);
+        }
+        for (r, &k) in numbering.nodes.iter().enumerate() {
+            p[k] = x[r];
+        }
+        if !cavitation {
+            return Verdict::Converged((), stencil.residual(p, false));
+        }
+        let scale = numbering
+            .nodes
+            .iter()
+            .map(|&k| stencil.ap[k] * p[k].abs())
+            .fold(0.0, f64::max);
+        let mut changed = 0usize;
+        for (r, &k) in numbering.nodes.iter().enumerate() {
+            let next = if free[r] {
+                p[k] >= 0.0
+            } else {
+                pull(stencil, p, k) > FREEING_THRESHOLD * scale
+            };
+            if next != free[r] {
+                changed += 1;
+                free[r] = next;
+            }
+        }
+        if changed == 0 {
+            Verdict::Converged((), stencil.residual(p, true))
+        } else {
+            Verdict::Continue(changed as f64)
+        }
+    })?;
+    Ok(Solved {
+        sweeps: run.report.iterations,
+        change: 0.0,
+        residual: run.report.residual.unwrap_or(f64::NAN),
+        report: run.report,
+    })
+}
+
+/// The converged film's free-node operator: the film's first-order response to a change of its
+/// coefficients with the cavitated region held (at the Reynolds condition p = ∂p/∂n = 0 the
+/// rupture line's own movement changes the pressure only to second order).
+#[derive(Debug, Clone)]
+pub struct Linearised {
+    numbering: Numbering,
+    cholesky: BandCholesky,
+}
+
+impl Linearised {
+    /// The operator of `stencil` on the free nodes of the converged field `p` (p > 0).
+    pub fn at(stencil: &Stencil, p: &[f64]) -> Result<Linearised, NotPositiveDefinite> {
+        let numbering = Numbering::of(stencil);
+        let free: Vec<bool> = numbering.nodes.iter().map(|&k| p[k] > 0.0).collect();
+        let cholesky = factor(stencil, &numbering, &free)?;
+        Ok(Linearised {
+            numbering,
+            cholesky,
+        })
+    }
+
+    /// δp from δr, the change of the equations' residual a_P p − Σ a_nb p_nb + b at the
+    /// converged field (per grid node): A_FF δp = −δr on the free nodes, 0 elsewhere.
+    pub fn response(&self, residual_change: &[f64], p: &[f64]) -> Vec<f64> {
+        let mut x: Vec<f64> = self
+            .numbering
+            .nodes
+            .iter()
+            .map(|&k| if p[k] > 0.0 { -residual_change[k] } else { 0.0 })
+            .collect();
+        self.cholesky.solve(&mut x);
+        let mut dp = vec![0.0; residual_change.len()];
+        for (r, &k) in self.numbering.nodes.iter().enumerate() {
+            dp[k] = x[r];
+        }
+        dp
+    }
+}
+
+impl Stencil {
+    /// a_P p − Σ a_nb p_nb + b at every unknown node (0 at boundary and held nodes).
+    pub fn residuals(&self, p: &[f64]) -> Vec<f64> {
+        let mut r = vec![0.0; p.len()];
+        let w = self.nx + 1;
+        for j in 1..self.rows {
+            for i in 1..self.nx {
+                let k = j * w + i;
+                if self.ap[k] > 0.0 && !self.held[k] {
+                    r[k] = self.ap[k] * p[k] - pull(self, p, k);
+                }
+            }
+        }
+        r
+    }
+}
