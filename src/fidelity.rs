@@ -79,6 +79,10 @@ pub struct SolverReport {
     /// Estimated relative error of the headline result, where known.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub error_estimate: Option<f64>,
+    /// Numerical film solves the whole request took (every search, the thermal balance and the
+    /// stability threshold included; a linear response about a solved film counts as one).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub film_solves: Option<u32>,
     /// Wall time of the calculation in milliseconds (parsing and serialisation excluded).
     pub elapsed_ms: f64,
 }
@@ -96,6 +100,7 @@ impl SolverReport {
             stop_reason: StopReason::Direct,
             residual: None,
             error_estimate: None,
+            film_solves: None,
             elapsed_ms: 0.0,
         }
     }
@@ -109,6 +114,13 @@ impl SolverReport {
             stop_reason: StopReason::Converged,
             ..SolverReport::closed_form(method)
         }
+    }
+
+    /// The same report with the request's count of film solves.
+    #[must_use]
+    pub fn with_film_solves(mut self, solves: u32) -> Self {
+        self.film_solves = Some(solves);
+        self
     }
 
     /// The same report under the room's name for its method.

@@ -4,12 +4,12 @@
 //! the short direction numbered first, b is the count across, so the work grows with the node
 //! count times the square of that count.
 
-/// The lower band of a symmetric matrix: row i holds columns i − b ..= i.
+/// The lower band of a symmetric matrix, column by column: column j holds rows j ..= j + b.
 #[derive(Debug, Clone)]
 pub struct SymmetricBand {
     n: usize,
     b: usize,
-    /// Row-major, b + 1 values per row; the diagonal is each row's last.
+    /// Column-major, b + 1 values per column; the diagonal is each column's first.
     data: Vec<f64>,
 }
 
@@ -29,10 +29,6 @@ impl SymmetricBand {
         }
     }
 
-    pub fn order(&self) -> usize {
-        self.n
-    }
-
     /// Sets A_ij = A_ji = v, for j ≤ i within the band.
     pub fn set(&mut self, i: usize, j: usize, v: f64) {
         debug_assert!(
@@ -40,31 +36,33 @@ impl SymmetricBand {
             "({i}, {j}) outside the band {}",
             self.b
         );
-        self.data[i * (self.b + 1) + self.b + j - i] = v;
+        self.data[j * (self.b + 1) + i - j] = v;
     }
 
-    /// A = L Lᵀ, in place.
+    /// A = L Lᵀ, in place, column by column (right-looking: each column, once scaled, updates
+    /// the triangle of the b columns after it, in contiguous runs).
     pub fn cholesky(mut self) -> Result<BandCholesky, NotPositiveDefinite> {
         let (n, b) = (self.n, self.b);
         let w = b + 1;
-        let a = &mut self.data;
-        for i in 0..n {
-            let first = i.saturating_sub(b);
-            for j in first..=i {
-                // L_ij = (A_ij − Σ_k L_ik L_jk)/L_jj over the columns both rows hold.
-                let from = first.max(j.saturating_sub(b));
-                let (ri, rj) = (i * w + b - i, j * w + b - j);
-                let mut sum = a[ri + j];
-                for k in from..j {
-                    sum -= a[ri + k] * a[rj + k];
-                }
-                if i == j {
-                    if sum.is_nan() || sum <= 0.0 {
-                        return Err(NotPositiveDefinite { row: i });
-                    }
-                    a[ri + i] = sum.sqrt();
-                } else {
-                    a[ri + j] = sum / a[rj + j];
+        for k in 0..n {
+            let (done, rest) = self.data.split_at_mut((k + 1) * w);
+            let column = &mut done[k * w..];
+            let pivot = column[0];
+            if pivot.is_nan() || pivot <= 0.0 {
+                return Err(NotPositiveDefinite { row: k });
+            }
+            let d = pivot.sqrt();
+            column[0] = d;
+            let m = b.min(n - 1 - k);
+            for v in &mut column[1..=m] {
+                *v /= d;
+            }
+            // A_(k+s, k+r) −= L_(k+s, k) L_(k+r, k) for 1 ≤ s ≤ r ≤ m.
+            for s in 1..=m {
+                let ls = column[s];
+                let target = &mut rest[(s - 1) * w..(s - 1) * w + m - s + 1];
+                for (t, l) in target.iter_mut().zip(&column[s..=m]) {
+                    *t -= ls * l;
                 }
             }
         }
@@ -83,20 +81,24 @@ impl BandCholesky {
     pub fn solve(&self, x: &mut [f64]) {
         let SymmetricBand { n, b, ref data } = self.factor;
         let w = b + 1;
-        for i in 0..n {
-            let row = i * w + b - i;
-            let mut sum = x[i];
-            for k in i.saturating_sub(b)..i {
-                sum -= data[row + k] * x[k];
+        for k in 0..n {
+            let column = &data[k * w..(k + 1) * w];
+            let m = b.min(n - 1 - k);
+            x[k] /= column[0];
+            let xk = x[k];
+            for (v, l) in x[k + 1..=k + m].iter_mut().zip(&column[1..=m]) {
+                *v -= l * xk;
             }
-            x[i] = sum / data[row + i];
         }
-        for i in (0..n).rev() {
-            x[i] /= data[i * w + b];
-            let row = i * w + b - i;
-            for k in i.saturating_sub(b)..i {
-                x[k] -= data[row + k] * x[i];
-            }
+        for k in (0..n).rev() {
+            let column = &data[k * w..(k + 1) * w];
+            let m = b.min(n - 1 - k);
+            let dot: f64 = x[k + 1..=k + m]
+                .iter()
+                .zip(&column[1..=m])
+                .map(|(v, l)| v * l)
+                .sum();
+            x[k] = (x[k] - dot) / column[0];
         }
     }
 }

@@ -14,18 +14,20 @@
 //! with three defaults inverted: the cap is finite, the deadline is checked inside long runs, and
 //! a capped run is an error, not a result.
 
-use std::sync::atomic::{AtomicBool, Ordering};
+use std::sync::atomic::{AtomicBool, AtomicU32, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
 use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 
-/// The deadline carrier numerics poll: the request's deadline and its cancel flag. Cheap to
-/// clone; `Context::budget` hands one out.
+/// The deadline carrier numerics poll: the request's deadline and its cancel flag, and the tally
+/// of the field solves it paid for. Cheap to clone (clones share the tally); `Context::budget`
+/// hands one out.
 #[derive(Debug, Clone)]
 pub struct Budget {
     deadline: Option<Instant>,
     cancelled: Option<Arc<AtomicBool>>,
+    field_solves: Arc<AtomicU32>,
 }
 
 impl Budget {
@@ -34,6 +36,7 @@ impl Budget {
         Budget {
             deadline: Some(deadline),
             cancelled: Some(cancelled),
+            field_solves: Arc::default(),
         }
     }
 
@@ -42,7 +45,18 @@ impl Budget {
         Budget {
             deadline: None,
             cancelled: None,
+            field_solves: Arc::default(),
         }
+    }
+
+    /// Counts one solve of a discretised field (a film's Reynolds equation on its grid).
+    pub fn count_field_solve(&self) {
+        self.field_solves.fetch_add(1, Ordering::Relaxed);
+    }
+
+    /// The field solves counted so far under this budget and its clones.
+    pub fn field_solves(&self) -> u32 {
+        self.field_solves.load(Ordering::Relaxed)
     }
 
     /// True while the request is neither late nor cancelled.
@@ -233,6 +247,7 @@ impl Driver {
             stop_reason,
             residual: residual.is_finite().then_some(residual),
             error_estimate: None,
+            film_solves: None,
             elapsed_ms: started.elapsed().as_secs_f64() * 1e3,
         }
     }

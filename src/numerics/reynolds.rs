@@ -155,39 +155,57 @@ impl Stencil {
             Some(c) => c(x, y, axis),
             None => h(x, y).powi(3),
         };
+        // Each face is evaluated once: a node's east face is its neighbour's west face, and a
+        // row's north faces are the next row's south faces.
+        let x_face = |x: f64, y: f64| {
+            let hx = h(x, y);
+            let c = match problem.conductance {
+                Some(c) => c(x, y, Axis::X),
+                None => hx.powi(3),
+            };
+            (hx, c)
+        };
+        let mut south: Vec<f64> = (0..nx)
+            .map(|i| cond(grid.x[i], 0.5 * dy, Axis::Y))
+            .collect();
+        let mut north = vec![0.0; nx];
         for j in 1..rows {
             if j == grid.ny && !grid.symmetric {
                 break; // the far edge carries p = 0
             }
             let y = grid.y(j);
             let hy = grid.cv_y(j);
-            let (y_s, y_n) = (y - 0.5 * dy, (y + 0.5 * dy).min(grid.width));
+            let y_n = ((j as f64 + 0.5) * dy).min(grid.width);
             let at_mid = grid.symmetric && j == grid.ny;
+            let mut west: Option<(f64, (f64, f64))> = None;
             for i in first..nx {
                 let k = j * (nx + 1) + i;
-                if problem.held.is_some_and(|held| held(grid.x[i], y)) {
-                    s.held[k] = true;
-                    if i == 0 {
-                        s.held[k + nx] = true;
-                    }
-                    continue;
-                }
                 let (xw, xp, xe) = if i == 0 {
                     (grid.x[nx - 1] - period, grid.x[0], grid.x[1])
                 } else {
                     (grid.x[i - 1], grid.x[i], grid.x[i + 1])
                 };
+                north[i] = if at_mid { 0.0 } else { cond(xp, y_n, Axis::Y) };
+                if problem.held.is_some_and(|held| held(grid.x[i], y)) {
+                    s.held[k] = true;
+                    if i == 0 {
+                        s.held[k + nx] = true;
+                    }
+                    west = None;
+                    continue;
+                }
                 let (fw, fe) = (0.5 * (xw + xp), 0.5 * (xp + xe));
                 let wx = fe - fw;
-                let (hw, he) = (h(fw, y), h(fe, y));
-                s.ae[k] = cond(fe, y, Axis::X) / (xe - xp) * hy;
-                s.aw[k] = cond(fw, y, Axis::X) / (xp - xw) * hy;
-                s.a_s[k] = problem.anisotropy * cond(xp, y_s, Axis::Y) / dy * wx;
-                s.an[k] = if at_mid {
-                    0.0
-                } else {
-                    problem.anisotropy * cond(xp, y_n, Axis::Y) / dy * wx
+                let (hw, cw) = match west {
+                    Some((face, values)) if face == fw => values,
+                    _ => x_face(fw, y),
                 };
+                let (he, ce) = x_face(fe, y);
+                west = Some((fe, (he, ce)));
+                s.ae[k] = ce / (xe - xp) * hy;
+                s.aw[k] = cw / (xp - xw) * hy;
+                s.a_s[k] = problem.anisotropy * south[i] / dy * wx;
+                s.an[k] = problem.anisotropy * north[i] / dy * wx;
                 s.ap[k] = s.ae[k] + s.aw[k] + s.an[k] + s.a_s[k];
                 let source = problem.source.map_or(0.0, |f| f(xp, y) * wx * hy);
                 s.ce[k] = problem.wedge * he * hy;
@@ -195,6 +213,7 @@ impl Stencil {
                 s.src[k] = source;
                 s.b[k] = problem.wedge * (he - hw) * hy + source;
             }
+            std::mem::swap(&mut south, &mut north);
         }
         s
     }

@@ -39,26 +39,39 @@ fn force(f: &FilmSolution) -> [f64; 2] {
     [f.load_radial, -f.load_tangential]
 }
 
-/// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film.
+/// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film. `field` is
+/// the film's field on `mesh`: the equilibrium solve starts from it when given (a converged
+/// field makes that solve a check), and holds the equilibrium's field after.
 pub fn perturbation(
     eccentricity: EccentricityRatio,
     l_over_d: f64,
     physics: FilmModel,
     mesh: Mesh,
     stop: Stopping,
+    field: &mut Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<Coefficients, CalcError> {
-    let (base, equilibrium, field) =
-        positioned_film(eccentricity, l_over_d, physics, mesh, stop, None, budget)?;
+    let (base, equilibrium, solved) = positioned_film(
+        eccentricity,
+        l_over_d,
+        physics,
+        mesh,
+        stop,
+        field.take(),
+        budget,
+    )?;
+    let field = field.insert(solved);
     let eps = eccentricity.get();
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     // Small against the minimum film (1 − ε), large against the solver's tolerance.
     let delta = 1e-3 * (1.0 - eps).max(1e-3);
     let (k, c) = if physics.has_content() {
-        resolved_derivatives(base, mesh, stop, &field, delta, budget)?
+        resolved_derivatives(base, mesh, stop, field, delta, budget)?
     } else {
-        linear_derivatives(base, mesh, field, delta)?
+        // The linear response: one factorisation, counted as a film solve.
+        budget.count_field_solve();
+        linear_derivatives(base, mesh, field.clone(), delta)?
     };
     // Load frame: x along the load W = −F, y = x turned 90° with the rotation.
     let norm = f0[0].hypot(f0[1]);
@@ -243,6 +256,7 @@ mod tests {
                     axial_half: 12,
                 },
                 STOP,
+                &mut None,
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -281,6 +295,7 @@ mod tests {
             FilmModel::REYNOLDS,
             mesh,
             STOP,
+            &mut None,
             &Budget::unlimited(),
         )
         .unwrap();
@@ -299,6 +314,7 @@ mod tests {
             FilmModel::REYNOLDS,
             mesh,
             STOP,
+            &mut None,
             &Budget::unlimited(),
         )
         .unwrap();
@@ -324,6 +340,7 @@ mod tests {
                 FilmModel::REYNOLDS,
                 mesh,
                 STOP,
+                &mut None,
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -337,6 +354,7 @@ mod tests {
                 jfo(FeedLine::MaxFilm),
                 mesh,
                 STOP,
+                &mut None,
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -362,6 +380,7 @@ mod tests {
                 jfo(FeedLine::OppositeLoad),
                 mesh,
                 STOP,
+                &mut None,
                 &Budget::unlimited(),
             )
             .unwrap();

@@ -414,6 +414,7 @@ pub fn solve(
     start: Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
+    budget.count_field_solve();
     let g = grid(mesh, &film);
     // Port nodes (a periodic film fed at supply pressure): the columns within the port's
     // angular width of each groove centre (the film's start, and π on for two grooves; always

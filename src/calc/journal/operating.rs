@@ -374,6 +374,7 @@ impl Case {
 /// The plain bearing at its operating point: every effect decided, the equilibrium, the
 /// dimensional outputs and (when asked) the dynamics; `budget` stops a late request.
 pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
+    let solves_before = budget.field_solves();
     let mut notes = Notes::default();
     let notes = &mut notes;
     let inlet = inlet_conditions(case, notes)?;
@@ -404,6 +405,11 @@ pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
     solution.dynamics = dynamics
         .map(|(coefficients, stability)| dimensional_dynamics(case, &op, coefficients, stability));
     solution.notes = std::mem::take(notes);
+    if matches!(case.method, Method::Numerical { .. }) {
+        solution.report = solution
+            .report
+            .with_film_solves(budget.field_solves() - solves_before);
+    }
     Ok(solution)
 }
 
@@ -457,7 +463,26 @@ fn equilibrium_at_effective_temperature(
         mu_in,
         temperature_dependent,
     } = *inlet;
-    let isothermal = case.operate(t_in, budget)?;
+    // The isothermal equilibrium screens the thermal effect. Where the effect may apply and
+    // the method is numerical it is taken on the coarse mesh: it then only decides and starts
+    // the thermal search (and picks the THD fits' region); if the effect does not apply after
+    // all, the equilibrium is solved on the method's own mesh.
+    let screened = temperature_dependent && case.effects.thermal != Mode::Off;
+    let isothermal = match case.method {
+        Method::Numerical {
+            level, mesh, stop, ..
+        } if screened => Case {
+            method: Method::Numerical {
+                level,
+                mesh: mesh.coarse(),
+                stop,
+                richardson: false,
+            },
+            ..case.clone()
+        }
+        .operate(t_in, budget)?,
+        _ => case.operate(t_in, budget)?,
+    };
     let mut op = isothermal.clone();
     let k = case.effective_fraction();
     match (temperature_dependent, case.temperature_rise(&isothermal)) {
@@ -490,6 +515,8 @@ fn equilibrium_at_effective_temperature(
                     }
                     _ => thermal::effective_temperature(case, t_in, k * rise, budget)?,
                 };
+            } else if screened {
+                op = case.operate(t_in, budget)?;
             }
             notes.decide("thermal", decision);
         }

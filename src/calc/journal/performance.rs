@@ -272,6 +272,9 @@ pub struct Point {
     pub solve: Option<SolverReport>,
     pub error_estimate: Option<f64>,
     pub mesh: Option<Mesh>,
+    /// The converged field on `mesh` (numerical solutions): where a further solve about this
+    /// point starts.
+    pub field: Option<Vec<f64>>,
 }
 
 /// (R/C)·f with the journal's shear integrated over the whole film (Khonsari & Booser G5, the
@@ -314,6 +317,7 @@ fn from_film(eps: EccentricityRatio, f: &FilmSolution, physics: FilmModel) -> Po
         solve: Some(f.solved.report.clone()),
         error_estimate: None,
         mesh: None,
+        field: None,
     }
 }
 
@@ -390,7 +394,7 @@ fn at_eccentricity_from(
                 | Err(RefineError::Failed { failure, .. }) => return Err(failure),
                 Err(e) => return Err(CalcError::Internal(format!("mesh pair: {e:?}"))),
             };
-            let (coarse, fine) = (coarse.0, fine.0);
+            let (coarse, (fine, fine_field)) = (coarse.0, fine);
             let mut point = from_film(eps, &fine, physics);
             point.error_estimate = Some(error);
             // Richardson's extrapolation needs the same ratio both ways: only exact halvings
@@ -418,6 +422,7 @@ fn at_eccentricity_from(
             }
             point.solve = Some(fine.solved.clone().after(&coarse.solved).report);
             point.mesh = Some(mesh);
+            point.field = Some(fine_field);
             Ok(point)
         }
     }
@@ -467,6 +472,7 @@ fn closed(
         solve: None,
         error_estimate: None,
         mesh: None,
+        field: None,
     }
 }
 

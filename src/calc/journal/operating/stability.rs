@@ -20,6 +20,7 @@ pub(super) fn coefficients_at(
     method: Method,
     eccentricity: EccentricityRatio,
     physics: FilmModel,
+    field: &mut Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let ld = case.geometry.l_over_d();
@@ -37,7 +38,7 @@ pub(super) fn coefficients_at(
         }
         Method::ClosedForm(Approximation::Long) => Ok(None),
         Method::Numerical { mesh, stop, .. } => {
-            dynamics::perturbation(eccentricity, ld, physics, mesh, stop, budget).map(Some)
+            dynamics::perturbation(eccentricity, ld, physics, mesh, stop, field, budget).map(Some)
         }
     }
 }
@@ -64,7 +65,9 @@ pub(super) fn dynamic_coefficients(
     let eccentricity = op.point.eccentricity_ratio;
     let eps = eccentricity.get();
     let physics = case.physics(op.temperature_c);
-    let Some(coefficients) = coefficients_at(case, case.method, eccentricity, physics, budget)?
+    let mut field = op.point.field.clone();
+    let Some(coefficients) =
+        coefficients_at(case, case.method, eccentricity, physics, &mut field, budget)?
     else {
         notes.warn("no_dynamics_long_bearing", "the long-bearing closed form has no dynamic coefficients here; use the short form or a numerical fidelity");
         return Ok(None);
@@ -169,8 +172,12 @@ pub(super) fn dynamic_coefficients(
         })
     };
     let failure = std::cell::RefCell::new(None);
+    // Each point of the locus starts from the field of the last.
+    let mut locus_field = None;
     let mut margin = |e: f64| -> f64 {
-        match locus_physics(e).and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, budget)) {
+        match locus_physics(e)
+            .and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, &mut locus_field, budget))
+        {
             Ok(Some(c)) => {
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
@@ -248,8 +255,15 @@ pub(super) fn dynamic_coefficients(
     }
     let threshold_rpm = match threshold_eps {
         Some(e) => Some(
-            coefficients_at(case, search, ratio(e)?, locus_physics(e)?, budget)?
-                .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
+            coefficients_at(
+                case,
+                search,
+                ratio(e)?,
+                locus_physics(e)?,
+                &mut locus_field,
+                budget,
+            )?
+            .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
         )
         .filter(|v| v.is_finite()),
         None => None,

@@ -60,7 +60,9 @@ pub(super) fn thd_temperatures(
 /// S(ε), hence the viscosity that carries the load, μ = S W/(N_s L D (R/C)²), hence the
 /// temperature T(ε) of that viscosity; the balance is T_in + k ΔT(ε) − T(ε) (Eq. 8.63/8.64),
 /// which falls as ε grows (a hotter, thinner oil runs more eccentric and its rise falls), from
-/// k ΔT_iso at the isothermal ε. No root below ε = 0.999 means the film cannot carry the load
+/// k ΔT_iso at the isothermal ε (and stays k ΔT below it, where the oil would have to be colder
+/// than the inlet: the search starts a unit of ln(ε/(1 − ε)) below the isothermal ε, which
+/// may come from a coarser mesh). No root below ε = 0.999 means the film cannot carry the load
 /// at the temperature it would run at.
 pub(super) fn thermal_equilibrium(
     case: &Case,
@@ -71,9 +73,11 @@ pub(super) fn thermal_equilibrium(
 ) -> Result<Operating, CalcError> {
     let balance = HeatBalance { case, t_in, w };
     let l_over_d = case.geometry.l_over_d();
+    let eps = isothermal.point.eccentricity_ratio.get();
+    let below = 1.0 / (1.0 + (1.0 - eps) * std::f64::consts::E / eps);
     let (point, _, evaluations) = performance::balance(
         &balance,
-        isothermal.point.eccentricity_ratio.get(),
+        below.max(performance::MIN_ECCENTRICITY),
         l_over_d,
         case.method,
         case.physics(t_in),
