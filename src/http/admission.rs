@@ -89,13 +89,20 @@ pub struct Refusal {
 
 impl Admission {
     pub fn new(config: &Config) -> Admission {
+        // A semaphore holds at most MAX_PERMITS (usize::MAX >> 3); a larger limit means "no limit".
+        let cap = |n: usize| n.min(Semaphore::MAX_PERMITS);
+        let (light_limit, heavy_permits, heavy_queue) = (
+            cap(config.light_limit),
+            cap(config.heavy_permits),
+            cap(config.heavy_queue),
+        );
         Admission {
-            light: Arc::new(Semaphore::new(config.light_limit)),
-            heavy: Arc::new(Semaphore::new(config.heavy_permits)),
-            queue: Arc::new(Semaphore::new(config.heavy_queue)),
-            light_limit: config.light_limit,
-            heavy_permits: config.heavy_permits,
-            heavy_queue: config.heavy_queue,
+            light: Arc::new(Semaphore::new(light_limit)),
+            heavy: Arc::new(Semaphore::new(heavy_permits)),
+            queue: Arc::new(Semaphore::new(heavy_queue)),
+            light_limit,
+            heavy_permits,
+            heavy_queue,
             queue_wait: config.queue_wait,
         }
     }
