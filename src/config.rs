@@ -19,9 +19,20 @@ pub struct Config {
     pub deadline: Duration,
     /// `STRIBECK_MAX_BODY_BYTES`, default 1 MiB: larger bodies answer 413.
     pub max_body_bytes: usize,
-    /// `STRIBECK_MAX_CONCURRENT`, default 4 × cores: calculations running at once; more answer
-    /// 503 with Retry-After.
-    pub max_concurrent: usize,
+    /// `STRIBECK_LIGHT_LIMIT`, default 64 × cores: light calculations (closed forms, tables,
+    /// formulas; `calc::Cost::Light`) admitted at once, running or waiting for a thread; more
+    /// answer 503 with Retry-After at once. A bound on memory, not on the cores: a light
+    /// calculation takes well under a millisecond.
+    pub light_limit: usize,
+    /// `STRIBECK_HEAVY_PERMITS`, default cores: numerical solves (`calc::Cost::Heavy`) running
+    /// at once, one core each. Keep it below `workers`, so light requests always find a thread.
+    pub heavy_permits: usize,
+    /// `STRIBECK_HEAVY_QUEUE`, default 4 × cores: numerical solves waiting for a permit; more
+    /// answer 503 at once.
+    pub heavy_queue: usize,
+    /// `STRIBECK_QUEUE_WAIT_MS`, default 250: how long a numerical solve waits for a permit
+    /// (never past its deadline) before it answers 503 with Retry-After.
+    pub queue_wait: Duration,
     /// `STRIBECK_WORKERS`, default 2 × cores: threads of the blocking pool that runs solvers.
     pub workers: usize,
     /// `STRIBECK_LOG`: `text` (default) or `json`.
@@ -35,7 +46,10 @@ impl Default for Config {
             addr: SocketAddr::from(([127, 0, 0, 1], 8080)),
             deadline: Duration::from_secs(10),
             max_body_bytes: 1 << 20,
-            max_concurrent: 4 * cores,
+            light_limit: 64 * cores,
+            heavy_permits: cores,
+            heavy_queue: 4 * cores,
+            queue_wait: Duration::from_millis(250),
             workers: 2 * cores,
             log: LogFormat::Text,
         }
@@ -68,9 +82,26 @@ impl Config {
         {
             c.max_body_bytes = b;
         }
-        if let Some(n) = parse::<usize>("STRIBECK_MAX_CONCURRENT", get("STRIBECK_MAX_CONCURRENT"))?
-        {
-            c.max_concurrent = n.max(1);
+        if get("STRIBECK_MAX_CONCURRENT").is_some() {
+            // A count of every calculation once; light and numerical ones are admitted apart
+            // now, and a silently ignored limit would be worse than a refusal to start.
+            return Err(
+                "STRIBECK_MAX_CONCURRENT is gone: set STRIBECK_LIGHT_LIMIT (closed forms) \
+                 and STRIBECK_HEAVY_PERMITS (numerical solves) instead"
+                    .to_owned(),
+            );
+        }
+        if let Some(n) = parse::<usize>("STRIBECK_LIGHT_LIMIT", get("STRIBECK_LIGHT_LIMIT"))? {
+            c.light_limit = n.max(1);
+        }
+        if let Some(n) = parse::<usize>("STRIBECK_HEAVY_PERMITS", get("STRIBECK_HEAVY_PERMITS"))? {
+            c.heavy_permits = n.max(1);
+        }
+        if let Some(n) = parse::<usize>("STRIBECK_HEAVY_QUEUE", get("STRIBECK_HEAVY_QUEUE"))? {
+            c.heavy_queue = n;
+        }
+        if let Some(ms) = parse::<u64>("STRIBECK_QUEUE_WAIT_MS", get("STRIBECK_QUEUE_WAIT_MS"))? {
+            c.queue_wait = Duration::from_millis(ms);
         }
         if let Some(n) = parse::<usize>("STRIBECK_WORKERS", get("STRIBECK_WORKERS"))? {
             c.workers = n.max(1);
@@ -100,7 +131,10 @@ mod tests {
                     "STRIBECK_ADDR" => "0.0.0.0:9000",
                     "STRIBECK_DEADLINE_MS" => "250",
                     "STRIBECK_MAX_BODY_BYTES" => "1000",
-                    "STRIBECK_MAX_CONCURRENT" => "3",
+                    "STRIBECK_LIGHT_LIMIT" => "3",
+                    "STRIBECK_HEAVY_PERMITS" => "1",
+                    "STRIBECK_HEAVY_QUEUE" => "0",
+                    "STRIBECK_QUEUE_WAIT_MS" => "40",
                     "STRIBECK_WORKERS" => "5",
                     "STRIBECK_LOG" => "json",
                     _ => return None,
@@ -111,10 +145,9 @@ mod tests {
         .unwrap();
         assert_eq!(c.addr.port(), 9000);
         assert_eq!(c.deadline, Duration::from_millis(250));
-        assert_eq!(
-            (c.max_body_bytes, c.max_concurrent, c.workers),
-            (1000, 3, 5)
-        );
+        assert_eq!((c.max_body_bytes, c.light_limit, c.workers), (1000, 3, 5));
+        assert_eq!((c.heavy_permits, c.heavy_queue), (1, 0));
+        assert_eq!(c.queue_wait, Duration::from_millis(40));
         assert_eq!(c.log, LogFormat::Json);
     }
 
@@ -123,5 +156,15 @@ mod tests {
         let e = Config::from_lookup(|k| (k == "STRIBECK_DEADLINE_MS").then(|| "soon".to_owned()))
             .unwrap_err();
         assert!(e.contains("STRIBECK_DEADLINE_MS"), "{e}");
+    }
+
+    #[test]
+    fn the_old_single_limit_is_refused_with_its_replacements() {
+        let e = Config::from_lookup(|k| (k == "STRIBECK_MAX_CONCURRENT").then(|| "8".to_owned()))
+            .unwrap_err();
+        assert!(
+            e.contains("STRIBECK_LIGHT_LIMIT") && e.contains("STRIBECK_HEAVY_PERMITS"),
+            "{e}"
+        );
     }
 }

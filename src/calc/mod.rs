@@ -16,7 +16,8 @@ pub(crate) mod testing;
 pub use crate::numerics::driver::Budget;
 pub use context::{CalcError, Context, Notes, Warning};
 pub use registry::{
-    execute, find, validate_value, Entry, Envelope, Executed, Failure, FieldError, REGISTRY,
+    execute, find, validate_value, Cost, Costing, Entry, Envelope, Executed, Failure, FieldError,
+    REGISTRY,
 };
 
 use serde::de::DeserializeOwned;

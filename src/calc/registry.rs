@@ -17,15 +17,16 @@ use super::{
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
 
-/// Every calculation the service offers. Adding a room is one line here.
+/// Every calculation the service offers. Adding a room is one line here; a room whose default
+/// runs a numerical solve says so with `.numerical()` (see [`Costing`]).
 pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::viscosity::Viscosity>(),
     Entry::of::<lubricant::viscosity_index::ViscosityIndex>(),
     Entry::of::<lubricant::properties::Properties>(),
-    Entry::of::<journal::plain::PlainJournal>(),
+    Entry::of::<journal::plain::PlainJournal>().numerical(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl::film::EhlFilm>(),
-    Entry::of::<contact::ehl::Ehl>(),
+    Entry::of::<contact::ehl::Ehl>().numerical(),
     Entry::of::<contact::flash_temperature::FlashTemperature>(),
     Entry::of::<rolling::kinematics::Kinematics>(),
     Entry::of::<rolling::life::Life>(),
@@ -41,6 +42,50 @@ pub fn find(path: &str) -> Option<&'static Entry> {
     REGISTRY.iter().find(|e| e.path == path)
 }
 
+/// What one request costs the cores, known before it runs so the door can admit it by cost.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Cost {
+    /// A closed form, a table or a short search: well under a millisecond of one core.
+    Light,
+    /// A numerical solve (a Reynolds grid, an EHL Newton or multigrid run): tens of
+    /// milliseconds to seconds of one core.
+    Heavy,
+}
+
+/// How a calculation's requests are costed. Declared once per room, in [`REGISTRY`].
+///
+/// Measured on the rooms' examples (release build): every room but two answers in under 0.5 ms,
+/// `/ehl-film` and `/hertz` at `standard` included; the plain journal takes 80 ms (`fast`) to
+/// 2 s (`high`) and the numerical EHL 25 ms, unless the journal is asked for a closed form.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub enum Costing {
+    /// Every request is [`Cost::Light`].
+    Light,
+    /// [`Cost::Heavy`], unless the request's top-level `fidelity` is `"closed_form"`.
+    Numerical,
+}
+
+impl Costing {
+    /// The cost of one request body, from a look at its `fidelity` field only (microseconds: the
+    /// rest of the body is skipped, not built). A body that cannot be read is light: it fails
+    /// in parsing, before any physics.
+    pub fn of(self, body: &[u8]) -> Cost {
+        /// The one field the cost depends on; every other field is skipped.
+        #[derive(serde::Deserialize)]
+        struct Peek {
+            fidelity: Option<serde_json::Value>,
+        }
+        match self {
+            Costing::Light => Cost::Light,
+            Costing::Numerical => match serde_json::from_slice::<Peek>(body) {
+                Err(_) => Cost::Light,
+                Ok(Peek { fidelity: Some(f) }) if f == "closed_form" => Cost::Light,
+                Ok(_) => Cost::Heavy,
+            },
+        }
+    }
+}
+
 /// Parse, validate and run a request body before `deadline` (or until `cancelled`).
 pub type ExecuteFn = fn(&[u8], Instant, Arc<AtomicBool>) -> Result<Executed, Failure>;
 
@@ -52,6 +97,8 @@ pub struct Entry {
     pub fidelity: &'static [Level],
     pub effects: &'static [&'static str],
     pub example: &'static str,
+    /// What its requests cost the cores: how the door admits them.
+    pub costing: Costing,
     /// Parse, validate and run one request body; the envelope comes back serialised.
     pub execute: ExecuteFn,
     /// Names of the input and output schemas.
@@ -69,6 +116,7 @@ impl Entry {
             fidelity: C::FIDELITY,
             effects: C::EFFECTS,
             example: C::EXAMPLE,
+            costing: Costing::Light,
             execute: execute::<C>,
             schema_names: || (C::Input::name(), C::Output::name()),
             schemas: |out| {
@@ -78,6 +126,21 @@ impl Entry {
                 C::Output::schemas(out);
             },
         }
+    }
+}
+
+impl Entry {
+    /// The same entry, costed as a numerical solve unless a request asks for a closed form.
+    pub const fn numerical(self) -> Entry {
+        Entry {
+            costing: Costing::Numerical,
+            ..self
+        }
+    }
+
+    /// The cost of one request body.
+    pub fn cost(&self, body: &[u8]) -> Cost {
+        self.costing.of(body)
     }
 }
 
@@ -301,6 +364,36 @@ mod tests {
                 e.path
             );
         }
+    }
+
+    #[test]
+    fn numerical_solves_are_heavy_unless_asked_for_a_closed_form() {
+        let cost = |path: &str, body: &str| find(path).unwrap().cost(body.as_bytes());
+        for e in REGISTRY {
+            let want = match e.path {
+                "/v1/journal-bearings/plain" | "/v1/contacts/ehl" => Cost::Heavy,
+                _ => Cost::Light,
+            };
+            assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);
+        }
+        let journal = "/v1/journal-bearings/plain";
+        let with = |fidelity: &str| {
+            let mut v: serde_json::Value =
+                serde_json::from_str(find(journal).unwrap().example).unwrap();
+            v["fidelity"] = serde_json::from_str(fidelity).unwrap();
+            v.to_string()
+        };
+        assert_eq!(cost(journal, &with(r#""closed_form""#)), Cost::Light);
+        for heavy in [
+            r#""fast""#,
+            r#""high""#,
+            r#"{"grid": [64, 8]}"#,
+            r#""closed""#,
+        ] {
+            assert_eq!(cost(journal, &with(heavy)), Cost::Heavy, "{heavy}");
+        }
+        // A body that cannot be read fails in parsing, before any physics.
+        assert_eq!(cost(journal, "{not json"), Cost::Light);
     }
 
     #[test]

@@ -1,5 +1,5 @@
-//! The generic handler: content type, body, load shedding, the blocking pool under a deadline,
-//! and the mapping of every outcome to a response.
+//! The generic handler: content type, body, admission by cost (`admission`), the blocking pool
+//! under a deadline, and the mapping of every outcome to a response.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
@@ -12,6 +12,7 @@ use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
 use tracing::Instrument;
 
+use super::admission::{cost_label, Outcome};
 use super::{AppState, InternalCause, Problem, SolverSeconds};
 use crate::calc::Entry;
 
@@ -54,22 +55,37 @@ pub async fn run(
             .into_response()
         }
     };
-    let Ok(permit) = state.permits.clone().try_acquire_owned() else {
-        return Problem::overloaded().into_response();
+    // The deadline runs from arrival: time spent waiting for a solver permit counts against it.
+    let arrived = Instant::now();
+    let deadline = arrived + deadline_for(&state, &headers);
+    let cost = entry.cost(&body);
+    let ticket = match state.admission.admit(cost, deadline).await {
+        Ok(ticket) => ticket,
+        Err(refusal) => {
+            state
+                .metrics
+                .record_admission(cost_label(cost), refusal.outcome.label());
+            return Problem::overloaded(refusal.detail).into_response();
+        }
     };
+    state
+        .metrics
+        .record_admission(cost_label(cost), ticket.outcome.label());
+    if ticket.outcome == Outcome::Queued {
+        tracing::debug!(waited_ms = %arrived.elapsed().as_millis(), "admitted after queueing");
+    }
+    let remaining = deadline.saturating_duration_since(Instant::now());
 
-    let budget = deadline_for(&state, &headers);
-    let deadline = Instant::now() + budget;
     let cancelled = Arc::new(AtomicBool::new(false));
     let flag = cancelled.clone();
     let span = tracing::Span::current();
-    // The permit moves into the task: a request that timed out still holds it until its solver
-    // has seen the cancellation, so the limit counts real work.
+    // The ticket moves into the task: a request that timed out still holds its permit until its
+    // solver has seen the cancellation, so admission counts real work.
     let task = tokio::task::spawn_blocking(move || {
-        let _permit = permit;
+        let _ticket = ticket;
         span.in_scope(|| (entry.execute)(&body, deadline, flag))
     });
-    let outcome = tokio::time::timeout(budget, task)
+    let outcome = tokio::time::timeout(remaining, task)
         .instrument(tracing::Span::current())
         .await;
     match outcome {

@@ -1,5 +1,5 @@
 //! Prometheus metrics, kept by hand: request counts by route and status, request latency and
-//! solver time histograms. Route labels are the matched route, never the raw URL, so the label
+//! solver time histograms, admissions by cost and outcome. Route labels are the matched route, never the raw URL, so the label
 //! set stays bounded.
 
 use std::collections::BTreeMap;
@@ -48,6 +48,7 @@ struct Inner {
     requests: BTreeMap<(String, u16), u64>,
     latency: BTreeMap<String, Histogram>,
     solver: BTreeMap<String, Histogram>,
+    admissions: BTreeMap<(&'static str, &'static str), u64>,
 }
 
 /// The service's counters.
@@ -68,6 +69,13 @@ impl Metrics {
         if let Some(s) = solver_seconds {
             m.solver.entry(route.to_owned()).or_default().observe(s);
         }
+    }
+
+    /// One admission decision: the request's cost class and how it got in or why not
+    /// (`admission::Outcome`'s label).
+    pub fn record_admission(&self, cost: &'static str, outcome: &'static str) {
+        let mut m = self.inner.lock().unwrap_or_else(|e| e.into_inner());
+        *m.admissions.entry((cost, outcome)).or_default() += 1;
     }
 
     /// The Prometheus text exposition.
@@ -96,6 +104,16 @@ impl Metrics {
         for (route, h) in &m.solver {
             h.render(&mut out, "stribeck_solver_duration_seconds", route);
         }
+        out.push_str(
+            "# HELP stribeck_admissions_total Calculation requests by cost class and admission: admitted, queued (then admitted), shed_full, shed_waited.\n",
+        );
+        out.push_str("# TYPE stribeck_admissions_total counter\n");
+        for ((cost, outcome), n) in &m.admissions {
+            let _ = writeln!(
+                out,
+                "stribeck_admissions_total{{cost=\"{cost}\",outcome=\"{outcome}\"}} {n}"
+            );
+        }
         out
     }
 }
@@ -110,6 +128,8 @@ mod tests {
         m.record("/a", 200, 0.002, Some(0.001));
         m.record("/a", 200, 0.2, None);
         m.record("/a", 422, 0.0001, None);
+        m.record_admission("heavy", "queued");
+        m.record_admission("heavy", "queued");
         let text = m.render();
         assert!(
             text.contains("stribeck_requests_total{path=\"/a\",status=\"200\"} 2"),
@@ -125,6 +145,10 @@ mod tests {
         );
         assert!(
             text.contains("stribeck_solver_duration_seconds_count{path=\"/a\"} 1"),
+            "{text}"
+        );
+        assert!(
+            text.contains("stribeck_admissions_total{cost=\"heavy\",outcome=\"queued\"} 2"),
             "{text}"
         );
     }

@@ -1,6 +1,7 @@
 //! The door: routes, middleware and the one generic handler every calculation goes through.
 //! Thin glue: parsing, validation and physics live in `crate::calc`.
 
+pub mod admission;
 mod calculate;
 mod meta;
 pub mod metrics;
@@ -17,7 +18,6 @@ use axum::middleware::{self, Next};
 use axum::response::{IntoResponse, Response};
 use axum::routing::{get, post};
 use axum::Router;
-use tokio::sync::Semaphore;
 use tower::ServiceBuilder;
 use tower_http::catch_panic::CatchPanicLayer;
 use tower_http::request_id::{
@@ -29,6 +29,7 @@ pub use problem::{InternalCause, Problem};
 
 use crate::calc::{Entry, REGISTRY};
 use crate::config::Config;
+use admission::Admission;
 use metrics::Metrics;
 
 /// Shared state of one server.
@@ -36,8 +37,8 @@ use metrics::Metrics;
 pub struct AppState {
     pub config: Arc<Config>,
     pub metrics: Arc<Metrics>,
-    /// Calculations running at once; a request that finds none free is shed with 503.
-    pub permits: Arc<Semaphore>,
+    /// Which calculations run now, wait, or are shed with 503 (by cost).
+    pub admission: Arc<Admission>,
     /// False once shutdown has begun: `/ready` then answers 503 so balancers drain this replica.
     pub ready: Arc<AtomicBool>,
 }
@@ -45,7 +46,7 @@ pub struct AppState {
 impl AppState {
     pub fn new(config: Config) -> AppState {
         AppState {
-            permits: Arc::new(Semaphore::new(config.max_concurrent)),
+            admission: Arc::new(Admission::new(&config)),
             config: Arc::new(config),
             metrics: Arc::new(Metrics::default()),
             ready: Arc::new(AtomicBool::new(true)),

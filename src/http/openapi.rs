@@ -17,7 +17,7 @@ use utoipa_swagger_ui::SwaggerUi;
 use super::meta::{CalculationInfo, CalculationList};
 use super::AppState;
 use super::Problem;
-use crate::calc::{FieldError, Warning, REGISTRY};
+use crate::calc::{Costing, Entry, FieldError, Warning, REGISTRY};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{Level, SolverReport};
 
@@ -97,6 +97,24 @@ fn envelope(output: &str) -> Schema {
 
 /// Two different types under one component name would silently overwrite each other in the
 /// document (and break the responses' schema): refuse to build it.
+/// The 503 of a calculation, as its admission class has it (`http::admission`).
+fn shed_text(entry: &Entry) -> String {
+    let retry = "Retry after the Retry-After delay (seconds).";
+    match entry.costing {
+        Costing::Light => {
+            format!("The replica is full: too many calculations are in progress. {retry}")
+        }
+        Costing::Numerical => {
+            let closed = if entry.fidelity.contains(&Level::ClosedForm) {
+                " `fidelity: closed_form` needs no solver."
+            } else {
+                ""
+            };
+            format!("The replica is full: every solver stayed busy through the short queue wait, or the queue was full.{closed} {retry}")
+        }
+    }
+}
+
 fn assert_unique_schema_names(schemas: &[(String, RefOr<Schema>)], _rooms_from: usize) {
     let mut seen: std::collections::BTreeMap<&str, String> = std::collections::BTreeMap::new();
     for (name, schema) in schemas {
@@ -159,7 +177,7 @@ fn build() -> OpenApi {
             .response("415", problem_response("The body is not sent as application/json."))
             .response("422", problem_response("Invalid input (each field named by a JSON pointer), a physically impossible case, or a solver that did not converge."))
             .response("500", problem_response("An internal error; nothing internal is disclosed."))
-            .response("503", problem_response("Too many calculations running; retry after the Retry-After delay."))
+            .response("503", problem_response(&shed_text(entry)))
             .response("504", problem_response("The calculation passed its deadline and was stopped."));
         paths = paths.path(entry.path, PathItem::new(HttpMethod::Post, op));
     }

@@ -70,12 +70,13 @@ impl Problem {
         )
     }
 
-    pub fn overloaded() -> Problem {
+    /// 503: the calculation was not admitted (`detail` says which limit was reached).
+    pub fn overloaded(detail: impl Into<String>) -> Problem {
         let mut p = Problem::new(
             StatusCode::SERVICE_UNAVAILABLE,
             "overloaded",
             "Service overloaded",
-            "too many calculations are running; retry after the given delay",
+            detail,
         );
         p.retry_after_s = Some(1);
         p

@@ -58,10 +58,10 @@ async fn a_calculation_past_its_deadline_is_504_and_the_server_keeps_serving() {
 }
 
 #[tokio::test]
-async fn a_flood_past_the_concurrency_limit_is_shed_with_503() {
+async fn a_flood_past_the_light_limit_is_shed_with_503() {
     let app = spawn_with(
         Config {
-            max_concurrent: 2,
+            light_limit: 2,
             ..test_config()
         },
         None,

@@ -1,6 +1,7 @@
 //! HTTP tests, one binary (one link): each module tests one face of the service against a real
 //! server on 127.0.0.1:0.
 //!
+//! - `admission`: admission by cost: closed forms beside busy solvers, the solvers' queue.
 //! - `contract`: the envelope, every error status and its problem+json, request ids.
 //! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
@@ -8,6 +9,7 @@
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
+mod admission;
 mod contract;
 mod helpers;
 mod journal;
