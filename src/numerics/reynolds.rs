@@ -155,65 +155,76 @@ impl Stencil {
             Some(c) => c(x, y, axis),
             None => h(x, y).powi(3),
         };
-        // Each face is evaluated once: a node's east face is its neighbour's west face, and a
-        // row's north faces are the next row's south faces.
-        let x_face = |x: f64, y: f64| {
-            let hx = h(x, y);
-            let c = match problem.conductance {
-                Some(c) => c(x, y, Axis::X),
-                None => hx.powi(3),
-            };
-            (hx, c)
-        };
-        let mut south: Vec<f64> = (0..nx)
-            .map(|i| cond(grid.x[i], 0.5 * dy, Axis::Y))
-            .collect();
-        let mut north = vec![0.0; nx];
-        for j in 1..rows {
-            if j == grid.ny && !grid.symmetric {
-                break; // the far edge carries p = 0
-            }
-            let y = grid.y(j);
-            let hy = grid.cv_y(j);
-            let y_n = ((j as f64 + 0.5) * dy).min(grid.width);
-            let at_mid = grid.symmetric && j == grid.ny;
-            let mut west: Option<(f64, (f64, f64))> = None;
-            for i in first..nx {
-                let k = j * (nx + 1) + i;
-                let (xw, xp, xe) = if i == 0 {
-                    (grid.x[nx - 1] - period, grid.x[0], grid.x[1])
-                } else {
-                    (grid.x[i - 1], grid.x[i], grid.x[i + 1])
+        // Column by column, each coefficient function over a whole column at one x (a film
+        // that depends on x through trigonometric functions may then keep them), each face once:
+        // a column's east faces are the next column's west faces, and a node's north face is
+        // the next node's south face.
+        let last_row = if grid.symmetric { grid.ny } else { grid.ny - 1 };
+        let ys: Vec<f64> = (0..=last_row).map(|j| grid.y(j)).collect();
+        let x_faces = |x: f64, out: &mut Vec<(f64, f64)>| {
+            out.clear();
+            out.extend(ys.iter().map(|&y| {
+                let hx = h(x, y);
+                let c = match problem.conductance {
+                    Some(c) => c(x, y, Axis::X),
+                    None => hx.powi(3),
                 };
-                north[i] = if at_mid { 0.0 } else { cond(xp, y_n, Axis::Y) };
-                if problem.held.is_some_and(|held| held(grid.x[i], y)) {
+                (hx, c)
+            }));
+        };
+        let (mut west, mut east) = (Vec::new(), Vec::new());
+        let mut y_faces = vec![0.0; last_row + 1];
+        let mut sources = vec![0.0; last_row + 1];
+        for i in first..nx {
+            let (xw, xp, xe) = if i == 0 {
+                (grid.x[nx - 1] - period, grid.x[0], grid.x[1])
+            } else {
+                (grid.x[i - 1], grid.x[i], grid.x[i + 1])
+            };
+            let (fw, fe) = (0.5 * (xw + xp), 0.5 * (xp + xe));
+            let wx = fe - fw;
+            if i == first {
+                x_faces(fw, &mut west);
+            }
+            x_faces(fe, &mut east);
+            // y_faces[j]: the face between rows j and j + 1 (the mid-plane row has none).
+            for (j, face) in y_faces.iter_mut().enumerate() {
+                let y_n = ((j as f64 + 0.5) * dy).min(grid.width);
+                *face = if grid.symmetric && j == grid.ny {
+                    0.0
+                } else {
+                    cond(xp, y_n, Axis::Y)
+                };
+            }
+            if let Some(f) = problem.source {
+                for (v, &y) in sources.iter_mut().zip(&ys) {
+                    *v = f(xp, y);
+                }
+            }
+            for j in 1..=last_row {
+                let k = j * (nx + 1) + i;
+                let y = ys[j];
+                if problem.held.is_some_and(|held| held(xp, y)) {
                     s.held[k] = true;
                     if i == 0 {
                         s.held[k + nx] = true;
                     }
-                    west = None;
                     continue;
                 }
-                let (fw, fe) = (0.5 * (xw + xp), 0.5 * (xp + xe));
-                let wx = fe - fw;
-                let (hw, cw) = match west {
-                    Some((face, values)) if face == fw => values,
-                    _ => x_face(fw, y),
-                };
-                let (he, ce) = x_face(fe, y);
-                west = Some((fe, (he, ce)));
+                let hy = grid.cv_y(j);
+                let ((hw, cw), (he, ce)) = (west[j], east[j]);
                 s.ae[k] = ce / (xe - xp) * hy;
                 s.aw[k] = cw / (xp - xw) * hy;
-                s.a_s[k] = problem.anisotropy * south[i] / dy * wx;
-                s.an[k] = problem.anisotropy * north[i] / dy * wx;
+                s.a_s[k] = problem.anisotropy * y_faces[j - 1] / dy * wx;
+                s.an[k] = problem.anisotropy * y_faces[j] / dy * wx;
                 s.ap[k] = s.ae[k] + s.aw[k] + s.an[k] + s.a_s[k];
-                let source = problem.source.map_or(0.0, |f| f(xp, y) * wx * hy);
+                let source = sources[j] * wx * hy;
                 s.ce[k] = problem.wedge * he * hy;
                 s.cw[k] = problem.wedge * hw * hy;
                 s.src[k] = source;
                 s.b[k] = problem.wedge * (he - hw) * hy + source;
             }
-            std::mem::swap(&mut south, &mut north);
+            std::mem::swap(&mut west, &mut east);
         }
         s
     }

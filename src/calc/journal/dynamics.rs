@@ -130,18 +130,13 @@ fn linear_derivatives(
     })?;
     let mut k = [[0.0; 2]; 2];
     let mut c = [[0.0; 2]; 2];
-    let rate = 2.0 * PI * delta;
     for j in 0..2 {
         let shape = response.load_derivative(
             &perturbed(base, j, delta, 0.0),
             &perturbed(base, j, -delta, 0.0),
             delta,
         );
-        let motion = response.load_derivative(
-            &perturbed(base, j, 0.0, rate),
-            &perturbed(base, j, 0.0, -rate),
-            rate,
-        );
+        let motion = response.squeeze_derivative(j == 0);
         // Force components [a, b] = [radial, −tangential].
         for (i, sign) in [1.0, -1.0].into_iter().enumerate() {
             k[i][j] = sign * shape[i];

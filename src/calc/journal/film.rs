@@ -19,6 +19,7 @@
 //! fed either along the same line (flooded, P̄ = 0), or, for a hole or axial-groove feed, through
 //! ports held at the supply pressure in a periodic 360° film (P̄ is then above ambient).
 
+use std::cell::Cell;
 use std::f64::consts::PI;
 
 use crate::calc::Budget;
@@ -379,10 +380,16 @@ impl Film {
     }
     /// h̄(θ, ȳ), ȳ = y/L from one end.
     pub fn thickness(&self, theta: f64, y: f64) -> f64 {
-        let tilt = self
-            .tilt
-            .map_or(0.0, |(e, dir)| e * (y - 0.5) * (theta - dir).cos());
-        1.0 + self.a() * theta.cos() + self.sin_offset * theta.sin() - tilt
+        self.thickness_at(theta.sin_cos(), y)
+    }
+
+    /// h̄ at (sin θ, cos θ) and ȳ.
+    fn thickness_at(&self, (sin, cos): (f64, f64), y: f64) -> f64 {
+        let tilt = self.tilt.map_or(0.0, |(e, dir)| {
+            let (sd, cd) = dir.sin_cos();
+            e * (y - 0.5) * (cos * cd + sin * sd)
+        });
+        1.0 + self.a() * cos + self.sin_offset * sin - tilt
     }
 
     /// ∂h̄/∂θ at (θ, ȳ).
@@ -502,13 +509,16 @@ pub fn solve(
 /// conductances of a turbulent one, and the `held` nodes of ported supplies.
 fn assemble(film: &Film, g: &Grid, held: Option<&dyn Fn(f64, f64) -> bool>) -> Stencil {
     let film = *film;
-    let thickness = move |theta: f64, y: f64| film.thickness(theta, y);
-    let squeeze = move |theta: f64, _y: f64| {
-        12.0 * (film.cos_rate * theta.cos() + film.sin_rate * theta.sin())
+    // The stencil asks for a whole column at one θ: its sine and cosine are kept.
+    let trig = Trig::default();
+    let thickness = |theta: f64, y: f64| film.thickness_at(trig.at(theta), y);
+    let squeeze = |theta: f64, _y: f64| {
+        let (sin, cos) = trig.at(theta);
+        12.0 * (film.cos_rate * cos + film.sin_rate * sin)
     };
     let moving = film.cos_rate != 0.0 || film.sin_rate != 0.0;
-    let turbulent = move |theta: f64, y: f64, axis: Axis| {
-        let h = film.thickness(theta, y);
+    let turbulent = |theta: f64, y: f64, axis: Axis| {
+        let h = film.thickness_at(trig.at(theta), y);
         let (gx, gy) = turbulent_flow_factors(film.physics.turbulence_reynolds.unwrap_or(0.0) * h);
         h.powi(3) * if axis == Axis::X { gx } else { gy }
     };
@@ -525,6 +535,27 @@ fn assemble(film: &Film, g: &Grid, held: Option<&dyn Fn(f64, f64) -> bool>) -> S
         held,
     };
     Stencil::assemble(g, &problem)
+}
+
+/// sin θ and cos θ of the last θ asked for.
+struct Trig(Cell<(f64, f64, f64)>);
+
+impl Default for Trig {
+    fn default() -> Self {
+        Trig(Cell::new((f64::NAN, 0.0, 0.0)))
+    }
+}
+
+impl Trig {
+    fn at(&self, theta: f64) -> (f64, f64) {
+        let (last, sin, cos) = self.0.get();
+        if last == theta {
+            return (sin, cos);
+        }
+        let (sin, cos) = theta.sin_cos();
+        self.0.set((theta, sin, cos));
+        (sin, cos)
+    }
 }
 
 /// The field solved on `coarse` (a mesh of [`Mesh::coarse`]) carried over to `mesh`, to start
@@ -587,6 +618,21 @@ impl Response {
             .map(|(a, b)| (a - b) / (2.0 * step))
             .collect();
         load(&self.grid, &self.operator.response(&change, &self.field))
+    }
+
+    /// ∂(load)/∂Ȧ (`cos`) or ∂(load)/∂Ḃ: the rate enters only the squeeze source
+    /// 12 (Ȧ cos θ + Ḃ sin θ) integrated over each control volume, linearly.
+    pub fn squeeze_derivative(&self, cos: bool) -> [f64; 2] {
+        let g = &self.grid;
+        let mut change = vec![0.0; self.field.len()];
+        for i in 0..=g.nx() {
+            let (sin_t, cos_t) = g.x[i].sin_cos();
+            let weight = 12.0 * if cos { cos_t } else { sin_t } * g.cv_x(i);
+            for j in 0..=g.ny {
+                change[at(g, i, j)] = weight * g.cv_y(j);
+            }
+        }
+        load(g, &self.operator.response(&change, &self.field))
     }
 }
 

@@ -476,6 +476,11 @@ fn closed(
     }
 }
 
+/// The step in u = ln(ε/(1 − ε)) below which a search on the method's own mesh has converged:
+/// the secant converges superlinearly, so the root is then good to far better than 1e-8 — the
+/// load carried to 1e-8, five decades below the finest mesh's discretisation error.
+const FINE_TOLERANCE: f64 = 1e-8;
+
 /// What an equilibrium search balances at ε: a residual of the operating point that falls as ε
 /// grows (0 at equilibrium), and the reason when no ε of the bracket balances it.
 pub trait Balance {
@@ -565,17 +570,31 @@ pub fn balance(
         warm: None,
         evaluations: &mut evaluations,
     };
+    // A numerical search starts where the short-bearing closed form balances (microseconds,
+    // and within a fraction of a unit of u), with the closed form's slope for its first step.
+    let start = match method {
+        Method::Numerical { .. } => searcher.closed_form_start(bracket),
+        Method::ClosedForm(_) => None,
+    };
+    let search =
+        |searcher: &mut Searcher, m: Method, tolerance: f64, start: Option<Start>| match start {
+            Some(start) => searcher.polish(m, start, bracket, tolerance, budget),
+            None => searcher
+                .bracketed(m, bracket, tolerance, budget)
+                .map(|u| Start { u, slope: None }),
+        };
     let u = match coarse {
         // Near the ends of the bracket the two meshes may disagree on whether a root exists:
         // the fine mesh decides.
-        Some(coarse) => match searcher.bracketed(coarse, bracket, 1e-5, budget) {
-            Ok(u) => searcher.polish(method, u, bracket, budget)?,
+        // The coarse root need only be near: the meshes' roots differ by a few hundredths.
+        Some(coarse) => match search(&mut searcher, coarse, 1e-3, start) {
+            Ok(found) => search(&mut searcher, method, FINE_TOLERANCE, Some(found))?.u,
             Err(CalcError::Impossible { .. }) => {
-                searcher.bracketed(method, bracket, 1e-10, budget)?
+                searcher.bracketed(method, bracket, FINE_TOLERANCE, budget)?
             }
             Err(e) => return Err(e),
         },
-        None => searcher.bracketed(method, bracket, 1e-10, budget)?,
+        None => search(&mut searcher, method, FINE_TOLERANCE, start)?.u,
     };
     let warm = searcher.warm.take().and_then(|(m, p)| match method {
         Method::Numerical { mesh, .. } if mesh == m => Some(p),
@@ -674,22 +693,68 @@ impl Searcher<'_> {
         }
     }
 
-    /// Secant steps on `method` from the coarse root `u0`, kept inside the bracket; Brent over
-    /// the whole bracket if they do not settle in 12 steps.
+    /// Where the short-bearing closed form balances the target in the bracket, and its slope
+    /// there; None when it balances nowhere in it.
+    fn closed_form_start(&self, (lo, hi): (f64, f64)) -> Option<Start> {
+        let residual = |u: f64| -> f64 {
+            let Ok(eps) = to_eps(u) else { return f64::NAN };
+            let point = closed(
+                eps,
+                self.l_over_d,
+                Approximation::Short,
+                self.physics.cavitation,
+            );
+            self.target.residual(&point).unwrap_or(f64::NAN)
+        };
+        let root = brent(
+            residual,
+            lo,
+            hi,
+            roots::Stopping {
+                x_tolerance: 1e-4,
+                max_iterations: 100,
+            },
+        )
+        .ok()?;
+        let h = 1e-3;
+        let slope = (residual(root.x + h) - residual(root.x - h)) / (2.0 * h);
+        Some(Start {
+            u: root.x,
+            slope: (slope.is_finite() && slope < 0.0).then_some(slope),
+        })
+    }
+
+    /// Secant steps on `method` from `start` (its slope, when known, for the first step), kept
+    /// inside the bracket, until a step is shorter than `tolerance`; Brent over the whole
+    /// bracket to `tolerance` if they do not settle in 12 steps. The root and the last slope.
     fn polish(
         &mut self,
         method: Method,
-        u0: f64,
+        start: Start,
         bracket: (f64, f64),
+        tolerance: f64,
         budget: &Budget,
-    ) -> Result<f64, CalcError> {
+    ) -> Result<Start, CalcError> {
+        let u0 = start.u;
         let (mut ua, mut fa) = (u0, self.residual(method, u0, budget)?);
         if fa.abs() < 1e-10 {
-            return Ok(ua);
+            return Ok(start);
         }
-        // ln S falls with u at roughly the coarse slope; a small first step finds the fine one.
-        let mut ub = (u0 + if fa > 0.0 { 1e-3 } else { -1e-3 }).clamp(bracket.0, bracket.1);
+        // The residual falls with u at roughly the slope of the coarser model; without one, a
+        // small first step finds it.
+        let first = match start.slope {
+            Some(slope) => (-fa / slope).clamp(-2.0, 2.0),
+            None => {
+                if fa > 0.0 {
+                    1e-3
+                } else {
+                    -1e-3
+                }
+            }
+        };
+        let mut ub = (u0 + first).clamp(bracket.0, bracket.1);
         let mut fb = self.residual(method, ub, budget)?;
+        let mut slope = f64::NAN;
         // One iteration: one secant step and its film solve. A slope that is not a falling
         // one stalls the steps; the root is then judged below.
         let mut failure = None;
@@ -703,7 +768,7 @@ impl Searcher<'_> {
             if fb.abs() < 1e-10 {
                 return Verdict::Converged(ub, fb.abs());
             }
-            let slope = (fb - fa) / (ub - ua);
+            slope = (fb - fa) / (ub - ua);
             if !(slope.is_finite() && slope < 0.0) {
                 return Verdict::Stalled(fb.abs());
             }
@@ -717,7 +782,7 @@ impl Searcher<'_> {
                     return Verdict::Diverged(f64::NAN);
                 }
             };
-            if (ub - ua).abs() < 1e-9 {
+            if (ub - ua).abs() < tolerance {
                 return Verdict::Converged(ub, (ub - ua).abs());
             }
             Verdict::Continue(fb.abs())
@@ -725,18 +790,30 @@ impl Searcher<'_> {
         if let Some(e) = failure {
             return Err(e);
         }
+        let found = |u: f64| Start {
+            u,
+            slope: (slope.is_finite() && slope < 0.0).then_some(slope),
+        };
         match run {
-            Ok(root) => return Ok(root.value),
+            Ok(root) => return Ok(found(root.value)),
             Err(stopped) if stopped.reason() == StopReason::Deadline => return Err(stopped.into()),
             Err(_) => {}
         }
         // The solver's own tolerance bounds how small the residual gets: accept a root good
-        // to 1e-7 in ln S (the load to 1e-7), else search the whole bracket on this mesh.
+        // to 1e-7 in the residual (the load to 1e-7), else search the whole bracket on this mesh.
         if fb.abs() < 1e-7 {
-            return Ok(ub);
+            return Ok(found(ub));
         }
-        self.bracketed(method, bracket, 1e-10, budget)
+        self.bracketed(method, bracket, tolerance, budget)
+            .map(|u| Start { u, slope: None })
     }
+}
+
+/// Where a search starts: u, and the residual's slope there when known.
+#[derive(Debug, Clone, Copy)]
+struct Start {
+    u: f64,
+    slope: Option<f64>,
 }
 
 #[cfg(test)]

@@ -101,9 +101,13 @@ pub(super) fn dynamic_coefficients(
         }
         m => m,
     };
-    // S_op on the search mesh: one film solve, not a set of perturbations.
-    let s_op = match search {
-        Method::Numerical { mesh, stop, .. } => {
+    // S_op on the search mesh: one film solve, not a set of perturbations (none when the
+    // coefficients were taken on that mesh).
+    let s_op = match (search, case.method) {
+        (Method::Numerical { mesh, .. }, Method::Numerical { mesh: own, .. }) if mesh == own => {
+            s_op
+        }
+        (Method::Numerical { mesh, stop, .. }, _) => {
             let ld = case.geometry.l_over_d();
             let (_, film, _) =
                 performance::positioned_film(eccentricity, ld, physics, mesh, stop, None, budget)?;
@@ -242,7 +246,7 @@ pub(super) fn dynamic_coefficients(
             a.min(b),
             a.max(b),
             Stopping {
-                x_tolerance: 1e-5,
+                x_tolerance: 1e-4,
                 max_iterations: 40,
             },
         )
