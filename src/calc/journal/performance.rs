@@ -75,12 +75,25 @@ impl Method {
                 tolerance: tolerance.unwrap_or(default_tol),
                 max_sweeps: 100_000,
             },
-            richardson: level == Level::High,
+            // An explicit mesh that halves exactly and is at least the standard one's size is
+            // extrapolated like `high` (coarser pairs are not in the asymptotic range).
+            richardson: level == Level::High
+                || mesh.is_some_and(|m| {
+                    m.halves_exactly() && m.circumferential >= 96 && m.axial_half >= 12
+                }),
         }
     }
 }
 
 impl Method {
+    /// The numerical method's mesh (None for a closed form).
+    pub fn mesh(self) -> Option<Mesh> {
+        match self {
+            Method::Numerical { mesh, .. } => Some(mesh),
+            Method::ClosedForm(_) => None,
+        }
+    }
+
     /// This numerical method with another stopping rule, reported under `level`.
     pub fn with_stop(self, stop: Stopping, level: Level) -> Method {
         match self {
@@ -329,16 +342,41 @@ pub fn at_eccentricity(
     physics: FilmModel,
     budget: &Budget,
 ) -> Result<Point, CalcError> {
-    at_eccentricity_from(eps, l_over_d, method, physics, None, budget)
+    at_eccentricity_from(
+        eps,
+        l_over_d,
+        method,
+        physics,
+        &mut Fields::default(),
+        budget,
+    )
 }
 
-/// As [`at_eccentricity`], the fine solve starting from `warm` (a field on the method's mesh).
+/// Converged fields by mesh: where the next solve on that mesh starts (a nearby ε's field
+/// starts the active-set iteration close to its answer).
+#[derive(Debug, Default)]
+struct Fields(Vec<(Mesh, Vec<f64>)>);
+
+impl Fields {
+    fn take(&mut self, mesh: Mesh) -> Option<Vec<f64>> {
+        let k = self.0.iter().position(|(m, _)| *m == mesh)?;
+        Some(self.0.swap_remove(k).1)
+    }
+
+    fn keep(&mut self, mesh: Mesh, field: Vec<f64>) {
+        self.0.retain(|(m, _)| *m != mesh);
+        self.0.push((mesh, field));
+    }
+}
+
+/// As [`at_eccentricity`], each solve starting from the field `fields` hold for its mesh, and
+/// leaving its own there.
 fn at_eccentricity_from(
     eps: EccentricityRatio,
     l_over_d: f64,
     method: Method,
     physics: FilmModel,
-    warm: Option<Vec<f64>>,
+    fields: &mut Fields,
     budget: &Budget,
 ) -> Result<Point, CalcError> {
     match method {
@@ -350,7 +388,7 @@ fn at_eccentricity_from(
             ..
         } => {
             // The pair: the mesh with half the cells each way, then the method's mesh, started
-            // from `warm` or (an unplaced film) from the coarse field; one rung of refinement,
+            // from the fields kept or (an unplaced film) from the coarse field; one rung of refinement,
             // whose estimate is reported, not acted on (the tolerance is not tested).
             let load_fixed = placed(&physics);
             let film = Film {
@@ -366,17 +404,16 @@ fn at_eccentricity_from(
                 }
             };
             let half = mesh.coarse();
-            let mut warm = warm;
             // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
             // when the coarse mesh halves both spacings.
             let r = mesh.refinement_ratio();
             let refined = refine(
                 half,
-                solve_on(half, None)?,
+                solve_on(half, fields.take(half))?,
                 f64::INFINITY,
                 |m| (m == half).then_some(mesh),
                 |m, (_, coarse_field): &(FilmSolution, Vec<f64>)| {
-                    let start = warm.take().or_else(|| {
+                    let start = fields.take(m).or_else(|| {
                         (!load_fixed).then(|| film::prolonged(&film, half, coarse_field, m))
                     });
                     solve_on(m, start)
@@ -386,7 +423,7 @@ fn at_eccentricity_from(
                     Judgement::Resolved(((sf - sc) / (r * r - 1.0) / sf).abs())
                 },
             );
-            let (Pair { coarse, fine, .. }, error) = match refined {
+            let (Pair { coarse, fine, .. }, _) = match refined {
                 Ok(Refined::Converged { pair, error } | Refined::GridLimited { pair, error }) => {
                     (pair, error)
                 }
@@ -394,7 +431,27 @@ fn at_eccentricity_from(
                 | Err(RefineError::Failed { failure, .. }) => return Err(failure),
                 Err(e) => return Err(CalcError::Internal(format!("mesh pair: {e:?}"))),
             };
-            let (coarse, (fine, fine_field)) = (coarse.0, fine);
+            let ((coarse, coarse_field), (fine, fine_field)) = (coarse, fine);
+            fields.keep(half, coarse_field);
+            fields.keep(mesh, fine_field.clone());
+            // A third mesh guards the pair's estimate against an accidental agreement of the
+            // two: the next coarser (an eighth of the coarse mesh's cost), or for a mesh too
+            // coarse to halve twice, the next finer (cheap at that size).
+            let quarter = half.coarse();
+            let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
+            let error = if quarter.circumferential >= 12 {
+                let (third, _) = solve_on(quarter, None)?;
+                three_mesh_estimate([sf, sc, third.sommerfeld_number()], r, false)
+            } else {
+                let double = Mesh {
+                    circumferential: 2 * mesh.circumferential,
+                    axial_half: 2 * mesh.axial_half,
+                };
+                let start =
+                    (!load_fixed).then(|| film::prolonged(&film, mesh, &fine_field, double));
+                let (third, _) = solve_on(double, start)?;
+                three_mesh_estimate([third.sommerfeld_number(), sf, sc], 2.0, true)
+            };
             let mut point = from_film(eps, &fine, physics);
             point.error_estimate = Some(error);
             // Richardson's extrapolation needs the same ratio both ways: only exact halvings
@@ -426,6 +483,37 @@ fn at_eccentricity_from(
             Ok(point)
         }
     }
+}
+
+/// Safety factor on a three-mesh estimate (Roache's grid convergence index with an observed
+/// order uses 1.25).
+const ESTIMATE_SAFETY: f64 = 1.25;
+
+/// The relative error of one of three values on meshes refined by `r` each time
+/// ([fine, middle, coarse]): of the middle one when `of_middle`, else of the fine one. The
+/// observed order p = ln(d₂/d₁)/ln r of the successive differences (d₁ the finer pair's) is held
+/// to [1, 2] (the scheme's order is 2; a smaller ratio means the meshes are not yet in the
+/// asymptotic range, where the estimate must not trust second order); each difference then
+/// gives the error of the value asked (the finer pair's d₁/(r^p − 1), the coarser's
+/// d₂/(r^p − 1) scaled down by r^p), and the larger of the two counts, with a safety factor.
+/// Against a converged reference over ε 0.1–0.99 and L/D 0.25–2 it bounds the error of every
+/// level (docs/accuracy.md).
+fn three_mesh_estimate([fine, middle, coarse]: [f64; 3], r: f64, of_middle: bool) -> f64 {
+    let (d1, d2) = ((fine - middle).abs(), (middle - coarse).abs());
+    let p = if d1 > 0.0 && d2 > 0.0 {
+        ((d2 / d1).ln() / r.ln()).clamp(1.0, 2.0)
+    } else {
+        2.0
+    };
+    let rp = r.powf(p);
+    // The error of the fine value, from either pair.
+    let of_fine = (d1 / (rp - 1.0)).max(d2 / (rp * (rp - 1.0)));
+    let (error, value) = if of_middle {
+        (of_fine * rp, middle)
+    } else {
+        (of_fine, fine)
+    };
+    ESTIMATE_SAFETY * error / value.abs()
 }
 
 fn closed(
@@ -551,10 +639,7 @@ pub fn balance(
     let mut evaluations = 0u32;
     let coarse = match method {
         Method::Numerical {
-            level,
-            mesh,
-            stop,
-            richardson: false,
+            level, mesh, stop, ..
         } if mesh.circumferential >= 32 => Some(Method::Numerical {
             level,
             mesh: mesh.coarse(),
@@ -567,7 +652,7 @@ pub fn balance(
         target,
         l_over_d,
         physics,
-        warm: None,
+        fields: Fields::default(),
         evaluations: &mut evaluations,
     };
     // A numerical search starts where the short-bearing closed form balances (microseconds,
@@ -596,11 +681,14 @@ pub fn balance(
         },
         None => search(&mut searcher, method, FINE_TOLERANCE, start)?.u,
     };
-    let warm = searcher.warm.take().and_then(|(m, p)| match method {
-        Method::Numerical { mesh, .. } if mesh == m => Some(p),
-        _ => None,
-    });
-    let point = at_eccentricity_from(to_eps(u)?, l_over_d, method, physics, warm, budget)?;
+    let point = at_eccentricity_from(
+        to_eps(u)?,
+        l_over_d,
+        method,
+        physics,
+        &mut searcher.fields,
+        budget,
+    )?;
     let residual = target.residual(&point)?;
     Ok((point, residual, evaluations))
 }
@@ -620,8 +708,9 @@ struct Searcher<'a> {
     target: &'a dyn Balance,
     l_over_d: f64,
     physics: FilmModel,
-    /// Each probe starts from the last field: successive ε are close once the search homes in.
-    warm: Option<(Mesh, Vec<f64>)>,
+    /// Each probe starts from the last field on its mesh: successive ε are close once the
+    /// search homes in.
+    fields: Fields,
     evaluations: &'a mut u32,
 }
 
@@ -635,12 +724,19 @@ impl Searcher<'_> {
             }
             Method::Numerical {
                 richardson: true, ..
-            } => at_eccentricity(eps, self.l_over_d, method, self.physics, budget)?,
+            } => at_eccentricity_from(
+                eps,
+                self.l_over_d,
+                method,
+                self.physics,
+                &mut self.fields,
+                budget,
+            )?,
             Method::Numerical { mesh, stop, .. } => {
-                let start = self.warm.take().filter(|(m, _)| *m == mesh).map(|(_, p)| p);
+                let start = self.fields.take(mesh);
                 match positioned_film(eps, self.l_over_d, self.physics, mesh, stop, start, budget) {
                     Ok((_, f, p)) => {
-                        self.warm = Some((mesh, p));
+                        self.fields.keep(mesh, p);
                         from_film(eps, &f, self.physics)
                     }
                     // A misaligned journal touching at an end carries any load: S → 0, the
@@ -725,7 +821,7 @@ impl Searcher<'_> {
     }
 
     /// Secant steps on `method` from `start` (its slope, when known, for the first step), kept
-    /// inside the bracket, until a step is shorter than `tolerance`; Brent over the whole
+    /// inside the bracket, until a step (taken or next) is shorter than `tolerance`; Brent over the whole
     /// bracket to `tolerance` if they do not settle in 12 steps. The root and the last slope.
     fn polish(
         &mut self,
@@ -771,6 +867,11 @@ impl Searcher<'_> {
             slope = (fb - fa) / (ub - ua);
             if !(slope.is_finite() && slope < 0.0) {
                 return Verdict::Stalled(fb.abs());
+            }
+            // The secant converges superlinearly: a next step shorter than the tolerance
+            // leaves the root where it is.
+            if (fb / slope).abs() < tolerance {
+                return Verdict::Converged(ub, (fb / slope).abs());
             }
             let next = (ub - fb / slope).clamp(bracket.0, bracket.1);
             (ua, fa) = (ub, fb);
@@ -833,6 +934,44 @@ mod tests {
                 p.sommerfeld_number
             );
             assert!(n < 20, "S {s}: {n} film solves");
+        }
+    }
+
+    /// The error estimates bound the error: each level and an extrapolated explicit mesh
+    /// against a Richardson-extrapolated 384 × 48 reference (whose own estimate is allowed
+    /// for), over ε 0.1–0.99 and L/D 0.25–2.
+    #[test]
+    fn error_estimates_bound_the_error() {
+        let budget = Budget::unlimited();
+        let mesh = |circumferential, axial_half| Mesh {
+            circumferential,
+            axial_half,
+        };
+        let reference = Method::numerical(Level::Standard, Some(mesh(384, 48)), None);
+        let methods = [
+            Method::numerical(Level::Fast, None, None),
+            Method::numerical(Level::Standard, None, None),
+            Method::numerical(Level::High, None, None),
+            Method::numerical(Level::Standard, Some(mesh(128, 16)), None),
+        ];
+        for ld in [0.25, 0.5, 1.0, 2.0] {
+            for eps in [0.1, 0.3, 0.6, 0.8, 0.9, 0.95, 0.99] {
+                let e = EccentricityRatio::new(eps).unwrap();
+                let at = |m| at_eccentricity(e, ld, m, FilmModel::REYNOLDS, &budget).unwrap();
+                let truth = at(reference);
+                let s_ref = truth.sommerfeld_number;
+                let slack = truth.error_estimate.unwrap();
+                for m in methods {
+                    let p = at(m);
+                    let error = (p.sommerfeld_number / s_ref - 1.0).abs();
+                    let estimate = p.error_estimate.unwrap();
+                    assert!(
+                        error <= estimate + slack,
+                        "L/D {ld} ε {eps} {:?}: error {error:.3e} > estimate {estimate:.3e} (+ {slack:.1e})",
+                        m.mesh()
+                    );
+                }
+            }
         }
     }
 }
