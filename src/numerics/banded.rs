@@ -29,6 +29,13 @@ impl SymmetricBand {
         }
     }
 
+    /// The zero matrix again, keeping the storage (of a factor no longer needed).
+    pub fn recycled(factor: BandCholesky) -> Self {
+        let mut band = factor.factor;
+        band.data.fill(0.0);
+        band
+    }
+
     /// Sets A_ij = A_ji = v, for j ≤ i within the band.
     pub fn set(&mut self, i: usize, j: usize, v: f64) {
         debug_assert!(
@@ -54,6 +61,11 @@ impl SymmetricBand {
             let d = pivot.sqrt();
             column[0] = d;
             let m = b.min(n - 1 - k);
+            // A column with nothing below the diagonal (an uncoupled row, such as a constraint
+            // held by the identity) changes nothing after it.
+            if column[1..=m].iter().all(|&v| v == 0.0) {
+                continue;
+            }
             for v in &mut column[1..=m] {
                 *v /= d;
             }

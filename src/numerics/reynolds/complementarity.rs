@@ -73,13 +73,15 @@ impl Numbering {
 
 /// The free nodes' operator A_FF, the cavitated ones' rows replaced by the identity (so the
 /// matrix stays symmetric and positive definite), factored.
+/// `storage` is a zero matrix of the numbering's order and band.
 fn factor(
     stencil: &Stencil,
     numbering: &Numbering,
     free: &[bool],
+    storage: SymmetricBand,
 ) -> Result<BandCholesky, NotPositiveDefinite> {
     let w = stencil.nx + 1;
-    let mut a = SymmetricBand::zeros(numbering.nodes.len(), numbering.band);
+    let mut a = storage;
     for (r, &k) in numbering.nodes.iter().enumerate() {
         if !free[r] {
             a.set(r, r, 1.0);
@@ -130,6 +132,7 @@ pub fn solve(
         .map(|&k| !cavitation || !warm || p[k] > 0.0)
         .collect();
     let mut x = vec![0.0; numbering.nodes.len()];
+    let mut storage = Some(SymmetricBand::zeros(numbering.nodes.len(), numbering.band));
     let run = Driver::new(
         "finite_volume_active_set",
         IterationUnit::NewtonSteps,
@@ -137,7 +140,10 @@ pub fn solve(
         budget,
     )
     .run(|_| {
-        let Ok(cholesky) = factor(stencil, &numbering, &free) else {
+        let band = storage
+            .take()
+            .unwrap_or_else(|| SymmetricBand::zeros(numbering.nodes.len(), numbering.band));
+        let Ok(cholesky) = factor(stencil, &numbering, &free, band) else {
             return Verdict::Diverged(f64::NAN);
         };
         // The right side: −b plus the fixed boundary values' pull; cavitated rows hold 0.
@@ -166,6 +172,7 @@ pub fn solve(
             };
         }
         cholesky.solve(&mut x);
+        storage = Some(SymmetricBand::recycled(cholesky));
         if x.iter().any(|v| !v.is_finite()) {
             return Verdict::Diverged(f64::NAN);
         }
@@ -220,7 +227,8 @@ impl Linearised {
     pub fn at(stencil: &Stencil, p: &[f64]) -> Result<Linearised, NotPositiveDefinite> {
         let numbering = Numbering::of(stencil);
         let free: Vec<bool> = numbering.nodes.iter().map(|&k| p[k] > 0.0).collect();
-        let cholesky = factor(stencil, &numbering, &free)?;
+        let storage = SymmetricBand::zeros(numbering.nodes.len(), numbering.band);
+        let cholesky = factor(stencil, &numbering, &free, storage)?;
         Ok(Linearised {
             numbering,
             cholesky,
