@@ -1,7 +1,9 @@
-//! Plain journal bearing: the issue's speed targets (release, one core).
+//! Plain journal bearing: the speed targets (release, one core).
 //! - default fidelity at L/D = 1, ε = 0.8: under 2 ms;
 //! - equilibrium from load: under 10 ms;
-//! - a closed form: under 20 µs.
+//! - a closed form: under 20 µs;
+//! - the README's request (thermal, dynamics and the whirl threshold): fast ≤ 1 ms, standard
+//!   ≤ 5 ms, high ≤ 40 ms.
 //!
 //! `cargo bench --bench journal`.
 
@@ -69,17 +71,21 @@ fn journal(c: &mut Criterion) {
             .unwrap()
         })
     });
-    let request = br#"{"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}, "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000, "inlet_temperature_c": 40}"#;
     let entry = stribeck::calc::find("/v1/journal-bearings/plain").unwrap();
-    c.bench_function(
-        "whole request: thermal equilibrium, K and C, whirl threshold",
-        |b| {
-            b.iter(|| {
-                let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
-                (entry.execute)(black_box(request), far, Default::default()).unwrap()
-            })
-        },
-    );
+    for fidelity in ["fast", "standard", "high"] {
+        let request = format!(
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}}, "speed_rpm": 3000, "lubricant": {{"iso_vg": 32}}, "load_n": 10000, "inlet_temperature_c": 40, "fidelity": "{fidelity}"}}"#
+        );
+        c.bench_function(
+            &format!("README request at {fidelity}: thermal equilibrium, K and C, whirl threshold"),
+            |b| {
+                b.iter(|| {
+                    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                    (entry.execute)(black_box(request.as_bytes()), far, Default::default()).unwrap()
+                })
+            },
+        );
+    }
 }
 
 criterion_group!(benches, journal);

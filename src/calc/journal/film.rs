@@ -392,12 +392,13 @@ impl Film {
         1.0 + self.a() * cos + self.sin_offset * sin - tilt
     }
 
-    /// ∂h̄/∂θ at (θ, ȳ).
-    pub fn slope(&self, theta: f64, y: f64) -> f64 {
-        let tilt = self
-            .tilt
-            .map_or(0.0, |(e, dir)| e * (y - 0.5) * (theta - dir).sin());
-        -self.a() * theta.sin() + self.sin_offset * theta.cos() + tilt
+    /// ∂h̄/∂θ at (sin θ, cos θ) and ȳ.
+    fn slope_at(&self, (sin, cos): (f64, f64), y: f64) -> f64 {
+        let tilt = self.tilt.map_or(0.0, |(e, dir)| {
+            let (sd, cd) = dir.sin_cos();
+            e * (y - 0.5) * (sin * cd - cos * sd)
+        });
+        -self.a() * sin + self.sin_offset * cos + tilt
     }
 
     /// The smallest h̄ anywhere in the clearance: 1 − |e| of the journal centre at the mid-plane,
@@ -654,17 +655,18 @@ fn integrate(
     let mut pressure_shear = 0.0;
     // The moment about the mid-plane centre (zero on a symmetric grid, by symmetry).
     let mut moment = [0.0; 2];
-    for j in 0..=g.ny {
-        for i in 0..=g.nx() {
+    for i in 0..=g.nx() {
+        let trig = g.x[i].sin_cos();
+        for j in 0..=g.ny {
             let w = g.cv_x(i) * g.cv_y(j) * halves;
             let v = p[at(g, i, j)];
             if !g.symmetric {
                 let arm = g.y(j) - 0.5;
-                moment[0] += v * arm * g.x[i].sin() * w;
-                moment[1] -= v * arm * g.x[i].cos() * w;
+                moment[0] += v * arm * trig.0 * w;
+                moment[1] -= v * arm * trig.1 * w;
             }
             // −∂h̄/∂θ for the pressure part of the journal's shear (integrated by parts).
-            pressure_shear -= v * film.slope(g.x[i], g.y(j)) * w;
+            pressure_shear -= v * film.slope_at(trig, g.y(j)) * w;
         }
     }
 
@@ -819,6 +821,15 @@ fn integrate(
 /// trapezoidal rule (exact to rounding), arcs likewise on 720 intervals; across the length 40
 /// intervals when tilted (h̄ is then linear in ȳ), else one.
 fn couette_shear(film: &Film, span: (f64, f64)) -> f64 {
+    // A laminar, aligned film over a whole turn: h̄ = 1 + e cos(θ − α), e = |(A, B)|, and
+    // ∫ dθ/h̄ over a period is 2π/√(1 − e²).
+    if film.physics.turbulence_reynolds.is_none()
+        && film.tilt.is_none()
+        && (span.1 - span.0 - 2.0 * PI).abs() < 1e-12
+    {
+        let e = film.a().hypot(film.sin_offset);
+        return 2.0 * PI / (1.0 - e * e).sqrt();
+    }
     let n = 720;
     let w = (span.1 - span.0) / n as f64;
     let re = film.physics.turbulence_reynolds;

@@ -246,7 +246,7 @@ pub(super) fn dynamic_coefficients(
             a.min(b),
             a.max(b),
             Stopping {
-                x_tolerance: 1e-4,
+                x_tolerance: 1e-3,
                 max_iterations: 40,
             },
         )
