@@ -110,8 +110,8 @@ fn pull(stencil: &Stencil, p: &[f64], k: usize) -> f64 {
         - stencil.b[k]
 }
 
-/// The film from the start `p` (its positive nodes the first free set; all free when none is
-/// positive; boundary values stay as given), with cavitation (`cavitation`) or without (one
+/// The film from the start `p` (its positive nodes the first free set; when none is positive,
+/// the nodes with b < 0; boundary values stay as given), with cavitation (`cavitation`) or without (one
 /// linear solve), under the driver (method `finite_volume_active_set`, one iteration an
 /// active-set step); `budget` stops a late solve.
 pub fn solve(
@@ -125,11 +125,13 @@ pub fn solve(
         "periodic films are mass-conserving solves"
     );
     let numbering = Numbering::of(stencil);
+    // A start with pressure gives the first free set; from rest, the nodes the wedge (or
+    // source) pressurises: b < 0 pulls p above zero.
     let warm = numbering.nodes.iter().any(|&k| p[k] > 0.0);
     let mut free: Vec<bool> = numbering
         .nodes
         .iter()
-        .map(|&k| !cavitation || !warm || p[k] > 0.0)
+        .map(|&k| !cavitation || if warm { p[k] > 0.0 } else { stencil.b[k] < 0.0 })
         .collect();
     let mut x = vec![0.0; numbering.nodes.len()];
     let mut storage = Some(SymmetricBand::zeros(numbering.nodes.len(), numbering.band));

@@ -153,7 +153,7 @@ impl Balance for HeatBalance<'_> {
     fn out_of_reach(&self, _at_start: f64, at_end: f64) -> CalcError {
         CalcError::impossible(
             "/load_n",
-            format!("no thermal equilibrium below ε = {MAX_ECCENTRICITY}: at the temperature the oil would reach, the film cannot carry the load (at ε = {MAX_ECCENTRICITY} the heat balance still lacks {:.1} K); the load is too high for this bearing at this speed and oil", -at_end),
+            format!("no thermal equilibrium below ε = {MAX_ECCENTRICITY}: even there the friction heat would warm the oil {at_end:.1} K above the temperature at which the film carries the load; the load is too high for this bearing at this speed and oil"),
         )
     }
 }

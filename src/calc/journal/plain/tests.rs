@@ -60,3 +60,37 @@ fn misalignment_off_solves_the_aligned_journal() {
     assert!(off["result"].get("misalignment_moment").is_none());
     assert_eq!(off["result"], aligned["result"]);
 }
+
+/// The heat balance holds in every answer and an overload is refused: the README bearing with
+/// its load swept over ten decades either balances (T_eff = T_in + ΔT, Eq. 8.63, at the load it
+/// was asked) or answers 422 on `/load_n` — never a 200 from the edge of the eccentricity range.
+#[test]
+fn the_heat_balance_holds_or_the_load_is_refused() {
+    let mut refused = 0;
+    for k in 0..=40 {
+        let load = 10f64.powf(-1.0 + 0.25 * f64::from(k));
+        let request = serde_json::json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": load,
+            "inlet_temperature_c": 40, "fidelity": "fast", "dynamics": false
+        });
+        match testing::post::<PlainJournal>(&request) {
+            Ok(v) => {
+                let t = testing::result_field(&v, "effective_temperature_c");
+                let rise = testing::result_field(&v, "temperature_rise_k");
+                assert!(
+                    (t - 40.0 - rise).abs() < 1e-3 * rise.max(1.0),
+                    "W {load}: T {t}, ΔT {rise}"
+                );
+                let w = testing::result_field(&v, "load_n");
+                assert!((w / load - 1.0).abs() < 1e-9, "W {load}: carried {w}");
+            }
+            Err(e) => {
+                let text = format!("{e:?}");
+                assert!(text.contains("/load_n"), "W {load}: {text}");
+                refused += 1;
+            }
+        }
+    }
+    assert!(refused > 0 && refused < 41, "{refused} of 41 refused");
+}
