@@ -414,7 +414,7 @@ impl Film {
 }
 
 /// Solve `film` on `mesh` (nodes clustered for its nominal ε), starting from `start` (a field on
-/// the same grid) when given.
+/// the same grid) when given, else (a Reynolds-condition film) from the field of the half mesh.
 pub fn solve(
     film: Film,
     mesh: Mesh,
@@ -422,6 +422,16 @@ pub fn solve(
     start: Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<(FilmSolution, Vec<f64>), SolveError> {
+    // From rest, a Reynolds-condition film starts from its half mesh's field (recursively: the
+    // active set then moves a few nodes, not across the film).
+    let start = match start {
+        None if !film.physics.has_content() && mesh.circumferential >= 48 => {
+            let coarse = mesh.coarse();
+            let (_, field) = solve(film, coarse, stop, None, budget)?;
+            Some(prolonged(&film, coarse, &field, mesh))
+        }
+        start => start,
+    };
     budget.count_field_solve();
     let g = grid(mesh, &film);
     // Port nodes (a periodic film fed at supply pressure): the columns within the port's

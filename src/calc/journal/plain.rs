@@ -173,7 +173,9 @@ pub struct PlainInput {
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1e8)]
     pub shaft_stiffness_n_m: Option<Positive>,
     /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
-    /// half-length axial 2…256], "tolerance": 1e-14…1e-3}`.
+    /// half-length axial 2…256], "tolerance": 1e-14…1e-3}` (the tolerance stops the
+    /// mass-conserving film's sweeps; the Reynolds-condition film is solved exactly). An explicit
+    /// grid of at least 96 × 12 that halves exactly is Richardson-extrapolated like `high`.
     #[serde(default)]
     pub fidelity: FidelityRequest,
     /// Which closed form `fidelity: closed_form` uses (default `auto`).
