@@ -178,11 +178,14 @@ pub(super) fn dynamic_coefficients(
     let failure = std::cell::RefCell::new(None);
     // Each point of the locus starts from the field of the last.
     let mut locus_field = None;
+    // S at each ε the margin was taken at: the threshold's speed is read from the last.
+    let mut locus: Vec<(f64, f64)> = Vec::new();
     let mut margin = |e: f64| -> f64 {
         match locus_physics(e)
             .and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, &mut locus_field, budget))
         {
             Ok(Some(c)) => {
+                locus.push((e, c.sommerfeld_number));
                 let speed = omega * c.sommerfeld_number / s_op;
                 match dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter {
                     Some(mc) => (mc / mass_parameter(speed)).ln(),
@@ -258,18 +261,21 @@ pub(super) fn dynamic_coefficients(
         return Err(e);
     }
     let threshold_rpm = match threshold_eps {
-        Some(e) => Some(
-            coefficients_at(
-                case,
-                search,
-                ratio(e)?,
-                locus_physics(e)?,
-                &mut locus_field,
-                budget,
-            )?
-            .map_or(f64::NAN, |c| case.speed_rpm * c.sommerfeld_number / s_op),
-        )
-        .filter(|v| v.is_finite()),
+        Some(e) => {
+            let s = match locus.iter().rev().find(|(at, _)| *at == e) {
+                Some(&(_, s)) => s,
+                None => coefficients_at(
+                    case,
+                    search,
+                    ratio(e)?,
+                    locus_physics(e)?,
+                    &mut locus_field,
+                    budget,
+                )?
+                .map_or(f64::NAN, |c| c.sommerfeld_number),
+            };
+            Some(case.speed_rpm * s / s_op).filter(|v| v.is_finite())
+        }
         None => None,
     };
     let statement = match (stable_now, threshold_rpm) {
