@@ -71,7 +71,7 @@ pub fn perturbation(
     } else {
         // The linear response: one factorisation, counted as a film solve.
         budget.count_field_solve();
-        linear_derivatives(base, mesh, field.clone(), delta)?
+        linear_derivatives(base, mesh, field.clone())?
     };
     // Load frame: x along the load W = −F, y = x turned 90° with the rotation.
     let norm = f0[0].hypot(f0[1]);
@@ -116,12 +116,7 @@ fn perturbed(film: Film, j: usize, shape: f64, rate: f64) -> Film {
 
 /// ∂F/∂(A, B) and ∂F/∂(Ȧ, Ḃ) in the film frame by the linear response of the Reynolds film
 /// (one factorisation, four right sides).
-fn linear_derivatives(
-    base: Film,
-    mesh: Mesh,
-    field: Vec<f64>,
-    delta: f64,
-) -> Result<Derivatives, CalcError> {
+fn linear_derivatives(base: Film, mesh: Mesh, field: Vec<f64>) -> Result<Derivatives, CalcError> {
     let response = Response::at(&base, mesh, field).map_err(|e| {
         CalcError::Internal(format!(
             "film operator not positive definite at row {}",
@@ -131,11 +126,7 @@ fn linear_derivatives(
     let mut k = [[0.0; 2]; 2];
     let mut c = [[0.0; 2]; 2];
     for j in 0..2 {
-        let shape = response.load_derivative(
-            &perturbed(base, j, delta, 0.0),
-            &perturbed(base, j, -delta, 0.0),
-            delta,
-        );
+        let shape = response.shape_derivative(j == 0);
         let motion = response.squeeze_derivative(j == 0);
         // Force components [a, b] = [radial, −tangential].
         for (i, sign) in [1.0, -1.0].into_iter().enumerate() {

@@ -599,6 +599,7 @@ fn load(g: &Grid, p: &[f64]) -> [f64; 2] {
 /// factorisation of the free nodes' operator ([`reynolds::Linearised`]) — Lund's perturbation
 /// of the Reynolds equation, on the same grid, stencil and cavitated region as the field.
 pub struct Response {
+    film: Film,
     grid: Grid,
     field: Vec<f64>,
     operator: Linearised,
@@ -612,22 +613,60 @@ impl Response {
         let grid = grid(mesh, film);
         let operator = Linearised::at(&assemble(film, &grid, None), &field)?;
         Ok(Response {
+            film: *film,
             grid,
             field,
             operator,
         })
     }
 
-    /// ∂(load)/∂q between the films `plus` and `minus` at q ± `step` (same grid): the central
-    /// difference of the equations' residual at the field, through the free operator.
-    pub fn load_derivative(&self, plus: &Film, minus: &Film, step: f64) -> [f64; 2] {
-        let rp = assemble(plus, &self.grid, None).residuals(&self.field);
-        let rm = assemble(minus, &self.grid, None).residuals(&self.field);
-        let change: Vec<f64> = rp
-            .iter()
-            .zip(&rm)
-            .map(|(a, b)| (a - b) / (2.0 * step))
-            .collect();
+    /// ∂(load)/∂A (`cos`: h̄ gains A cos θ) or ∂(load)/∂B (sin θ). The stencil is linear in its
+    /// coefficient functions, so a laminar film's derivative is the residual of the stencil
+    /// assembled from ∂h̄ and ∂(h̄³) = 3h̄² ∂h̄ — exact, one assembly. A turbulent film's
+    /// conductance carries the Ng–Pan factors of the local h̄: there the residual is
+    /// differenced centrally over A ± δ, δ = 10⁻³ (1 − ε).
+    pub fn shape_derivative(&self, cos: bool) -> [f64; 2] {
+        let film = self.film;
+        let change = if film.physics.turbulence_reynolds.is_none() {
+            let trig = Trig::default();
+            let dh = |theta: f64, _y: f64| {
+                let (sin, cos_t) = trig.at(theta);
+                if cos {
+                    cos_t
+                } else {
+                    sin
+                }
+            };
+            let dcond = |theta: f64, y: f64, _axis: Axis| {
+                let h = film.thickness_at(trig.at(theta), y);
+                3.0 * h * h * dh(theta, y)
+            };
+            let problem = Problem {
+                film: &dh,
+                conductance: Some(&dcond),
+                anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
+                wedge: 12.0 * PI,
+                source: None,
+                held: None,
+            };
+            Stencil::assemble(&self.grid, &problem).residuals(&self.field)
+        } else {
+            let delta = 1e-3 * (1.0 - film.eccentricity_ratio).max(1e-3);
+            let shifted = |sign: f64| {
+                let mut f = film;
+                if cos {
+                    f.cos_offset += sign * delta;
+                } else {
+                    f.sin_offset += sign * delta;
+                }
+                assemble(&f, &self.grid, None).residuals(&self.field)
+            };
+            let (plus, minus) = (shifted(1.0), shifted(-1.0));
+            plus.iter()
+                .zip(&minus)
+                .map(|(a, b)| (a - b) / (2.0 * delta))
+                .collect()
+        };
         load(&self.grid, &self.operator.response(&change, &self.field))
     }
 

@@ -256,14 +256,17 @@ impl Linearised {
 }
 
 impl Stencil {
-    /// a_P p − Σ a_nb p_nb + b at every unknown node (0 at boundary and held nodes).
+    /// a_P p − Σ a_nb p_nb + b at every interior node that is not held (0 at boundary and held
+    /// nodes). Linear in the stencil's coefficients: a stencil assembled from the derivatives of
+    /// a film's coefficient functions gives the residual's derivative.
     pub fn residuals(&self, p: &[f64]) -> Vec<f64> {
         let mut r = vec![0.0; p.len()];
         let w = self.nx + 1;
-        for j in 1..self.rows {
+        let rows = self.rows - usize::from(self.far_edge);
+        for j in 1..rows {
             for i in 1..self.nx {
                 let k = j * w + i;
-                if self.ap[k] > 0.0 && !self.held[k] {
+                if !self.held[k] {
                     r[k] = self.ap[k] * p[k] - pull(self, p, k);
                 }
             }
