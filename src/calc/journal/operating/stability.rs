@@ -206,56 +206,79 @@ pub(super) fn dynamic_coefficients(
         }
     };
     let m0 = if stable_now { 1.0 } else { -1.0 };
-    // Walk the locus towards lighter (stable now) or heavier loads, ε shrinking or growing by
-    // 0.6 each step, until the margin changes sign: the bracket of the threshold. One iteration:
-    // one margin (a set of coefficients); the walk ends without a bracket where the locus does
-    // (ε = 10⁻³ or MAX_ECCENTRICITY, or a margin that cannot be taken), or after ten steps.
-    let mut previous = eps;
     let mut lightest = eps;
-    let mut k = 0;
-    let walk = Driver::new("locus_walk", IterationUnit::Evaluations, 10, budget).run(|_| {
-        k += 1;
-        let next = if stable_now {
-            (eps * 0.6f64.powi(k)).max(1e-3)
-        } else {
-            (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
-        };
-        let width = (next - previous).abs();
-        let m = margin(next);
-        if m.is_nan() {
-            return Verdict::Converged(None, width);
-        }
-        lightest = lightest.min(next);
-        if m.signum() != m0 {
-            return Verdict::Converged(Some((previous, next)), width);
-        }
-        previous = next;
-        if next <= 1e-3 || next >= MAX_ECCENTRICITY {
-            return Verdict::Converged(None, width);
-        }
-        Verdict::Continue(width)
+    // First, secant steps in ln ε from the short bearing's threshold (its slope for the first
+    // step); they must land on the side of the operating point the threshold lies on.
+    let seed = short_bearing_threshold(case.geometry.l_over_d(), eps, |e, s_ratio| {
+        let critical = whirl_mass(e, flexibility).map_or(f64::INFINITY, |m| m.max(1e-300));
+        Some(mass_parameter(omega * s_ratio) / critical)
     });
-    if let Some(e) = failure.borrow_mut().take() {
-        return Err(e);
-    }
-    let bracket = match walk {
-        Ok(found) => found.value,
-        Err(stopped) if stopped.reason() == StopReason::IterationCap => None,
-        Err(stopped) => return Err(stopped.into()),
-    };
-    let threshold_eps = match bracket {
-        Some((a, b)) => brent(
-            &mut margin,
-            a.min(b),
-            a.max(b),
-            Stopping {
-                x_tolerance: 1e-3,
-                max_iterations: 40,
-            },
-        )
-        .ok()
-        .map(|r| r.x),
+    let seeded = match seed {
+        Some(start) => secant_threshold(&mut margin, start, budget)?.filter(|&e| {
+            if stable_now {
+                e < eps
+            } else {
+                e > eps
+            }
+        }),
         None => None,
+    };
+    let threshold_eps = match seeded {
+        Some(e) => Some(e),
+        None => {
+            // Walk the locus towards lighter (stable now) or heavier loads, ε shrinking or
+            // growing by 0.6 each step, until the margin changes sign: the bracket of the
+            // threshold. One iteration: one margin (a set of coefficients); the walk ends
+            // without a bracket where the locus does (ε = 10⁻³ or MAX_ECCENTRICITY, or a
+            // margin that cannot be taken), or after ten steps.
+            let mut previous = eps;
+            let mut k = 0;
+            let walk =
+                Driver::new("locus_walk", IterationUnit::Evaluations, 10, budget).run(|_| {
+                    k += 1;
+                    let next = if stable_now {
+                        (eps * 0.6f64.powi(k)).max(1e-3)
+                    } else {
+                        (1.0 - (1.0 - eps) * 0.6f64.powi(k)).min(MAX_ECCENTRICITY)
+                    };
+                    let width = (next - previous).abs();
+                    let m = margin(next);
+                    if m.is_nan() {
+                        return Verdict::Converged(None, width);
+                    }
+                    lightest = lightest.min(next);
+                    if m.signum() != m0 {
+                        return Verdict::Converged(Some((previous, next)), width);
+                    }
+                    previous = next;
+                    if next <= 1e-3 || next >= MAX_ECCENTRICITY {
+                        return Verdict::Converged(None, width);
+                    }
+                    Verdict::Continue(width)
+                });
+            if let Some(e) = failure.borrow_mut().take() {
+                return Err(e);
+            }
+            let bracket = match walk {
+                Ok(found) => found.value,
+                Err(stopped) if stopped.reason() == StopReason::IterationCap => None,
+                Err(stopped) => return Err(stopped.into()),
+            };
+            match bracket {
+                Some((a, b)) => brent(
+                    &mut margin,
+                    a.min(b),
+                    a.max(b),
+                    Stopping {
+                        x_tolerance: 1e-3,
+                        max_iterations: 40,
+                    },
+                )
+                .ok()
+                .map(|r| r.x),
+                None => None,
+            }
+        }
     };
     if let Some(e) = failure.into_inner() {
         return Err(e);
@@ -304,4 +327,90 @@ pub(super) fn dynamic_coefficients(
         statement,
     };
     Ok(Some((coefficients, stability)))
+}
+
+/// The short bearing's critical mass parameter at ε (its closed-form coefficients), None when
+/// its film cannot whirl.
+fn whirl_mass(eps: f64, flexibility: f64) -> Option<f64> {
+    let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
+    let c = Coefficients {
+        stiffness,
+        damping,
+        sommerfeld_number: f64::NAN,
+    };
+    dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter
+}
+
+/// Where the short bearing's locus crosses its threshold — ln ε, and the slope of its margin
+/// ln(m̄_c/m̄) in ln ε there — from `ratio(ε, S(ε)/S(ε_op))` = m̄/m̄_c (closed forms only,
+/// microseconds); None when it does not cross between 10⁻³ and MAX_ECCENTRICITY.
+fn short_bearing_threshold(
+    l_over_d: f64,
+    eps_op: f64,
+    ratio: impl Fn(f64, f64) -> Option<f64>,
+) -> Option<(f64, f64)> {
+    let s = |e: f64| {
+        closed_form::short_bearing(e, l_over_d, closed_form::Boundary::HalfSommerfeld)
+            .map_or(f64::NAN, |p| p.sommerfeld_number)
+    };
+    let s_op = s(eps_op);
+    let margin = |x: f64| {
+        let e = x.exp();
+        ratio(e, s(e) / s_op).map_or(f64::NAN, |r| (-r.ln()).clamp(-50.0, 50.0))
+    };
+    let root = brent(
+        margin,
+        1e-3f64.ln(),
+        MAX_ECCENTRICITY.ln(),
+        Stopping {
+            x_tolerance: 1e-4,
+            max_iterations: 100,
+        },
+    )
+    .ok()?;
+    let h = 1e-3;
+    let slope = (margin(root.x + h) - margin(root.x - h)) / (2.0 * h);
+    slope.is_finite().then_some((root.x, slope))
+}
+
+/// Secant steps on the margin in x = ln ε from `(x, slope)` until the next step is below
+/// 10⁻³ (ε to 0.1 %): the threshold ε, or None when the steps leave the locus or do not settle
+/// in eight (the caller then walks the locus).
+fn secant_threshold(
+    margin: &mut impl FnMut(f64) -> f64,
+    (x0, slope0): (f64, f64),
+    budget: &Budget,
+) -> Result<Option<f64>, CalcError> {
+    let bounds = (1e-3f64.ln(), MAX_ECCENTRICITY.ln());
+    let (mut xa, mut ma) = (x0, margin(x0.exp()));
+    let mut xb = (xa - ma / slope0).clamp(bounds.0, bounds.1);
+    let mut mb = margin(xb.exp());
+    let run = Driver::new(
+        "secant_whirl_threshold",
+        IterationUnit::RootSearchSteps,
+        8,
+        budget,
+    )
+    .run(|_| {
+        let slope = (mb - ma) / (xb - xa);
+        if !(ma.is_finite() && mb.is_finite() && slope.is_finite() && slope != 0.0) {
+            return Verdict::Stalled(f64::NAN);
+        }
+        let step = -mb / slope;
+        if step.abs() < 1e-3 {
+            return Verdict::Converged(xb, step.abs());
+        }
+        (xa, ma) = (xb, mb);
+        xb = (xb + step).clamp(bounds.0, bounds.1);
+        if xb == xa {
+            return Verdict::Stalled(step.abs());
+        }
+        mb = margin(xb.exp());
+        Verdict::Continue(step.abs())
+    });
+    match run {
+        Ok(found) => Ok(Some(found.value.exp())),
+        Err(stopped) if stopped.reason() == StopReason::Deadline => Err(stopped.into()),
+        Err(_) => Ok(None),
+    }
 }
