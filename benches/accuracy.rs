@@ -365,6 +365,7 @@ fn main() {
             max_sweeps: 1_000_000,
         },
         richardson: true,
+        estimate: true,
     };
     let reference: Vec<f64> = CASES
         .iter()

@@ -477,6 +477,7 @@ fn equilibrium_at_effective_temperature(
                 mesh: mesh.coarse(),
                 stop,
                 richardson: false,
+                estimate: false,
             },
             ..case.clone()
         }

@@ -33,12 +33,15 @@ pub enum Approximation {
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Method {
     ClosedForm(Approximation),
-    /// Finite-length Reynolds on `mesh`; `richardson` extrapolates from the half mesh.
+    /// Finite-length Reynolds on `mesh`; `richardson` extrapolates from the half mesh;
+    /// `estimate`: the point's error estimate takes a third mesh (false: the pair's, for a point
+    /// that only screens or starts a search).
     Numerical {
         level: Level,
         mesh: Mesh,
         stop: Stopping,
         richardson: bool,
+        estimate: bool,
     },
 }
 
@@ -81,6 +84,7 @@ impl Method {
                 || mesh.is_some_and(|m| {
                     m.halves_exactly() && m.circumferential >= 96 && m.axial_half >= 12
                 }),
+            estimate: true,
         }
     }
 }
@@ -98,12 +102,16 @@ impl Method {
     pub fn with_stop(self, stop: Stopping, level: Level) -> Method {
         match self {
             Method::Numerical {
-                mesh, richardson, ..
+                mesh,
+                richardson,
+                estimate,
+                ..
             } => Method::Numerical {
                 level,
                 mesh,
                 stop,
                 richardson,
+                estimate,
             },
             m => m,
         }
@@ -385,6 +393,7 @@ fn at_eccentricity_from(
             mesh,
             stop,
             richardson,
+            estimate,
             ..
         } => {
             // The pair: the mesh with half the cells each way, then the method's mesh, started
@@ -423,7 +432,7 @@ fn at_eccentricity_from(
                     Judgement::Resolved(((sf - sc) / (r * r - 1.0) / sf).abs())
                 },
             );
-            let (Pair { coarse, fine, .. }, _) = match refined {
+            let (Pair { coarse, fine, .. }, pair_error) = match refined {
                 Ok(Refined::Converged { pair, error } | Refined::GridLimited { pair, error }) => {
                     (pair, error)
                 }
@@ -439,7 +448,9 @@ fn at_eccentricity_from(
             // coarse to halve twice, the next finer (cheap at that size).
             let quarter = half.coarse();
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
-            let error = if quarter.circumferential >= 12 {
+            let error = if !estimate {
+                pair_error
+            } else if quarter.circumferential >= 12 {
                 let (third, _) = solve_on(quarter, None)?;
                 three_mesh_estimate([sf, sc, third.sommerfeld_number()], r, false)
             } else {
@@ -645,6 +656,7 @@ pub fn balance(
             mesh: mesh.coarse(),
             stop,
             richardson: false,
+            estimate: false,
         }),
         _ => None,
     };
