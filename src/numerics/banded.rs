@@ -11,6 +11,8 @@ pub struct SymmetricBand {
     b: usize,
     /// Column-major, b + 1 values per column; the diagonal is each column's first.
     data: Vec<f64>,
+    /// Columns of the factor with nothing below the diagonal (their solves skip them).
+    empty: Vec<bool>,
 }
 
 /// The matrix is not positive definite: a pivot at `row` was not positive.
@@ -26,6 +28,7 @@ impl SymmetricBand {
             n,
             b,
             data: vec![0.0; n * (b + 1)],
+            empty: vec![false; n],
         }
     }
 
@@ -33,6 +36,7 @@ impl SymmetricBand {
     pub fn recycled(factor: BandCholesky) -> Self {
         let mut band = factor.factor;
         band.data.fill(0.0);
+        band.empty.fill(false);
         band
     }
 
@@ -64,6 +68,7 @@ impl SymmetricBand {
             // A column with nothing below the diagonal (an uncoupled row, such as a constraint
             // held by the identity) changes nothing after it.
             if column[1..=m].iter().all(|&v| v == 0.0) {
+                self.empty[k] = true;
                 continue;
             }
             for v in &mut column[1..=m] {
@@ -91,12 +96,20 @@ pub struct BandCholesky {
 impl BandCholesky {
     /// Solves A x = r in place (forward with L, back with Lᵀ).
     pub fn solve(&self, x: &mut [f64]) {
-        let SymmetricBand { n, b, ref data } = self.factor;
+        let SymmetricBand {
+            n,
+            b,
+            ref data,
+            ref empty,
+        } = self.factor;
         let w = b + 1;
         for k in 0..n {
             let column = &data[k * w..(k + 1) * w];
-            let m = b.min(n - 1 - k);
             x[k] /= column[0];
+            if empty[k] {
+                continue;
+            }
+            let m = b.min(n - 1 - k);
             let xk = x[k];
             for (v, l) in x[k + 1..=k + m].iter_mut().zip(&column[1..=m]) {
                 *v -= l * xk;
@@ -104,6 +117,10 @@ impl BandCholesky {
         }
         for k in (0..n).rev() {
             let column = &data[k * w..(k + 1) * w];
+            if empty[k] {
+                x[k] /= column[0];
+                continue;
+            }
             let m = b.min(n - 1 - k);
             let dot: f64 = x[k + 1..=k + m]
                 .iter()
