@@ -20,8 +20,8 @@ using ROSS's own film force.
 
 ROSS is not a dependency of the service; this script is optional tooling. Run with
 
-    python3 -m venv /work/ross-venv && /work/ross-venv/bin/pip install ross-rotordynamics 'plotly<6'
-    STRIBECK=target/release/stribeck /work/ross-venv/bin/python scripts/ross_side_by_side.py
+    python3 -m venv target/ross-venv && target/ross-venv/bin/pip install ross-rotordynamics 'plotly<6'
+    STRIBECK=target/release/stribeck target/ross-venv/bin/python scripts/ross_side_by_side.py
 
 (`plotly<6`: ROSS 2.3.0's plot theme fails to import with plotly 6+.)
 """
