@@ -39,7 +39,7 @@ pub enum StopReason {
 pub enum IterationUnit {
     /// Nothing iterated (a closed form).
     None,
-    /// Relaxation sweeps over a grid (SOR, projected SOR, Gauss–Seidel).
+    /// Relaxation sweeps over a grid (Gauss–Seidel, SOR).
     Sweeps,
     /// Newton steps (each a linear solve, with its line search).
     NewtonSteps,
@@ -56,7 +56,7 @@ pub enum IterationUnit {
 /// What the solver did: the response's `solver` block.
 #[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
 pub struct SolverReport {
-    /// The scheme, e.g. `closed_form` or `finite_volume_psor`.
+    /// The scheme, e.g. `closed_form` or `finite_volume_active_set`.
     #[schema(example = "closed_form")]
     pub method: String,
     pub fidelity: Level,

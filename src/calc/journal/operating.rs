@@ -666,8 +666,8 @@ fn dimensional_dynamics(
     }
 }
 
-/// The response's solver block. Numerical: the film solves' driver report (the sweeps of the
-/// fine and the coarse mesh, the fine field's equation residual), at the level and on the mesh
+/// The response's solver block. Numerical: the film solves' driver report (the active-set steps
+/// or sweeps of the fine and the coarse mesh, the fine field's equation residual), at the level and on the mesh
 /// asked, with the error estimate; the equilibrium search's S evaluations (each a film solve, or
 /// an attitude search of them) as its evaluations. Closed form: a direct evaluation, counting the
 /// S evaluations of the equilibrium search's Brent (the count the block has always carried).

@@ -288,7 +288,7 @@ pub struct Point {
     /// Mass-conserving films: θ_f along the mid-plane, and the cavitated share of the film area.
     pub midplane_content: Option<Vec<f64>>,
     pub cavitated_fraction: Option<f64>,
-    /// Numerical work: the film solves' report (the sweeps of the fine and the coarse mesh,
+    /// Numerical work: the film solves' report (the steps of the fine and the coarse mesh,
     /// the fine field's equation residual), the relative error estimate of S, the mesh.
     pub solve: Option<SolverReport>,
     pub error_estimate: Option<f64>,

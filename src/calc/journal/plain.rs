@@ -58,7 +58,7 @@ pub enum CavitationMode {
     On,
     /// No cavitation: the full Sommerfeld film.
     Off,
-    /// The Reynolds (Swift–Stieber) condition, p ≥ 0, by projected SOR.
+    /// The Reynolds (Swift–Stieber) condition, p ≥ 0, solved exactly (active sets).
     Reynolds,
     /// Mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod–Adams film content).
     Jfo,
