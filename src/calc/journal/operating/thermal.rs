@@ -71,7 +71,12 @@ pub(super) fn thermal_equilibrium(
     isothermal: &Operating,
     budget: &Budget,
 ) -> Result<Operating, CalcError> {
-    let balance = HeatBalance { case, t_in, w };
+    let balance = HeatBalance {
+        case,
+        t_in,
+        w,
+        budget,
+    };
     let l_over_d = case.geometry.l_over_d();
     let eps = isothermal.point.eccentricity_ratio.get();
     let below = 1.0 / (1.0 + (1.0 - eps) * std::f64::consts::E / eps);
@@ -92,9 +97,45 @@ struct HeatBalance<'a> {
     case: &'a Case,
     t_in: f64,
     w: f64,
+    budget: &'a Budget,
 }
 
 impl HeatBalance<'_> {
+    /// The largest load with a thermal equilibrium: the one whose balance holds at
+    /// ε = MAX_ECCENTRICITY (one film solve there, then a root in ln W on the closed heat
+    /// balance; the balance rises with the load). None when it cannot be taken.
+    fn largest_load(&self) -> Option<f64> {
+        let case = self.case;
+        let eps = EccentricityRatio::new(MAX_ECCENTRICITY)?;
+        let point = performance::at_eccentricity(
+            eps,
+            case.geometry.l_over_d(),
+            case.method,
+            case.physics(self.t_in),
+            self.budget,
+        )
+        .ok()?;
+        let balance_at = |ln_w: f64| {
+            HeatBalance {
+                w: ln_w.exp(),
+                ..*self
+            }
+            .residual(&point)
+            .unwrap_or(f64::NAN)
+        };
+        brent(
+            balance_at,
+            (self.w * 1e-12).ln(),
+            self.w.ln(),
+            Stopping {
+                x_tolerance: 1e-6,
+                max_iterations: 100,
+            },
+        )
+        .ok()
+        .map(|r| r.x.exp())
+    }
+
     /// The operating point at the temperature whose viscosity carries the load with `point`'s
     /// S; an error when that temperature lies beyond the search's reach.
     fn operating(&self, point: Point) -> Result<Operating, CalcError> {
@@ -151,9 +192,14 @@ impl Balance for HeatBalance<'_> {
     }
 
     fn out_of_reach(&self, _at_start: f64, at_end: f64) -> CalcError {
+        let largest = self
+            .largest_load()
+            .filter(|&w| at_end > 0.0 && w < self.w)
+            .map(|w| format!(" (it carries at most about {w:.4e} N here, at ε = {MAX_ECCENTRICITY} and its effective temperature)"))
+            .unwrap_or_default();
         CalcError::impossible(
             "/load_n",
-            format!("no thermal equilibrium below ε = {MAX_ECCENTRICITY}: even there the friction heat would warm the oil {at_end:.1} K above the temperature at which the film carries the load; the load is too high for this bearing at this speed and oil"),
+            format!("no thermal equilibrium below ε = {MAX_ECCENTRICITY}: even there the friction heat would warm the oil {at_end:.1} K above the temperature at which the film carries the load; the load is too high for this bearing at this speed and oil{largest}"),
         )
     }
 }
