@@ -101,7 +101,7 @@ fn factor(
 /// Σ a_nb p_nb − b at node k: the free equation's right side (a_P p_P equals it).
 fn pull(stencil: &Stencil, p: &[f64], k: usize) -> f64 {
     let w = stencil.nx + 1;
-    let north = if k + w < p.len() && (k / w) + 1 < stencil.rows {
+    let north = if (k / w) + 1 < stencil.rows {
         stencil.an[k] * p[k + w]
     } else {
         0.0
@@ -111,8 +111,8 @@ fn pull(stencil: &Stencil, p: &[f64], k: usize) -> f64 {
 }
 
 /// The film from the start `p` (its positive nodes the first free set; when none is positive,
-/// the nodes with b < 0; boundary values stay as given), with cavitation (`cavitation`) or without (one
-/// linear solve), under the driver (method `finite_volume_active_set`, one iteration an
+/// the nodes with b < 0; boundary values stay as given), with cavitation (`cavitation`) or
+/// without (one linear solve), under the driver (method `finite_volume_active_set`, one iteration an
 /// active-set step); `budget` stops a late solve.
 pub fn solve(
     stencil: &Stencil,
@@ -207,12 +207,7 @@ pub fn solve(
             Verdict::Continue(changed as f64)
         }
     })?;
-    Ok(Solved {
-        sweeps: run.report.iterations,
-        change: 0.0,
-        residual: run.report.residual.unwrap_or(f64::NAN),
-        report: run.report,
-    })
+    Ok(Solved { report: run.report })
 }
 
 /// The converged film's free-node operator: the film's first-order response to a change of its
