@@ -61,12 +61,10 @@ pub fn perturbation(
         budget,
     )?;
     let field = field.insert(solved);
-    let eps = eccentricity.get();
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
-    // Small against the minimum film (1 − ε), large against the solver's tolerance.
-    let delta = 1e-3 * (1.0 - eps).max(1e-3);
     let (k, c) = if physics.has_content() {
+        let delta = film::perturbation_step(eccentricity.get());
         resolved_derivatives(base, mesh, stop, field, delta, budget)?
     } else {
         // The linear response: one factorisation, counted as a film solve.

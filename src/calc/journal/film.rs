@@ -31,6 +31,9 @@ use crate::numerics::reynolds::{
     self, at, Axis, Fluxes, Grid, Linearised, Problem, SolveError, Solved, Stencil, Stopping,
 };
 
+/// The wedge coefficient of Eq. 8.36, 12π (θ in radians, N_s in rev/s).
+const WEDGE: f64 = 12.0 * PI;
+
 /// Cells around the circumference and across the half-length.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub struct Mesh {
@@ -378,6 +381,11 @@ impl Film {
     fn a(&self) -> f64 {
         self.eccentricity_ratio + self.cos_offset
     }
+    /// The y-term's weight in Eq. 8.36 on ȳ = y/L: 1/(4λ²), λ = L/D.
+    fn anisotropy(&self) -> f64 {
+        1.0 / (4.0 * self.l_over_d * self.l_over_d)
+    }
+
     /// h̄(θ, ȳ), ȳ = y/L from one end.
     pub fn thickness(&self, theta: f64, y: f64) -> f64 {
         self.thickness_at(theta.sin_cos(), y)
@@ -540,8 +548,8 @@ fn assemble(film: &Film, g: &Grid, held: Option<&dyn Fn(f64, f64) -> bool>) -> S
         } else {
             None
         },
-        anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
-        wedge: 12.0 * PI,
+        anisotropy: film.anisotropy(),
+        wedge: WEDGE,
         source: if moving { Some(&squeeze) } else { None },
         held,
     };
@@ -594,6 +602,12 @@ fn load(g: &Grid, p: &[f64]) -> [f64; 2] {
     [radial, tangential]
 }
 
+/// The step δ of a differenced perturbation of the film's shape at eccentricity ratio ε:
+/// 10⁻³ (1 − ε), small against the minimum film, large against the solvers' tolerance.
+pub fn perturbation_step(eccentricity_ratio: f64) -> f64 {
+    1e-3 * (1.0 - eccentricity_ratio).max(1e-3)
+}
+
 /// The film's linear response about a converged Reynolds-condition field: the load's
 /// derivative with respect to a parameter of the film (its shape or motion), from one
 /// factorisation of the free nodes' operator ([`reynolds::Linearised`]) — Lund's perturbation
@@ -624,7 +638,7 @@ impl Response {
     /// coefficient functions, so a laminar film's derivative is the residual of the stencil
     /// assembled from ∂h̄ and ∂(h̄³) = 3h̄² ∂h̄ — exact, one assembly. A turbulent film's
     /// conductance carries the Ng–Pan factors of the local h̄: there the residual is
-    /// differenced centrally over A ± δ, δ = 10⁻³ (1 − ε).
+    /// differenced centrally over A ± δ ([`perturbation_step`]).
     pub fn shape_derivative(&self, cos: bool) -> [f64; 2] {
         let film = self.film;
         let change = if film.physics.turbulence_reynolds.is_none() {
@@ -644,14 +658,14 @@ impl Response {
             let problem = Problem {
                 film: &dh,
                 conductance: Some(&dcond),
-                anisotropy: 1.0 / (4.0 * film.l_over_d * film.l_over_d),
-                wedge: 12.0 * PI,
+                anisotropy: film.anisotropy(),
+                wedge: WEDGE,
                 source: None,
                 held: None,
             };
             Stencil::assemble(&self.grid, &problem).residuals(&self.field)
         } else {
-            let delta = 1e-3 * (1.0 - film.eccentricity_ratio).max(1e-3);
+            let delta = perturbation_step(film.eccentricity_ratio);
             let shifted = |sign: f64| {
                 let mut f = film;
                 if cos {
@@ -866,9 +880,9 @@ fn integrate(
     solution
 }
 
-/// ∫∫ G_f/h̄ dθ dȳ over the span and the whole length: the periodic full circle by the
-/// trapezoidal rule (exact to rounding), arcs likewise on 720 intervals; across the length 40
-/// intervals when tilted (h̄ is then linear in ȳ), else one.
+/// ∫∫ G_f/h̄ dθ dȳ over the span and the whole length: a laminar, aligned full circle in closed
+/// form; otherwise the trapezoidal rule on 720 intervals (exact to rounding for the periodic
+/// full circle); across the length 40 intervals when tilted (h̄ is then linear in ȳ), else one.
 fn couette_shear(film: &Film, span: (f64, f64)) -> f64 {
     // A laminar, aligned film over a whole turn: h̄ = 1 + e cos(θ − α), e = |(A, B)|, and
     // ∫ dθ/h̄ over a period is 2π/√(1 − e²).

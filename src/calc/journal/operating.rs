@@ -469,16 +469,8 @@ fn equilibrium_at_effective_temperature(
     // all, the equilibrium is solved on the method's own mesh.
     let screened = temperature_dependent && case.effects.thermal != Mode::Off;
     let isothermal = match case.method {
-        Method::Numerical {
-            level, mesh, stop, ..
-        } if screened => Case {
-            method: Method::Numerical {
-                level,
-                mesh: mesh.coarse(),
-                stop,
-                richardson: false,
-                estimate: false,
-            },
+        Method::Numerical { .. } if screened => Case {
+            method: case.method.coarser(),
             ..case.clone()
         }
         .operate(t_in, budget)?,
@@ -667,10 +659,11 @@ fn dimensional_dynamics(
 }
 
 /// The response's solver block. Numerical: the film solves' driver report (the active-set steps
-/// or sweeps of the fine and the coarse mesh, the fine field's equation residual), at the level and on the mesh
-/// asked, with the error estimate; the equilibrium search's S evaluations (each a film solve, or
-/// an attitude search of them) as its evaluations. Closed form: a direct evaluation, counting the
-/// S evaluations of the equilibrium search's Brent (the count the block has always carried).
+/// or sweeps of the fine and the coarse mesh, the fine field's equation residual), at the level
+/// and on the mesh asked, with the error estimate; the equilibrium search's evaluations (each a
+/// film solve, or an attitude search of them) as its evaluations; the request's film solves.
+/// Closed form: a direct evaluation, counting the evaluations of the equilibrium search (the
+/// count the block has always carried).
 fn report(case: &Case, point: &Point, evaluations: u32) -> SolverReport {
     match case.method {
         Method::ClosedForm(_) => {

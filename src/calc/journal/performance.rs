@@ -98,6 +98,23 @@ impl Method {
         }
     }
 
+    /// The numerical method on the mesh with half the cells each way, neither extrapolated nor
+    /// estimating with a third mesh: the stage that screens or starts a search.
+    pub fn coarser(self) -> Method {
+        match self {
+            Method::Numerical {
+                level, mesh, stop, ..
+            } => Method::Numerical {
+                level,
+                mesh: mesh.coarse(),
+                stop,
+                richardson: false,
+                estimate: false,
+            },
+            m => m,
+        }
+    }
+
     /// This numerical method with another stopping rule, reported under `level`.
     pub fn with_stop(self, stop: Stopping, level: Level) -> Method {
         match self {
@@ -397,8 +414,8 @@ fn at_eccentricity_from(
             ..
         } => {
             // The pair: the mesh with half the cells each way, then the method's mesh, started
-            // from the fields kept or (an unplaced film) from the coarse field; one rung of refinement,
-            // whose estimate is reported, not acted on (the tolerance is not tested).
+            // from the fields kept or (an unplaced film) from the coarse field; one rung of
+            // refinement, whose estimate is reported, not acted on (the tolerance is not tested).
             let load_fixed = placed(&physics);
             let film = Film {
                 physics,
@@ -634,10 +651,12 @@ pub fn equilibrium(
 /// The operating point in [`from_eccentricity`, MAX_ECCENTRICITY] where `target` balances, its
 /// residual there, and the film solves the search took.
 ///
-/// Brent against u = ln(ε/(1 − ε)) — ε crowds towards 1. A numerical method first finds the
-/// root on the mesh with half the cells (an eighth of the work), then polishes it on its own
-/// mesh by safeguarded secant steps: the two meshes' residuals differ by a nearly constant
-/// amount, so the fine root is a step or three away.
+/// The search runs in u = ln(ε/(1 − ε)) — ε crowds towards 1. A closed form is searched by
+/// Brent over the bracket. A numerical method starts where the short bearing balances (with its
+/// slope), takes safeguarded secant steps on the mesh with half the cells (an eighth of the
+/// work) to 10⁻³, then on its own mesh to [`FINE_TOLERANCE`]: the two meshes' residuals differ
+/// by a nearly constant amount, so the fine root is a step or three away. Brent over the
+/// bracket is the fallback where the steps do not settle.
 pub fn balance(
     target: &dyn Balance,
     from_eccentricity: f64,
@@ -649,15 +668,7 @@ pub fn balance(
     let bracket = (to_u(from_eccentricity), to_u(MAX_ECCENTRICITY));
     let mut evaluations = 0u32;
     let coarse = match method {
-        Method::Numerical {
-            level, mesh, stop, ..
-        } if mesh.circumferential >= 32 => Some(Method::Numerical {
-            level,
-            mesh: mesh.coarse(),
-            stop,
-            richardson: false,
-            estimate: false,
-        }),
+        Method::Numerical { mesh, .. } if mesh.circumferential >= 32 => Some(method.coarser()),
         _ => None,
     };
     let mut searcher = Searcher {
@@ -713,6 +724,11 @@ fn to_eps(u: f64) -> Result<EccentricityRatio, CalcError> {
 
 fn to_u(eps: f64) -> f64 {
     (eps / (1.0 - eps)).ln()
+}
+
+/// ε moved by `du` along the searches' variable u = ln(ε/(1 − ε)).
+pub fn shifted_eccentricity(eps: f64, du: f64) -> f64 {
+    1.0 / (1.0 + (-(to_u(eps) + du)).exp())
 }
 
 /// The balance's residual at ε(u) and the roots of it.
@@ -833,8 +849,9 @@ impl Searcher<'_> {
     }
 
     /// Secant steps on `method` from `start` (its slope, when known, for the first step), kept
-    /// inside the bracket, until a step (taken or next) is shorter than `tolerance`; Brent over the whole
-    /// bracket to `tolerance` if they do not settle in 12 steps. The root and the last slope.
+    /// inside the bracket, until a step (taken or next) is shorter than `tolerance`; Brent over
+    /// the whole bracket to `tolerance` if they do not settle in 12 steps. The root and the last
+    /// slope.
     fn polish(
         &mut self,
         method: Method,

@@ -211,7 +211,7 @@ pub(super) fn dynamic_coefficients(
     // step); they must land on the side of the operating point the threshold lies on.
     let seed = short_bearing_threshold(case.geometry.l_over_d(), eps, |e, s_ratio| {
         let critical = whirl_mass(e, flexibility).map_or(f64::INFINITY, |m| m.max(1e-300));
-        Some(mass_parameter(omega * s_ratio) / critical)
+        mass_parameter(omega * s_ratio) / critical
     });
     let seeded = match seed {
         Some(start) => secant_threshold(&mut margin, start, budget)?.filter(|&e| {
@@ -347,7 +347,7 @@ fn whirl_mass(eps: f64, flexibility: f64) -> Option<f64> {
 fn short_bearing_threshold(
     l_over_d: f64,
     eps_op: f64,
-    ratio: impl Fn(f64, f64) -> Option<f64>,
+    ratio: impl Fn(f64, f64) -> f64,
 ) -> Option<(f64, f64)> {
     let s = |e: f64| {
         closed_form::short_bearing(e, l_over_d, closed_form::Boundary::HalfSommerfeld)
@@ -356,7 +356,7 @@ fn short_bearing_threshold(
     let s_op = s(eps_op);
     let margin = |x: f64| {
         let e = x.exp();
-        ratio(e, s(e) / s_op).map_or(f64::NAN, |r| (-r.ln()).clamp(-50.0, 50.0))
+        (-ratio(e, s(e) / s_op).ln()).clamp(-50.0, 50.0)
     };
     let root = brent(
         margin,

@@ -78,8 +78,7 @@ pub(super) fn thermal_equilibrium(
         budget,
     };
     let l_over_d = case.geometry.l_over_d();
-    let eps = isothermal.point.eccentricity_ratio.get();
-    let below = 1.0 / (1.0 + (1.0 - eps) * std::f64::consts::E / eps);
+    let below = performance::shifted_eccentricity(isothermal.point.eccentricity_ratio.get(), -1.0);
     let (point, _, evaluations) = performance::balance(
         &balance,
         below.max(performance::MIN_ECCENTRICITY),
