@@ -47,16 +47,17 @@ pub fn find(path: &str) -> Option<&'static Entry> {
 pub enum Cost {
     /// A closed form, a table or a short search: well under a millisecond of one core.
     Light,
-    /// A numerical solve (a Reynolds grid, an EHL Newton or multigrid run): tens of
-    /// milliseconds to seconds of one core.
+    /// A numerical solve (a Reynolds grid, an EHL Newton or multigrid run): milliseconds to
+    /// seconds of one core.
     Heavy,
 }
 
 /// How a calculation's requests are costed. Declared once per room, in [`REGISTRY`].
 ///
 /// Measured on the rooms' examples (release build): every room but two answers in under 0.5 ms,
-/// `/ehl-film` and `/hertz` at `standard` included; the plain journal takes 80 ms (`fast`) to
-/// 2 s (`high`) and the numerical EHL 25 ms, unless the journal is asked for a closed form.
+/// `/ehl-film` and `/hertz` at `standard` included; the plain journal takes 1 ms (`fast`) to
+/// 17 ms (`high`), seconds on fine explicit grids, and the numerical EHL 25 ms, unless the
+/// journal is asked for a closed form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Costing {
     /// Every request is [`Cost::Light`].

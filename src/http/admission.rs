@@ -1,9 +1,9 @@
 //! Admission by cost: which calculations run now, which wait, which are shed with 503.
 //!
-//! A count of calculations treats a 30 µs closed form like a 100 ms Reynolds solve: with one
-//! limit for both, a flood of closed forms was shed while the cores had room (64 clients got up
-//! to 37 % 503s on 2 cores at a limit of 8), yet eight numerical solves at once oversubscribed
-//! the cores. So each request is costed before it runs ([`crate::calc::Cost`], declared per
+//! A count of calculations treats a 30 µs closed form like a Reynolds solve a hundred or a
+//! thousand times longer: with one limit for both, a flood of closed forms was shed while the
+//! cores had room (64 clients got up to 37 % 503s on 2 cores at a limit of 8), yet eight
+//! numerical solves at once oversubscribed the cores. So each request is costed before it runs ([`crate::calc::Cost`], declared per
 //! room in the registry) and admitted by its class:
 //!
 //! - **light** requests take a slot of a large budget (`light_limit`) without waiting. The
