@@ -7,6 +7,7 @@ pub mod lubricant;
 pub mod quantity;
 pub mod rolling;
 pub mod surface;
+pub mod thrust;
 
 mod context;
 mod registry;

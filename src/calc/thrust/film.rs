@@ -1,0 +1,208 @@
+//! The pressure field of a finite fixed pad, solved numerically, and its performance numbers
+//! (Khonsari & Booser §6.9 and §7.3, Eq. 6.41–6.49).
+//!
+//! Reynolds equation (Eq. 6.41), isoviscous, steady:
+//!
+//! ```text
+//! ∂x̄(h̄³ ∂x̄ P̄) + (B/L)² ∂ȳ(h̄³ ∂ȳ P̄) = 6 ∂x̄ h̄,   P̄ = p h2²/(μ U B),  x̄ = x/B,  ȳ = y/L
+//! ```
+//!
+//! with the runner sliding towards +x̄ (leading edge x̄ = 0), P̄ = 0 on all four edges and the
+//! Reynolds condition P̄ ≥ 0 wherever the film diverges. The mid-plane ȳ = ½ is a symmetry
+//! plane, so half the pad is solved (`numerics::reynolds`, exact active-set solve). A step or
+//! the start of a land sits on a node: the finite volumes on either side then carry their own
+//! h̄ and the 1-D part of the solution is exact.
+
+use super::performance::Performance;
+use super::profile::Profile;
+use crate::calc::Budget;
+use crate::numerics::interpolate::Parabola;
+use crate::numerics::reynolds::{self, at, Axis, Grid, Problem, SolveError, Solved, Stencil};
+
+/// The wedge coefficient of Eq. 6.41.
+const WEDGE: f64 = 6.0;
+
+/// Cells along the sliding direction and across half the pad.
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+pub struct Mesh {
+    pub along: usize,
+    pub across_half: usize,
+}
+
+impl Mesh {
+    /// Half the cells each way: the mesh Richardson's extrapolation compares with.
+    pub fn coarse(self) -> Mesh {
+        Mesh {
+            along: self.along / 2,
+            across_half: self.across_half / 2,
+        }
+    }
+}
+
+/// The grid: uniform along each smooth piece of the profile (a break on a node, the pieces'
+/// cells in proportion to their lengths, at least one each), uniform across.
+pub fn grid(mesh: Mesh, profile: Profile) -> Grid {
+    let x = match profile.breaks() {
+        None => uniform(0.0, 1.0, mesh.along),
+        Some(b) => {
+            let first = ((mesh.along as f64 * b).round() as usize).clamp(1, mesh.along - 1);
+            let mut x = uniform(0.0, b, first);
+            x.pop();
+            x.extend(uniform(b, 1.0, mesh.along - first));
+            x
+        }
+    };
+    Grid {
+        x,
+        ny: mesh.across_half,
+        width: 0.5,
+        symmetric: true,
+        periodic: false,
+    }
+}
+
+fn uniform(a: f64, b: f64, cells: usize) -> Vec<f64> {
+    (0..=cells)
+        .map(|i| a + (b - a) * i as f64 / cells as f64)
+        .collect()
+}
+
+/// The film solved: its performance and the mid-plane profile of P̄ along x̄.
+#[derive(Debug, Clone)]
+pub struct Field {
+    pub performance: Performance,
+    pub solved: Solved,
+    /// (x̄, P̄) along the mid-plane.
+    pub mid_plane: Vec<(f64, f64)>,
+}
+
+/// Solve the pad `profile` of aspect L/B = `l_over_b` on `mesh`.
+pub fn solve(
+    profile: Profile,
+    l_over_b: f64,
+    mesh: Mesh,
+    budget: &Budget,
+) -> Result<Field, SolveError> {
+    let g = grid(mesh, profile);
+    let stencil = assemble(profile, l_over_b, &g);
+    // Start with every node free: a converging pad has no cavitated node, so one active-set
+    // step solves it; a diverging part cavitates in the next steps.
+    let n = (g.nx() + 1) * (g.ny + 1);
+    let mut p = vec![1.0; n];
+    for j in 0..=g.ny {
+        p[at(&g, 0, j)] = 0.0;
+        p[at(&g, g.nx(), j)] = 0.0;
+    }
+    for i in 0..=g.nx() {
+        p[at(&g, i, 0)] = 0.0;
+    }
+    budget.count_field_solve();
+    let solved = reynolds::solve(&stencil, &mut p, true, budget)?;
+    let all_full = vec![1.0; n];
+    let fluxes = stencil.fluxes(&p, &all_full);
+    let performance = integrate(profile, &g, &p, fluxes);
+    let mid_plane = (0..=g.nx()).map(|i| (g.x[i], p[at(&g, i, g.ny)])).collect();
+    Ok(Field {
+        performance,
+        solved,
+        mid_plane,
+    })
+}
+
+/// The five-point stencil of the pad on `g`. A node on a step takes the mean of h̄³ over its
+/// control volume for the flow across (h̄³ differs on its two halves).
+fn assemble(profile: Profile, l_over_b: f64, g: &Grid) -> Stencil {
+    let thickness = |x: f64, _y: f64| profile.thickness(x);
+    let step = match profile {
+        Profile::Step {
+            ratio,
+            step_position,
+        } => {
+            let i = g.x.partition_point(|&x| x < step_position);
+            let (west, east) = (g.x[i] - g.x[i - 1], g.x[i + 1] - g.x[i]);
+            Some((step_position, (west * ratio.powi(3) + east) / (west + east)))
+        }
+        _ => None,
+    };
+    let conductance = |x: f64, _y: f64, axis: Axis| match step {
+        Some((at, mean)) if axis == Axis::Y && x == at => mean,
+        _ => profile.thickness(x).powi(3),
+    };
+    let problem = Problem {
+        film: &thickness,
+        conductance: step
+            .is_some()
+            .then_some(&conductance as &dyn Fn(f64, f64, Axis) -> f64),
+        anisotropy: (1.0 / l_over_b).powi(2),
+        wedge: WEDGE,
+        source: None,
+        held: None,
+    };
+    Stencil::assemble(g, &problem)
+}
+
+/// The performance numbers of the field `p` on the half pad `g` (doubled for the whole pad).
+fn integrate(profile: Profile, g: &Grid, p: &[f64], fluxes: reynolds::Fluxes) -> Performance {
+    let nx = g.nx();
+    let (mut load, mut moment, mut wedge_shear) = (0.0, 0.0, 0.0);
+    for j in 0..=g.ny {
+        let wy = g.cv_y(j);
+        for i in 0..=nx {
+            let v = p[at(g, i, j)] * g.cv_x(i) * wy;
+            load += v;
+            moment += v * g.x[i];
+        }
+        // ∫ (h̄/2) ∂P̄/∂x̄ dx̄ face by face, h̄ at each face (exact across a step).
+        for i in 0..nx {
+            let face = 0.5 * (g.x[i] + g.x[i + 1]);
+            wedge_shear +=
+                0.5 * profile.thickness(face) * (p[at(g, i + 1, j)] - p[at(g, i, j)]) * wy;
+        }
+    }
+    let couette: f64 = super::long_pad::couette_shear(profile);
+    let (peak, peak_x) = peak(profile, g, p);
+    // Flows in the stencil's units are 12 Q̄ per unit of ȳ; the half pad is doubled. The
+    // stencil's fluxes cross the faces half a cell inside the side edge: the Couette flow
+    // h̄/2 along the strip between that face and the edge (where P̄ = 0) enters at the leading
+    // edge, leaves partly at the trailing edge and the rest through the side.
+    let strip = 0.5 * g.dy();
+    let (strip_in, strip_out) = (
+        0.5 * profile.thickness(0.0) * strip,
+        0.5 * profile.thickness(1.0) * strip,
+    );
+    Performance {
+        load: 2.0 * load,
+        friction: couette + 2.0 * wedge_shear,
+        center_of_pressure: moment / load,
+        max_pressure: peak,
+        max_pressure_position: peak_x,
+        inlet_flow: 2.0 * (fluxes.inflow / 12.0 + strip_in),
+        side_flow: 2.0 * (fluxes.side / 12.0 + strip_in - strip_out),
+        outlet_flow: 2.0 * (fluxes.outflow / 12.0 + strip_out),
+    }
+}
+
+/// The largest pressure (on the mid-plane) and where it is: the node maximum, refined by the
+/// parabola through it and its neighbours where the profile is smooth there.
+fn peak(profile: Profile, g: &Grid, p: &[f64]) -> (f64, f64) {
+    let row = |i: usize| p[at(g, i, g.ny)];
+    let top = (1..g.nx())
+        .max_by(|&a, &b| row(a).total_cmp(&row(b)))
+        .unwrap_or(1);
+    let on_break = profile.breaks().is_some_and(|b| g.x[top] == b);
+    if on_break || top == 0 || top == g.nx() {
+        return (row(top), g.x[top]);
+    }
+    let parabola = Parabola::through(
+        [g.x[top - 1], g.x[top], g.x[top + 1]],
+        [row(top - 1), row(top), row(top + 1)],
+    );
+    if parabola.a >= 0.0 {
+        return (row(top), g.x[top]);
+    }
+    let x = parabola.vertex().clamp(g.x[top - 1], g.x[top + 1]);
+    (parabola.at(x).max(row(top)), x)
+}
+
+#[cfg(test)]
+mod tests;

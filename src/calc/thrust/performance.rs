@@ -1,0 +1,153 @@
+//! A fixed pad's dimensionless performance, by the infinitely long pad's closed form or by the
+//! numerical film with Richardson's extrapolation, in Khonsari & Booser Table 7.2's scaling
+//! (every number per unit h2, the trailing-edge film).
+
+use super::film::{self, Mesh};
+use super::long_pad;
+use super::profile::Profile;
+use crate::calc::Budget;
+use crate::fidelity::{Level, SolverReport};
+use crate::numerics::reynolds::SolveError;
+use crate::numerics::richardson::extrapolate;
+
+/// A pad's performance, dimensionless (B along the sliding direction, L across it).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Performance {
+    /// W̄ = W h2²/(μ U B² L) (= K_h², Table 7.2).
+    pub load: f64,
+    /// F̄ = F h2/(μ U B L), the force on the runner (= K_f: E_p = K_f μ U² B L/h2).
+    pub friction: f64,
+    /// x̄_cp: the centre of pressure, a fraction of B from the leading edge.
+    pub center_of_pressure: f64,
+    /// P̄_max = p_max h2²/(μ U B).
+    pub max_pressure: f64,
+    /// Where the peak is, a fraction of B from the leading edge.
+    pub max_pressure_position: f64,
+    /// Q̄₁ = Q₁/(U L h2) through the leading edge (= K_q).
+    pub inlet_flow: f64,
+    /// Q̄_s through both side edges (= K_s).
+    pub side_flow: f64,
+    /// Q̄₂ through the trailing edge.
+    pub outlet_flow: f64,
+}
+
+impl Performance {
+    /// K_h = √W̄ (Eq. 7.5: h2 = K_h (μ U B/P_avg)^½).
+    pub fn k_h(&self) -> f64 {
+        self.load.sqrt()
+    }
+
+    /// Richardson's extrapolation of every number from `coarse` and this (fine) one; the
+    /// peak's position stays the fine grid's.
+    fn extrapolated(&self, coarse: &Performance) -> Performance {
+        let e = |f: fn(&Performance) -> f64| extrapolate(f(coarse), f(self));
+        Performance {
+            load: e(|p| p.load),
+            friction: e(|p| p.friction),
+            center_of_pressure: e(|p| p.center_of_pressure),
+            max_pressure: e(|p| p.max_pressure),
+            max_pressure_position: self.max_pressure_position,
+            inlet_flow: e(|p| p.inlet_flow),
+            side_flow: e(|p| p.side_flow).max(0.0),
+            outlet_flow: e(|p| p.outlet_flow),
+        }
+    }
+}
+
+/// How the performance is computed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// The infinitely long pad (no side leakage), whatever L.
+    LongPad,
+    /// The finite pad's film on `mesh`; with `richardson` also on its half mesh, extrapolated.
+    Numerical {
+        level: Level,
+        mesh: Mesh,
+        richardson: bool,
+    },
+}
+
+impl Method {
+    /// The mesh of a level: cells along B and across half of L (each extrapolated from half
+    /// as many; docs/accuracy.md has the errors and times).
+    pub fn level(level: Level) -> Method {
+        let (along, across_half) = match level {
+            Level::ClosedForm => return Method::LongPad,
+            Level::Fast => (32, 8),
+            Level::Standard => (64, 16),
+            Level::High => (128, 32),
+        };
+        Method::Numerical {
+            level,
+            mesh: Mesh { along, across_half },
+            richardson: true,
+        }
+    }
+
+    /// An explicit mesh: extrapolated when it halves exactly (even counts, at least 8 × 4).
+    pub fn mesh(mesh: Mesh) -> Method {
+        Method::Numerical {
+            level: Level::Standard,
+            mesh,
+            richardson: mesh.along % 2 == 0
+                && mesh.across_half % 2 == 0
+                && mesh.along >= 8
+                && mesh.across_half >= 4,
+        }
+    }
+}
+
+/// A performance and what it cost.
+#[derive(Debug, Clone)]
+pub struct Evaluated {
+    pub performance: Performance,
+    /// Estimated relative error of W̄ (Richardson: a third of the two meshes' difference).
+    pub error_estimate: Option<f64>,
+    /// The fine solve's report (closed form: none).
+    pub report: SolverReport,
+    /// (x̄, P̄) along the mid-plane of the fine solve; the closed form gives none.
+    pub mid_plane: Option<Vec<(f64, f64)>>,
+}
+
+/// The performance of `profile` on a pad of aspect L/B = `l_over_b` by `method`.
+pub fn evaluate(
+    profile: Profile,
+    l_over_b: f64,
+    method: Method,
+    budget: &Budget,
+) -> Result<Evaluated, SolveError> {
+    match method {
+        Method::LongPad => Ok(Evaluated {
+            performance: long_pad::performance(profile),
+            error_estimate: None,
+            report: SolverReport::closed_form("infinitely_long_pad"),
+            mid_plane: None,
+        }),
+        Method::Numerical {
+            level,
+            mesh,
+            richardson,
+        } => {
+            let fine = film::solve(profile, l_over_b, mesh, budget)?;
+            let grid = vec![mesh.along as u32, mesh.across_half as u32];
+            let mut report = fine.solved.report.clone().at(level).on_grid(grid);
+            let (performance, error_estimate) = if richardson {
+                let coarse = film::solve(profile, l_over_b, mesh.coarse(), budget)?;
+                report.iterations += coarse.solved.report.iterations;
+                let best = fine.performance.extrapolated(&coarse.performance);
+                let error = (fine.performance.load - coarse.performance.load).abs()
+                    / 3.0
+                    / best.load.abs().max(f64::MIN_POSITIVE);
+                (best, Some(error))
+            } else {
+                (fine.performance, None)
+            };
+            Ok(Evaluated {
+                performance,
+                error_estimate,
+                report: report.with_error_estimate(error_estimate),
+                mid_plane: Some(fine.mid_plane),
+            })
+        }
+    }
+}
