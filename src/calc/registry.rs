@@ -12,7 +12,8 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, CalcError, Calculation, Context, Validate, Warning,
+    contact, journal, lubricant, rolling, thrust, CalcError, Calculation, Context, Validate,
+    Warning,
 };
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
@@ -24,6 +25,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::viscosity_index::ViscosityIndex>(),
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>().numerical(),
+    Entry::of::<thrust::fixed_pad::FixedPad>().numerical(),
+    Entry::of::<thrust::tilting_pad::TiltingPad>().numerical(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl::film::EhlFilm>(),
     Entry::of::<contact::ehl::Ehl>().numerical(),
@@ -372,7 +375,10 @@ mod tests {
         let cost = |path: &str, body: &str| find(path).unwrap().cost(body.as_bytes());
         for e in REGISTRY {
             let want = match e.path {
-                "/v1/journal-bearings/plain" | "/v1/contacts/ehl" => Cost::Heavy,
+                "/v1/journal-bearings/plain"
+                | "/v1/contacts/ehl"
+                | "/v1/thrust-bearings/fixed-pad"
+                | "/v1/thrust-bearings/tilting-pad" => Cost::Heavy,
                 _ => Cost::Light,
             };
             assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);

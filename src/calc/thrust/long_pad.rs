@@ -92,6 +92,12 @@ pub fn couette_shear(profile: Profile) -> f64 {
     i1
 }
 
+/// ∫₀¹ h̄ dx̄: the mean film over h2.
+pub fn mean_thickness(profile: Profile) -> f64 {
+    let [mean] = integrate_pad(profile, 0.0, 1.0, |_, h| [h]);
+    mean
+}
+
 /// The infinitely long pad's performance.
 pub fn performance(profile: Profile) -> Performance {
     let [i1, i2, i3, j2, j3, k2, k3] = integrate_pad(profile, 0.0, 1.0, |x, h| {

@@ -1,11 +1,20 @@
 //! Thrust and pad bearings (Khonsari & Booser ch. 6–7; Stachowiak & Batchelor ch. 4).
 //!
-//! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic);
+//! - `fixed_pad`: the `/v1/thrust-bearings/fixed-pad` room (request, response);
+//! - `tilting_pad`: the `/v1/thrust-bearings/tilting-pad` room; `pivot`: its equilibrium;
+//! - `pad_spec`: the wire parts every pad room shares (pad, effects, fidelity, result);
+//! - `operating`: a pad at its operating point, dimensional, effects decided;
+//! - `performance`: dimensionless performance by closed form or numerics, the optimum ratio;
 //! - `long_pad`: the infinitely long pad, exact;
 //! - `film`: the finite pad's numerical film (finite-volume Reynolds, exact active-set solve);
-//! - `performance`: dimensionless performance by either, with Richardson's extrapolation.
+//! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic).
 
 pub mod film;
+pub mod fixed_pad;
 pub mod long_pad;
+pub mod operating;
+pub mod pad_spec;
 pub mod performance;
+pub mod pivot;
 pub mod profile;
+pub mod tilting_pad;

@@ -7,6 +7,7 @@ use super::long_pad;
 use super::profile::Profile;
 use crate::calc::Budget;
 use crate::fidelity::{Level, SolverReport};
+use crate::numerics::optimise::brent_minimise;
 use crate::numerics::reynolds::SolveError;
 use crate::numerics::richardson::extrapolate;
 
@@ -89,8 +90,8 @@ impl Method {
         Method::Numerical {
             level: Level::Standard,
             mesh,
-            richardson: mesh.along % 2 == 0
-                && mesh.across_half % 2 == 0
+            richardson: mesh.along.is_multiple_of(2)
+                && mesh.across_half.is_multiple_of(2)
                 && mesh.along >= 8
                 && mesh.across_half >= 4,
         }
@@ -149,5 +150,43 @@ pub fn evaluate(
                 mid_plane: Some(fine.mid_plane),
             })
         }
+    }
+}
+
+/// Film ratios a pad may have (the range Table 7.2 spans, from nearly parallel to 10).
+pub const RATIOS: (f64, f64) = (1.01, 10.0);
+
+/// The film ratio h1/h2 that maximises W̄ for this shape (its other proportions kept), found by
+/// Brent's minimisation on −W̄ over [`RATIOS`] to 1e-6: the ratio and the number of
+/// evaluations. A solve that fails stops the search with its error.
+pub fn optimum_ratio(
+    profile: Profile,
+    l_over_b: f64,
+    method: Method,
+    budget: &Budget,
+) -> Result<(f64, u32), SolveError> {
+    let mut failure = None;
+    let mut evaluations = 0;
+    let (ratio, _) = brent_minimise(
+        |a| {
+            evaluations += 1;
+            if failure.is_some() {
+                return 0.0;
+            }
+            match evaluate(profile.with_ratio(a), l_over_b, method, budget) {
+                Ok(e) => -e.performance.load,
+                Err(e) => {
+                    failure = Some(e);
+                    0.0
+                }
+            }
+        },
+        RATIOS.0,
+        RATIOS.1,
+        1e-6,
+    );
+    match failure {
+        Some(e) => Err(e),
+        None => Ok((ratio, evaluations)),
     }
 }

@@ -1,0 +1,290 @@
+//! `POST /v1/thrust-bearings/fixed-pad`: one fixed (non-pivoted) pad — plane inclined, step,
+//! tapered land or parabolic — from its film or its load: film, friction, power, flows,
+//! temperature rise and Table 7.2's coefficients (Khonsari & Booser ch. 6–7; Stachowiak &
+//! Batchelor ch. 4).
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::long_pad;
+use super::operating::{self, Conditions};
+use super::pad_spec::{
+    self, check_finite, check_viscosity, conditions, given, PadEffects, PadResult, PadSpec,
+};
+use super::performance::{self, evaluate, Method, RATIOS};
+use super::profile::Profile;
+use crate::calc::lubricant::LubricantSpec;
+use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::fidelity::{FidelityRequest, Level};
+
+pub struct FixedPad;
+
+/// A pad's film shape.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PadProfileKind {
+    /// Plane, tapered over the whole breadth (Table 7.2's pads).
+    PlaneInclined,
+    /// Rayleigh step at `step_position_fraction`.
+    Step,
+    /// Plane taper, then a flat land of `land_fraction` of B at the trailing edge.
+    TaperedLand,
+    /// h = h2 + (h1 − h2)(1 − x/B)², tangent to the runner at the trailing edge.
+    Parabolic,
+}
+
+/// The film ratio: a number, or `"optimum"`.
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[serde(
+    untagged,
+    expecting = "a film ratio h1/h2 (a number from 1.01 to 10) or \"optimum\""
+)]
+pub enum PadFilmRatio {
+    /// h1/h2, 1.01 … 10.
+    Value(f64),
+    /// The ratio that maximises the load at the given outlet film.
+    Optimum(OptimumKeyword),
+}
+
+/// The load-maximising value.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum OptimumKeyword {
+    Optimum,
+}
+
+/// The pad's film shape along B (uniform across it).
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PadProfileSpec {
+    pub kind: PadProfileKind,
+    /// h1/h2 (1.01 … 10), or `"optimum"`: the ratio that maximises the load for the given h2
+    /// and the shape's other proportions.
+    #[schema(example = 2.0)]
+    pub film_ratio: PadFilmRatio,
+    /// `step`: the step's position, x/B from the leading edge (0.05 … 0.95; Archibald's
+    /// optimum for a square pad 0.55, the long pad's 0.718).
+    #[schema(minimum = 0.05, maximum = 0.95, example = 0.55)]
+    pub step_position_fraction: Option<f64>,
+    /// `tapered_land`: the flat land's share of B at the trailing edge (0 … 0.9; 0 is the plane
+    /// pad; typical 0.2).
+    #[schema(minimum = 0.0, maximum = 0.9, example = 0.2)]
+    pub land_fraction: Option<f64>,
+}
+
+impl PadProfileSpec {
+    /// The shape (with the ratio 2 standing in for `"optimum"`) and whether the ratio is to be
+    /// optimised.
+    pub fn parse(self, errors: &mut Vec<FieldError>) -> (Profile, bool) {
+        let (ratio, optimum) = match self.film_ratio {
+            PadFilmRatio::Value(r) if (RATIOS.0..=RATIOS.1).contains(&r) => (r, false),
+            PadFilmRatio::Value(r) => {
+                errors.push(FieldError::new(
+                    "/profile/film_ratio",
+                    format!("must be within [1.01, 10] or \"optimum\", got {r}"),
+                ));
+                (2.0, false)
+            }
+            PadFilmRatio::Optimum(_) => (2.0, true),
+        };
+        let mut fraction = |name: &str, value: Option<f64>, range: (f64, f64), needed: bool| {
+            let pointer = format!("/profile/{name}");
+            match value {
+                Some(v) if needed && (range.0..=range.1).contains(&v) => v,
+                Some(v) if needed => {
+                    errors.push(FieldError::new(
+                        pointer,
+                        format!("must be within [{}, {}], got {v}", range.0, range.1),
+                    ));
+                    range.0
+                }
+                Some(_) => {
+                    errors.push(FieldError::new(
+                        pointer,
+                        format!("applies only to a {} profile", name_of(name)),
+                    ));
+                    range.0
+                }
+                None if needed => {
+                    errors.push(FieldError::new(
+                        pointer,
+                        format!("a {} profile needs it", name_of(name)),
+                    ));
+                    range.0
+                }
+                None => range.0,
+            }
+        };
+        let step = fraction(
+            "step_position_fraction",
+            self.step_position_fraction,
+            (0.05, 0.95),
+            self.kind == PadProfileKind::Step,
+        );
+        let land = fraction(
+            "land_fraction",
+            self.land_fraction,
+            (0.0, 0.9),
+            self.kind == PadProfileKind::TaperedLand,
+        );
+        let profile = match self.kind {
+            PadProfileKind::PlaneInclined => Profile::PlaneInclined { ratio },
+            PadProfileKind::Step => Profile::Step {
+                ratio,
+                step_position: step,
+            },
+            PadProfileKind::TaperedLand => Profile::TaperedLand {
+                ratio,
+                land_fraction: land,
+            },
+            PadProfileKind::Parabolic => Profile::Parabolic { ratio },
+        };
+        (profile, optimum)
+    }
+}
+
+fn name_of(field: &str) -> &'static str {
+    if field == "step_position_fraction" {
+        "step"
+    } else {
+        "tapered_land"
+    }
+}
+
+/// Request. Give exactly one of `outlet_film_m` and `load_n`.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct FixedPadInput {
+    pub pad: PadSpec,
+    pub profile: PadProfileSpec,
+    /// Runner speed U relative to the pad (at the mean radius on a thrust bearing), m/s
+    /// (> 0, at most 500).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 500.0, example = 44.0)]
+    pub sliding_speed_m_s: Positive,
+    pub lubricant: LubricantSpec,
+    /// Oil inlet temperature, °C (default 40).
+    #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 49.0)]
+    pub inlet_temperature_c: Option<Celsius>,
+    /// Trailing-edge film h2, m (1e-8 … 1e-2), instead of `load_n`.
+    #[schema(value_type = Option<f64>, minimum = 1e-8, maximum = 1e-2, example = 3e-5)]
+    pub outlet_film_m: Option<Positive>,
+    /// Load on the pad W, N (1e-6 … 1e9), instead of `outlet_film_m`.
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e9, example = 16000.0)]
+    pub load_n: Option<Positive>,
+    /// `closed_form` (the infinitely long pad, whatever L: no side leakage), `fast`,
+    /// `standard` (default), `high`, or `{"grid": [cells along B 8…512, cells across half of L
+    /// 2…256]}`. Levels and even grids are Richardson-extrapolated from the half mesh.
+    #[serde(default)]
+    pub fidelity: FidelityRequest,
+    #[serde(default)]
+    pub effects: PadEffects,
+    /// Include the mid-plane pressure profile (numerical fidelities; default false).
+    #[serde(default)]
+    #[schema(example = false)]
+    pub include_field: bool,
+}
+
+/// The parsed request.
+#[derive(Debug, Clone)]
+pub struct Case {
+    pub conditions: Conditions,
+    pub profile: Profile,
+    pub optimum_ratio: bool,
+    pub method: Method,
+    pub include_field: bool,
+}
+
+impl Validate for FixedPadInput {
+    type Valid = Case;
+    fn validate(self) -> Result<Case, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let pad = self.pad.parse(&mut errors);
+        let (profile, optimum_ratio) = self.profile.parse(&mut errors);
+        let given = given(self.outlet_film_m, self.load_n, true, &mut errors);
+        let method = pad_spec::method(self.fidelity, &mut errors);
+        let conditions = conditions(
+            pad,
+            self.sliding_speed_m_s,
+            self.lubricant,
+            self.inlet_temperature_c,
+            given,
+            self.effects,
+            &mut errors,
+        );
+        match conditions {
+            Some(conditions) if errors.is_empty() => Ok(Case {
+                conditions,
+                profile,
+                optimum_ratio,
+                method,
+                include_field: self.include_field,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// Response.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct FixedPadOutput {
+    #[serde(flatten)]
+    pub pad: PadResult,
+}
+
+impl Calculation for FixedPad {
+    const PATH: &'static str = "/v1/thrust-bearings/fixed-pad";
+    const SUMMARY: &'static str =
+        "Fixed thrust pad (plane, step, tapered land, parabolic): film, friction, flows, temperature rise";
+    const DESCRIPTION: &'static str = include_str!("fixed_pad.md");
+    const FIDELITY: &'static [Level] =
+        &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &["thermal", "turbulence"];
+    const EXAMPLE: &'static str = r#"{"pad": {"breadth_m": 0.089, "length_m": 0.087}, "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49, "load_n": 16000}"#;
+
+    type Input = FixedPadInput;
+    type Output = FixedPadOutput;
+
+    fn run(case: Case, ctx: &mut Context) -> Result<FixedPadOutput, CalcError> {
+        let c = &case.conditions;
+        check_viscosity(c)?;
+        let budget = ctx.budget();
+        let l_over_b = c.pad.l_over_b();
+        let (profile, searched) = if case.optimum_ratio {
+            let (ratio, evaluations) =
+                performance::optimum_ratio(case.profile, l_over_b, case.method, &budget)?;
+            (case.profile.with_ratio(ratio), Some(evaluations))
+        } else {
+            (case.profile, None)
+        };
+        let evaluated = evaluate(profile, l_over_b, case.method, &budget)?;
+        if case.method == Method::LongPad && l_over_b < 2.0 {
+            ctx.warn(
+                "long_pad_approximation",
+                format!("the infinitely long pad ignores side leakage, valid for L/B ≥ 2 (Khonsari & Booser §6.5); at L/B = {l_over_b:.3} it overestimates the load: use a numerical fidelity"),
+            );
+        }
+        let op = operating::operate(
+            &evaluated,
+            profile.ratio(),
+            long_pad::mean_thickness(profile),
+            c,
+        )?;
+        ctx.record(&op.notes);
+        let mut report = evaluated.report.clone();
+        if let Some(evaluations) = searched {
+            report.evaluations = Some(evaluations);
+        }
+        if !matches!(case.method, Method::LongPad) {
+            report = report.with_film_solves(budget.field_solves());
+        }
+        ctx.report(report);
+        let mid_plane = evaluated
+            .mid_plane
+            .as_deref()
+            .filter(|_| case.include_field);
+        let pad = PadResult::new(&op, profile.ratio(), mid_plane);
+        check_finite(&pad)?;
+        Ok(FixedPadOutput { pad })
+    }
+}

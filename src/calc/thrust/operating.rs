@@ -1,0 +1,236 @@
+//! A pad at its operating point: the dimensionless performance made dimensional, the film from
+//! the load or the load from the film, and the effects decided (Khonsari & Booser §7.3–7.4,
+//! §7.11).
+//!
+//! With the film ratio fixed, W = W̄ μ U B² L/h2², so a given load fixes h2 = (W̄ μ U B² L/W)^½
+//! without a search. The temperature rise is the pad's power carried off by its inlet flow,
+//! ΔT = E_p/(ρ c_p Q₁) (Eq. 7.8), and the thermal effect takes the viscosity at the effective
+//! temperature T_in + ΔT (the texts' design procedure, §7.4 step 5; Ex 7.1, 7.2): a root in T.
+
+use super::performance::{Evaluated, Performance};
+use crate::calc::lubricant::Lubricant;
+use crate::calc::{CalcError, Notes};
+use crate::effects::{Criterion, Decision, Mode};
+use crate::numerics::roots::{brent, Stopping};
+
+/// A pad's size: B along the sliding direction, L across it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Pad {
+    pub breadth_m: f64,
+    pub length_m: f64,
+}
+
+impl Pad {
+    pub fn l_over_b(self) -> f64 {
+        self.length_m / self.breadth_m
+    }
+    pub fn area_m2(self) -> f64 {
+        self.breadth_m * self.length_m
+    }
+}
+
+/// What the request fixes: the trailing-edge film or the load.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Given {
+    OutletFilm(f64),
+    Load(f64),
+}
+
+/// The effects a pad understands.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Effects {
+    pub thermal: Mode,
+    pub turbulence: Mode,
+}
+
+/// The running conditions.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Conditions {
+    pub pad: Pad,
+    pub sliding_speed_m_s: f64,
+    pub lubricant: Lubricant,
+    pub inlet_temperature_c: f64,
+    pub given: Given,
+    pub effects: Effects,
+}
+
+/// Transition to turbulence in a thrust film: pad-average Reynolds number 580–800 (local
+/// 1000–1200; Khonsari & Booser §7.11). `auto` flags the lower end.
+pub const TURBULENT_REYNOLDS: f64 = 580.0;
+/// The viscosity drop across the isothermal rise above which `auto` applies the thermal effect
+/// (as for the journal).
+const THERMAL_VISCOSITY_DROP: f64 = 0.05;
+/// Babbitt begins to flow at about 150 °C (Khonsari & Booser §7.9).
+pub const BABBITT_LIMIT_C: f64 = 150.0;
+
+/// The pad at its operating point, SI units.
+#[derive(Debug, Clone)]
+pub struct Operating {
+    pub performance: Performance,
+    pub load_n: f64,
+    pub outlet_film_m: f64,
+    pub inlet_film_m: f64,
+    pub friction_force_n: f64,
+    pub power_loss_w: f64,
+    pub max_pressure_pa: f64,
+    /// μ U B/h2²: P̄ in pascals.
+    pub pressure_scale_pa: f64,
+    pub mean_pressure_pa: f64,
+    pub inlet_flow_m3_s: f64,
+    pub side_flow_m3_s: f64,
+    pub outlet_flow_m3_s: f64,
+    pub temperature_rise_k: f64,
+    pub effective_temperature_c: f64,
+    pub max_temperature_c: f64,
+    pub effective_viscosity_pa_s: f64,
+    /// ρ U h̄_mean/μ at the effective temperature.
+    pub reynolds_number: f64,
+    pub notes: Notes,
+}
+
+/// The pad of `evaluated` performance (film ratio `ratio`, mean film h̄_mean h2) under `c`.
+pub fn operate(
+    evaluated: &Evaluated,
+    ratio: f64,
+    mean_film: f64,
+    c: &Conditions,
+) -> Result<Operating, CalcError> {
+    let p = evaluated.performance;
+    if !(p.load > 0.0 && p.inlet_flow > 0.0) {
+        return Err(CalcError::impossible(
+            "/profile",
+            "this film carries no load: the pad needs a converging film",
+        ));
+    }
+    let (pad, u, lub) = (c.pad, c.sliding_speed_m_s, &c.lubricant);
+    let (b, l) = (pad.breadth_m, pad.length_m);
+    let t_in = c.inlet_temperature_c;
+    // The outlet film at viscosity μ.
+    let film = |mu: f64| match c.given {
+        Given::OutletFilm(h2) => h2,
+        Given::Load(w) => (p.load * mu * u * b * b * l / w).sqrt(),
+    };
+    // ΔT at temperature t (the viscosity and the heat capacity taken there), Eq. 7.8.
+    let rise = |t: f64| {
+        let mu = lub.viscosity_pa_s(t);
+        let h2 = film(mu);
+        let power = p.friction * mu * u * u * b * l / h2;
+        let flow = p.inlet_flow * u * l * h2;
+        power / (lub.density_kg_m3(t) * lub.specific_heat_j_kg_k(t) * flow)
+    };
+    let mut notes = Notes::default();
+    let isothermal_rise = rise(t_in);
+    let drop = 1.0 - lub.viscosity_pa_s(t_in + isothermal_rise) / lub.viscosity_pa_s(t_in);
+    let thermal = Decision::decide(
+        c.effects.thermal,
+        Criterion {
+            name: "viscosity_drop_over_rise",
+            value: drop,
+            threshold: THERMAL_VISCOSITY_DROP,
+        },
+        "effective temperature T_in + ΔT",
+    );
+    let t_eff = if thermal.applied {
+        effective_temperature(t_in, isothermal_rise, rise)?
+    } else {
+        t_in
+    };
+    notes.decide("thermal", thermal);
+    let mu = lub.viscosity_pa_s(t_eff);
+    let h2 = film(mu);
+    let rho = lub.density_kg_m3(t_eff);
+    let reynolds = rho * u * mean_film * h2 / mu;
+    let turbulence = Decision::decide(
+        c.effects.turbulence,
+        Criterion {
+            name: "pad_reynolds_number",
+            value: reynolds,
+            threshold: TURBULENT_REYNOLDS,
+        },
+        "turbulent film",
+    );
+    if turbulence.applied {
+        if c.effects.turbulence == Mode::On {
+            return Err(CalcError::impossible(
+                "/effects/turbulence",
+                "a turbulent pad film is not modelled yet; use auto (the Reynolds number is reported and a warning given above transition) or off",
+            ));
+        }
+        notes.warn(
+            "turbulent_film",
+            format!("the pad-average Reynolds number ρ U h_mean/μ = {reynolds:.0} exceeds the transition at 580–800 (Khonsari & Booser §7.11): the laminar power loss is low; compute both regimes and expect the higher loss"),
+        );
+    }
+    notes.decide(
+        "turbulence",
+        Decision {
+            applied: false,
+            reason: if turbulence.applied {
+                format!("{}; not modelled: the result is laminar", turbulence.reason)
+            } else {
+                turbulence.reason
+            },
+            ..turbulence
+        },
+    );
+    let load = p.load * mu * u * b * b * l / (h2 * h2);
+    let friction = p.friction * mu * u * b * l / h2;
+    let inlet_flow = p.inlet_flow * u * l * h2;
+    let power = friction * u;
+    let rise = power / (rho * lub.specific_heat_j_kg_k(t_eff) * inlet_flow);
+    let max_temperature = t_in + 2.0 * rise;
+    if max_temperature > BABBITT_LIMIT_C {
+        notes.warn(
+            "above_babbitt_limit",
+            format!("the estimated maximum film temperature {max_temperature:.0} °C (inlet plus twice the rise, Khonsari & Booser §7.3) exceeds the {BABBITT_LIMIT_C:.0} °C at which babbitt flows (§7.9)"),
+        );
+    }
+    let inlet_film = ratio * h2;
+    if inlet_film > 0.01 * b.min(l) {
+        notes.warn(
+            "thick_film",
+            format!("the inlet film {inlet_film:.3e} m is over 1 % of the pad's size: Reynolds' thin-film assumption weakens"),
+        );
+    }
+    Ok(Operating {
+        performance: p,
+        load_n: load,
+        outlet_film_m: h2,
+        inlet_film_m: inlet_film,
+        friction_force_n: friction,
+        power_loss_w: power,
+        max_pressure_pa: p.max_pressure * mu * u * b / (h2 * h2),
+        pressure_scale_pa: mu * u * b / (h2 * h2),
+        mean_pressure_pa: load / pad.area_m2(),
+        inlet_flow_m3_s: inlet_flow,
+        side_flow_m3_s: p.side_flow * u * l * h2,
+        outlet_flow_m3_s: p.outlet_flow * u * l * h2,
+        temperature_rise_k: rise,
+        effective_temperature_c: t_eff,
+        max_temperature_c: max_temperature,
+        effective_viscosity_pa_s: mu,
+        reynolds_number: reynolds,
+        notes,
+    })
+}
+
+/// T with T = T_in + ΔT(T): ΔT falls as T rises (thinner oil, or a dearer heat capacity), so
+/// the root lies in [T_in, T_in + ΔT(T_in)].
+fn effective_temperature(
+    t_in: f64,
+    isothermal_rise: f64,
+    rise: impl Fn(f64) -> f64,
+) -> Result<f64, CalcError> {
+    let g = |t: f64| t - t_in - rise(t);
+    let hi = t_in + isothermal_rise;
+    if g(hi) <= 0.0 {
+        return Ok(hi);
+    }
+    let stop = Stopping {
+        x_tolerance: 1e-9 * (1.0 + hi.abs()),
+        max_iterations: 100,
+    };
+    brent(g, t_in, hi, stop)
+        .map(|root| root.x)
+        .map_err(|e| CalcError::from_root("thrust_effective_temperature", e))
+}

@@ -1,0 +1,338 @@
+//! The wire parts every pad request and response shares: the pad's size, the effects, the
+//! fidelity and the result block (Khonsari & Booser Table 7.2 naming).
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::film::Mesh;
+use super::operating::{Conditions, Effects, Given, Operating, Pad};
+use super::performance::Method;
+use crate::calc::lubricant::LubricantSpec;
+use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::{CalcError, FieldError};
+use crate::effects::Mode;
+use crate::fidelity::{FidelityRequest, Level};
+
+/// The pad: B along the sliding direction, L across it (radially on a thrust bearing).
+#[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PadSpec {
+    /// Breadth B along the sliding direction, m (> 0, at most 10).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 10.0, example = 0.089)]
+    pub breadth_m: Positive,
+    /// Length L across the sliding direction, m (> 0, at most 10; L/B from 0.1 to 10).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 10.0, example = 0.087)]
+    pub length_m: Positive,
+}
+
+impl PadSpec {
+    pub fn parse(self, errors: &mut Vec<FieldError>) -> Pad {
+        let pad = Pad {
+            breadth_m: self.breadth_m.get(),
+            length_m: self.length_m.get(),
+        };
+        for (field, v) in [("breadth_m", pad.breadth_m), ("length_m", pad.length_m)] {
+            if v > 10.0 {
+                errors.push(FieldError::new(
+                    format!("/pad/{field}"),
+                    format!("must be at most 10 m, got {v}"),
+                ));
+            }
+        }
+        let ratio = pad.l_over_b();
+        if !(0.1..=10.0).contains(&ratio) {
+            errors.push(FieldError::new(
+                "/pad/length_m",
+                format!("L/B must be within [0.1, 10], got {ratio:.4}"),
+            ));
+        }
+        pad
+    }
+}
+
+/// Effects a pad understands.
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct PadEffects {
+    /// The viscosity at the effective temperature T_in + ΔT, with ΔT = E_p/(ρ c_p Q₁)
+    /// (Khonsari & Booser Eq. 7.8 and §7.4's procedure), solved as a root in T. `auto` applies
+    /// it when the isothermal rise lowers the viscosity by more than 5 %.
+    #[serde(default)]
+    pub thermal: Mode,
+    /// Turbulent film: the pad-average Reynolds number ρ U h_mean/μ against the transition at
+    /// 580–800 (Khonsari & Booser §7.11). Reported, with a warning above 580; not modelled
+    /// (`on` is refused).
+    #[serde(default)]
+    pub turbulence: Mode,
+}
+
+impl From<PadEffects> for Effects {
+    fn from(e: PadEffects) -> Effects {
+        Effects {
+            thermal: e.thermal,
+            turbulence: e.turbulence,
+        }
+    }
+}
+
+/// The method of a request's `fidelity`: `closed_form` is the infinitely long pad, a level its
+/// mesh, `{"grid": [along B 8…512, across half of L 2…256]}` an explicit one (extrapolated
+/// when it halves exactly). The film is solved exactly: a `tolerance` does not apply.
+pub fn method(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Method {
+    match fidelity {
+        FidelityRequest::Level(level) => Method::level(level),
+        FidelityRequest::Custom(custom) => {
+            if custom.tolerance.is_some() {
+                errors.push(FieldError::new(
+                    "/fidelity/tolerance",
+                    "the pad's film is solved exactly (active sets): give a level or a grid",
+                ));
+            }
+            match custom.grid {
+                Some([along, across])
+                    if (8..=512).contains(&along) && (2..=256).contains(&across) =>
+                {
+                    Method::mesh(Mesh {
+                        along: along as usize,
+                        across_half: across as usize,
+                    })
+                }
+                Some(_) => {
+                    errors.push(FieldError::new(
+                        "/fidelity/grid",
+                        "must be [cells along B 8…512, cells across half of L 2…256]",
+                    ));
+                    Method::level(Level::Standard)
+                }
+                None => Method::level(Level::Standard),
+            }
+        }
+    }
+}
+
+/// Table 7.2's coefficients of this pad.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PadCoefficients {
+    /// W̄ = W h2²/(μ U B² L) (= K_h²).
+    pub load: f64,
+    /// K_h: h2 = K_h (μ U B/P_avg)^½ (Eq. 7.5).
+    pub k_h: f64,
+    /// K_f: E_p = K_f μ U² B L/h2 (Eq. 7.6).
+    pub k_f: f64,
+    /// K_q: Q₁ = K_q U L h2 (Eq. 7.7).
+    pub k_q: f64,
+    /// K_s: Q_s = K_s U L h2 (Eq. 7.7), both sides.
+    pub k_s: f64,
+}
+
+/// A point of the mid-plane pressure profile.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PadPressurePoint {
+    /// x/B from the leading edge.
+    pub position_fraction: f64,
+    /// Gauge pressure, Pa.
+    pub pressure_pa: f64,
+}
+
+/// A pad's performance at its operating point: totals for the pad sent.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PadResult {
+    /// Load carried W, N.
+    pub load_n: f64,
+    /// Trailing-edge (minimum) film h2, m.
+    pub outlet_film_m: f64,
+    /// Leading-edge film h1, m.
+    pub inlet_film_m: f64,
+    /// h1/h2.
+    pub film_ratio: f64,
+    /// Friction force on the runner F, N.
+    pub friction_force_n: f64,
+    /// F/W.
+    pub friction_coefficient: f64,
+    /// Power loss E_p = F U, W.
+    pub power_loss_w: f64,
+    /// Centre of pressure, x/B from the leading edge.
+    pub center_of_pressure_fraction: f64,
+    /// Peak film pressure (gauge), Pa.
+    pub max_pressure_pa: f64,
+    /// Where the peak is, x/B from the leading edge.
+    pub max_pressure_position_fraction: f64,
+    /// Unit load P_avg = W/(B L), Pa.
+    pub mean_pressure_pa: f64,
+    /// Flow in at the leading edge Q₁, m³/s.
+    pub inlet_flow_m3_s: f64,
+    /// Flow out of both sides Q_s, m³/s.
+    pub side_flow_m3_s: f64,
+    /// Flow out at the trailing edge, m³/s.
+    pub outlet_flow_m3_s: f64,
+    /// ΔT = E_p/(ρ c_p Q₁), K (Eq. 7.8).
+    pub temperature_rise_k: f64,
+    /// Where the viscosity is taken: T_in + ΔT with the thermal effect, else T_in, °C.
+    pub effective_temperature_c: f64,
+    /// Estimated maximum film temperature T_in + 2 ΔT, °C (Khonsari & Booser §7.3).
+    pub max_temperature_c: f64,
+    /// μ at the effective temperature, Pa·s.
+    pub effective_viscosity_pa_s: f64,
+    /// Pad-average Reynolds number ρ U h_mean/μ.
+    pub reynolds_number: f64,
+    pub coefficients: PadCoefficients,
+    /// The mid-plane pressure profile (with `include_field` and a numerical fidelity).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub pressure_profile: Option<Vec<PadPressurePoint>>,
+}
+
+impl PadResult {
+    /// The result block of `op`, with the film ratio `ratio`, and the profile (x̄, P̄) scaled
+    /// to pascals when given.
+    pub fn new(op: &Operating, ratio: f64, mid_plane: Option<&[(f64, f64)]>) -> PadResult {
+        let p = op.performance;
+        PadResult {
+            load_n: op.load_n,
+            outlet_film_m: op.outlet_film_m,
+            inlet_film_m: op.inlet_film_m,
+            film_ratio: ratio,
+            friction_force_n: op.friction_force_n,
+            friction_coefficient: op.friction_force_n / op.load_n,
+            power_loss_w: op.power_loss_w,
+            center_of_pressure_fraction: p.center_of_pressure,
+            max_pressure_pa: op.max_pressure_pa,
+            max_pressure_position_fraction: p.max_pressure_position,
+            mean_pressure_pa: op.mean_pressure_pa,
+            inlet_flow_m3_s: op.inlet_flow_m3_s,
+            side_flow_m3_s: op.side_flow_m3_s,
+            outlet_flow_m3_s: op.outlet_flow_m3_s,
+            temperature_rise_k: op.temperature_rise_k,
+            effective_temperature_c: op.effective_temperature_c,
+            max_temperature_c: op.max_temperature_c,
+            effective_viscosity_pa_s: op.effective_viscosity_pa_s,
+            reynolds_number: op.reynolds_number,
+            coefficients: PadCoefficients {
+                load: p.load,
+                k_h: p.k_h(),
+                k_f: p.friction,
+                k_q: p.inlet_flow,
+                k_s: p.side_flow,
+            },
+            pressure_profile: mid_plane.map(|points| {
+                points
+                    .iter()
+                    .map(|&(x, pressure)| PadPressurePoint {
+                        position_fraction: x,
+                        pressure_pa: pressure * op.pressure_scale_pa,
+                    })
+                    .collect()
+            }),
+        }
+    }
+}
+
+/// The given film or load, checked.
+pub fn given(
+    outlet_film: Option<Positive>,
+    load: Option<Positive>,
+    film_allowed: bool,
+    errors: &mut Vec<FieldError>,
+) -> Given {
+    match (outlet_film, load) {
+        (Some(h), None) if film_allowed && (1e-8..=1e-2).contains(&h.get()) => {
+            Given::OutletFilm(h.get())
+        }
+        (Some(h), None) if film_allowed => {
+            errors.push(FieldError::new(
+                "/outlet_film_m",
+                format!("must be within [1e-8, 1e-2] m, got {}", h.get()),
+            ));
+            Given::OutletFilm(1e-5)
+        }
+        (None, Some(w)) if (1e-6..=1e9).contains(&w.get()) => Given::Load(w.get()),
+        (None, Some(w)) => {
+            errors.push(FieldError::new(
+                "/load_n",
+                format!("must be within [1e-6, 1e9] N, got {}", w.get()),
+            ));
+            Given::Load(1.0)
+        }
+        _ if film_allowed => {
+            errors.push(FieldError::new(
+                "/load_n",
+                "give exactly one of load_n and outlet_film_m",
+            ));
+            Given::Load(1.0)
+        }
+        _ => {
+            errors.push(FieldError::new("/load_n", "give load_n"));
+            Given::Load(1.0)
+        }
+    }
+}
+
+/// The sliding speed, inlet temperature and lubricant, checked.
+pub fn conditions(
+    pad: Pad,
+    speed: Positive,
+    lubricant: LubricantSpec,
+    inlet_temperature_c: Option<Celsius>,
+    given: Given,
+    effects: PadEffects,
+    errors: &mut Vec<FieldError>,
+) -> Option<Conditions> {
+    if speed.get() > 500.0 {
+        errors.push(FieldError::new(
+            "/sliding_speed_m_s",
+            format!("must be at most 500 m/s, got {}", speed.get()),
+        ));
+    }
+    match lubricant.parse("/lubricant") {
+        Ok(lubricant) => Some(Conditions {
+            pad,
+            sliding_speed_m_s: speed.get(),
+            lubricant,
+            inlet_temperature_c: inlet_temperature_c.map_or(40.0, Celsius::get),
+            given,
+            effects: effects.into(),
+        }),
+        Err(mut e) => {
+            errors.append(&mut e);
+            None
+        }
+    }
+}
+
+/// Refuse an inlet temperature where the lubricant's viscosity law has no value.
+pub fn check_viscosity(c: &Conditions) -> Result<(), CalcError> {
+    let mu = c.lubricant.viscosity_pa_s(c.inlet_temperature_c);
+    if mu.is_finite() && mu > 0.0 {
+        Ok(())
+    } else {
+        Err(CalcError::impossible(
+            "/inlet_temperature_c",
+            format!(
+                "the lubricant's viscosity law has no finite value at {} °C",
+                c.inlet_temperature_c
+            ),
+        ))
+    }
+}
+
+/// Refuse a result with a number outside the floating-point range (an extreme request).
+pub fn check_finite(result: &PadResult) -> Result<(), CalcError> {
+    let numbers = [
+        result.load_n,
+        result.outlet_film_m,
+        result.friction_force_n,
+        result.power_loss_w,
+        result.max_pressure_pa,
+        result.inlet_flow_m3_s,
+        result.temperature_rise_k,
+        result.effective_temperature_c,
+        result.reynolds_number,
+    ];
+    if numbers.iter().all(|v| v.is_finite()) {
+        Ok(())
+    } else {
+        Err(CalcError::impossible(
+            "",
+            "this combination of inputs takes the result outside the floating-point range",
+        ))
+    }
+}

@@ -1,0 +1,216 @@
+//! A pivoted plane pad in equilibrium: it tilts until the film's centre of pressure lies on the
+//! pivot, so the pivot fixes the film ratio a = h1/h2 through x̄_cp(a) = x̄_p (Khonsari & Booser
+//! §7.5; Stachowiak & Batchelor §4.3, Table 4.2), and the load then fixes h2 as for a fixed pad.
+//!
+//! x̄_cp rises monotonically from ½ (a → 1: the pressure of a nearly parallel film is symmetric
+//! about mid-pad, whatever L/B) towards the trailing edge, so a bracketed root on
+//! x̄_cp(a) − x̄_p over [`PIVOT_RATIOS`] finds the one equilibrium. A pivot at or ahead of
+//! mid-pad has none: an isoviscous flat pad pivoted there carries no load (real centrally
+//! pivoted pads run on thermal and elastic crowning).
+
+use std::cell::Cell;
+
+use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
+use super::profile::Profile;
+use crate::calc::{Budget, CalcError};
+use crate::numerics::roots::{brent, Stopping};
+
+/// The film ratios a pivoted pad may settle at.
+pub const PIVOT_RATIOS: (f64, f64) = (1.01, 20.0);
+
+/// Where the pivot is.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Pivot {
+    /// x̄_p, a fraction of B from the leading edge.
+    At(f64),
+    /// Where the centre of pressure lies at the load-maximising film ratio.
+    Optimum,
+}
+
+/// The pad in equilibrium.
+#[derive(Debug, Clone)]
+pub struct Equilibrium {
+    pub ratio: f64,
+    pub pivot: f64,
+    pub evaluated: Evaluated,
+    /// da/dx̄_p: how far the film ratio moves per unit of pivot position.
+    pub ratio_per_pivot: f64,
+    /// (dW̄/da)/W̄ at the equilibrium.
+    pub load_slope: f64,
+    /// Film solves (or closed-form evaluations) of the search.
+    pub evaluations: u32,
+}
+
+/// The equilibrium of a plane pad of aspect `l_over_b` pivoted at `pivot`.
+pub fn equilibrium(
+    pivot: Pivot,
+    l_over_b: f64,
+    method: Method,
+    budget: &Budget,
+) -> Result<Equilibrium, CalcError> {
+    let plane = |a: f64| Profile::PlaneInclined { ratio: a };
+    let evaluations = Cell::new(0);
+    let at = |a: f64| -> Result<Evaluated, CalcError> {
+        evaluations.set(evaluations.get() + 1);
+        Ok(evaluate(plane(a), l_over_b, method, budget)?)
+    };
+    let (ratio, pivot) = match pivot {
+        Pivot::Optimum => {
+            let (ratio, n) = optimum_ratio(plane(2.0), l_over_b, method, budget)?;
+            evaluations.set(evaluations.get() + n);
+            (ratio, at(ratio)?.performance.center_of_pressure)
+        }
+        Pivot::At(x_p) => {
+            let (lo, hi) = PIVOT_RATIOS;
+            let (x_lo, x_hi) = (
+                at(lo)?.performance.center_of_pressure,
+                at(hi)?.performance.center_of_pressure,
+            );
+            if x_p <= x_lo {
+                return Err(CalcError::impossible(
+                    "/pivot_position_fraction",
+                    format!("a flat pad pivoted at {x_p} of B carries no useful load in the isoviscous film: its centre of pressure lies behind {x_lo:.4} of B for every film ratio above {lo} (and at mid-pad as the film becomes parallel), so a central or leading-side pivot has no equilibrium; real centrally pivoted pads run on thermal and elastic crowning (Khonsari & Booser §7.5): move the pivot towards the trailing edge (0.58 maximises the load)"),
+                ));
+            }
+            if x_p >= x_hi {
+                return Err(CalcError::impossible(
+                    "/pivot_position_fraction",
+                    format!("a pivot at {x_p} of B needs a film ratio above {hi}: the centre of pressure reaches only {x_hi:.4} of B there"),
+                ));
+            }
+            let mut failure = None;
+            let root = brent(
+                |a| match at(a) {
+                    Ok(e) => e.performance.center_of_pressure - x_p,
+                    Err(e) => {
+                        failure = Some(e);
+                        0.0
+                    }
+                },
+                lo,
+                hi,
+                Stopping {
+                    x_tolerance: 1e-9,
+                    max_iterations: 100,
+                },
+            );
+            if let Some(e) = failure {
+                return Err(e);
+            }
+            let root = root.map_err(|e| CalcError::from_root("pivot_equilibrium", e))?;
+            (root.x, x_p)
+        }
+    };
+    // The sensitivities by central differences of the same method.
+    let step = 1e-4 * ratio;
+    let (below, above) = (at(ratio - step)?, at(ratio + step)?);
+    let evaluated = at(ratio)?;
+    let dx = (above.performance.center_of_pressure - below.performance.center_of_pressure)
+        / (2.0 * step);
+    let dw = (above.performance.load - below.performance.load) / (2.0 * step);
+    Ok(Equilibrium {
+        ratio,
+        pivot,
+        load_slope: dw / evaluated.performance.load,
+        ratio_per_pivot: 1.0 / dx,
+        evaluated,
+        evaluations: evaluations.get(),
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::calc::thrust::long_pad;
+    use crate::fidelity::Level;
+
+    #[test]
+    fn the_long_pad_pivot_reproduces_stachowiak_table_4_2() {
+        // Table 4.2 read backwards: a pivot at X/B from the trailing edge settles at
+        // K = h1/h0 − 1 (K = 1.0 at X/B = 0.431, K = 3.0 at 0.366; 3 decimals printed, so the
+        // ratio is within the slope's share of half a unit).
+        for (k, from_trailing) in [(1.0, 0.431), (2.0, 0.393), (3.0, 0.366)] {
+            let got = equilibrium(
+                Pivot::At(1.0 - from_trailing),
+                1.0,
+                Method::LongPad,
+                &Budget::unlimited(),
+            )
+            .unwrap();
+            let slack = 0.0005 * got.ratio_per_pivot.abs() + 1e-9;
+            assert!(
+                (got.ratio - 1.0 - k).abs() <= slack,
+                "K {k}: got {}",
+                got.ratio - 1.0
+            );
+            // The equilibrium is a root of the moment about the pivot: x̄_cp on the pivot.
+            assert!((got.evaluated.performance.center_of_pressure - got.pivot).abs() < 1e-9);
+        }
+    }
+
+    #[test]
+    fn the_optimum_pivot_of_the_long_pad_is_at_its_optimum_ratio() {
+        let got = equilibrium(Pivot::Optimum, 1.0, Method::LongPad, &Budget::unlimited()).unwrap();
+        assert!((got.ratio - 2.189).abs() < 5e-3);
+        let x_cp =
+            long_pad::performance(Profile::PlaneInclined { ratio: got.ratio }).center_of_pressure;
+        assert!((got.pivot - x_cp).abs() < 1e-12);
+        // At the maximum the load no longer changes with the ratio.
+        assert!(got.load_slope.abs() < 1e-3, "{}", got.load_slope);
+    }
+
+    #[test]
+    fn a_central_pivot_is_refused_with_the_reason() {
+        for method in [Method::LongPad, Method::level(Level::Fast)] {
+            let err = equilibrium(Pivot::At(0.5), 1.0, method, &Budget::unlimited()).unwrap_err();
+            match err {
+                CalcError::Impossible { pointer, message } => {
+                    assert_eq!(pointer, "/pivot_position_fraction");
+                    assert!(message.contains("carries no useful load"), "{message}");
+                }
+                other => panic!("{other:?}"),
+            }
+        }
+    }
+
+    #[test]
+    fn square_pad_with_a_65_percent_pivot_is_near_table_7_4() {
+        // Khonsari & Booser §7.5, Table 7.4: a 65 % offset pivot on a square pad is designed
+        // with h1/h2 ≈ 5, K_h 0.23, K_f 0.51, K_q 1.66 — rounded rules that the isoviscous
+        // equilibrium meets within 10 % in K_h and K_f (it settles at h1/h2 = 3.7: a stiffer
+        // ratio than the rule, whose pads also run on thermal crowning).
+        let got = equilibrium(
+            Pivot::At(0.65),
+            1.0,
+            Method::level(Level::Standard),
+            &Budget::unlimited(),
+        )
+        .unwrap();
+        let p = got.evaluated.performance;
+        assert!((3.5..5.0).contains(&got.ratio), "ratio {}", got.ratio);
+        assert!((p.k_h() / 0.23 - 1.0).abs() < 0.1, "K_h {}", p.k_h());
+        assert!((p.friction / 0.51 - 1.0).abs() < 0.12, "K_f {}", p.friction);
+        assert!((p.center_of_pressure - 0.65).abs() < 1e-8);
+        assert!(got.ratio_per_pivot > 0.0);
+    }
+
+    #[test]
+    fn the_equilibrium_converges_with_the_grid() {
+        // Each level's film ratio within its neighbour's reach: the fast and standard answers
+        // differ from high by less than a percent.
+        let at = |level| {
+            equilibrium(
+                Pivot::At(0.6),
+                0.5,
+                Method::level(level),
+                &Budget::unlimited(),
+            )
+            .unwrap()
+            .ratio
+        };
+        let high = at(Level::High);
+        for level in [Level::Fast, Level::Standard] {
+            assert!((at(level) / high - 1.0).abs() < 0.01, "{level:?}");
+        }
+    }
+}
