@@ -62,6 +62,9 @@ pub const TURBULENT_REYNOLDS: f64 = 580.0;
 const THERMAL_VISCOSITY_DROP: f64 = 0.05;
 /// Babbitt begins to flow at about 150 °C (Khonsari & Booser §7.9).
 pub const BABBITT_LIMIT_C: f64 = 150.0;
+/// No lubricating oil film survives above this, and the viscosity and density laws do not
+/// reach it: an effective temperature beyond is a thermal runaway, refused.
+pub const MAX_FILM_TEMPERATURE_C: f64 = 300.0;
 
 /// The pad at its operating point, SI units.
 #[derive(Debug, Clone)]
@@ -120,7 +123,8 @@ pub fn operate(
     };
     let mut notes = Notes::default();
     let isothermal_rise = rise(t_in);
-    let drop = 1.0 - lub.viscosity_pa_s(t_in + isothermal_rise) / lub.viscosity_pa_s(t_in);
+    let heated = (t_in + isothermal_rise).min(MAX_FILM_TEMPERATURE_C.max(t_in));
+    let drop = 1.0 - lub.viscosity_pa_s(heated) / lub.viscosity_pa_s(t_in);
     let thermal = Decision::decide(
         c.effects.thermal,
         Criterion {
@@ -131,7 +135,16 @@ pub fn operate(
         "effective temperature T_in + ΔT",
     );
     let t_eff = if thermal.applied {
-        effective_temperature(t_in, isothermal_rise, rise)?
+        effective_temperature(t_in, isothermal_rise, rise).ok_or_else(|| {
+            let pointer = match c.given {
+                Given::OutletFilm(_) => "/outlet_film_m",
+                Given::Load(_) => "/load_n",
+            };
+            CalcError::impossible(
+                pointer,
+                format!("thermal runaway: the film's own heat would take it above {MAX_FILM_TEMPERATURE_C} °C (isothermal rise {isothermal_rise:.3e} K), where no oil film survives; thicken the film or lighten the load"),
+            )
+        })?
     } else {
         t_in
     };
@@ -215,22 +228,25 @@ pub fn operate(
 }
 
 /// T with T = T_in + ΔT(T): ΔT falls as T rises (thinner oil, or a dearer heat capacity), so
-/// the root lies in [T_in, T_in + ΔT(T_in)].
+/// the root lies in [T_in, T_in + ΔT(T_in)]; none when it lies above
+/// [`MAX_FILM_TEMPERATURE_C`] (or the laws give no finite value on the way).
 fn effective_temperature(
     t_in: f64,
     isothermal_rise: f64,
     rise: impl Fn(f64) -> f64,
-) -> Result<f64, CalcError> {
+) -> Option<f64> {
     let g = |t: f64| t - t_in - rise(t);
     let hi = t_in + isothermal_rise;
-    if g(hi) <= 0.0 {
-        return Ok(hi);
+    if hi <= MAX_FILM_TEMPERATURE_C && g(hi) <= 0.0 {
+        return Some(hi);
+    }
+    let hi = hi.min(MAX_FILM_TEMPERATURE_C);
+    if !(hi > t_in && g(hi) > 0.0) {
+        return None;
     }
     let stop = Stopping {
         x_tolerance: 1e-9 * (1.0 + hi.abs()),
         max_iterations: 100,
     };
-    brent(g, t_in, hi, stop)
-        .map(|root| root.x)
-        .map_err(|e| CalcError::from_root("thrust_effective_temperature", e))
+    brent(g, t_in, hi, stop).ok().map(|root| root.x)
 }

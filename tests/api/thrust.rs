@@ -1,0 +1,221 @@
+//! Thrust pads over their whole valid range: every answer is a finite result or a 422 with its
+//! reason, never a 500; the load falls as the film thickens; a tilting pad's centre of pressure
+//! sits on its pivot; the flows balance.
+
+use proptest::prelude::*;
+use serde_json::{json, Value};
+use stribeck::calc::{find, CalcError, Failure};
+
+use crate::helpers::spawn_app;
+
+const FIXED: &str = "/v1/thrust-bearings/fixed-pad";
+const TILTING: &str = "/v1/thrust-bearings/tilting-pad";
+
+fn run(path: &str, body: &Value) -> Result<Value, Failure> {
+    let entry = find(path).expect("registered");
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())
+        .map(|done| serde_json::from_slice(&done.body).expect("the envelope is JSON"))
+}
+
+fn number(v: &Value, pointer: &str) -> f64 {
+    v.pointer(pointer)
+        .and_then(Value::as_f64)
+        .unwrap_or_else(|| panic!("{pointer} missing in {v}"))
+}
+
+/// Every number of a result is finite.
+fn assert_finite(v: &Value) {
+    match v {
+        Value::Number(n) => assert!(n.as_f64().is_some_and(f64::is_finite), "{v}"),
+        Value::Array(a) => a.iter().for_each(assert_finite),
+        Value::Object(o) => o.values().for_each(assert_finite),
+        _ => {}
+    }
+}
+
+fn profile() -> impl Strategy<Value = Value> {
+    prop_oneof![
+        (1.01f64..10.0).prop_map(|r| json!({"kind": "plane_inclined", "film_ratio": r})),
+        (1.01f64..10.0, 0.05f64..0.95).prop_map(
+            |(r, s)| json!({"kind": "step", "film_ratio": r, "step_position_fraction": s})
+        ),
+        (1.01f64..10.0, 0.0f64..0.9).prop_map(
+            |(r, f)| json!({"kind": "tapered_land", "film_ratio": r, "land_fraction": f})
+        ),
+        (1.01f64..10.0).prop_map(|r| json!({"kind": "parabolic", "film_ratio": r})),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(48))]
+
+    /// Over the whole range of shapes, aspect ratios (L/B 0.1–10), films and speeds: a finite
+    /// result whose flows balance and whose centre of pressure lies on the pad, or a 422.
+    #[test]
+    fn fixed_pads_are_finite_and_conserve_mass(
+        profile in profile(),
+        breadth in 0.005f64..1.0,
+        aspect in 0.1f64..10.0,
+        speed in 1e-3f64..500.0,
+        film in 1e-8f64..1e-2,
+        fidelity in prop_oneof![Just(json!("closed_form")), Just(json!("fast")), Just(json!("standard"))],
+        thermal in prop_oneof![Just("auto"), Just("off")],
+    ) {
+        let body = json!({
+            "pad": {"breadth_m": breadth, "length_m": (breadth * aspect).min(10.0)},
+            "profile": profile, "sliding_speed_m_s": speed, "lubricant": {"iso_vg": 68},
+            "outlet_film_m": film, "fidelity": fidelity, "effects": {"thermal": thermal},
+        });
+        let got = run(FIXED, &body);
+        match got {
+            Ok(v) => {
+                assert_finite(&v);
+                let (q1, q2, qs) = (number(&v, "/result/inlet_flow_m3_s"), number(&v, "/result/outlet_flow_m3_s"), number(&v, "/result/side_flow_m3_s"));
+                prop_assert!((q1 - q2 - qs).abs() <= 1e-9 * q1, "{q1} {q2} {qs}");
+                let x = number(&v, "/result/center_of_pressure_fraction");
+                prop_assert!(x > 0.0 && x < 1.0);
+                prop_assert!(number(&v, "/result/load_n") > 0.0);
+                prop_assert!(number(&v, "/result/friction_force_n") > 0.0);
+            }
+            Err(Failure::Calc(CalcError::Internal(cause))) => panic!("internal error: {cause}"),
+            Err(_) => {}
+        }
+    }
+
+    /// A tilting pad's moment about its pivot vanishes: the centre of pressure is the pivot.
+    #[test]
+    fn tilting_pads_balance_their_moment(
+        pivot in 0.52f64..0.68,
+        aspect in 0.25f64..4.0,
+        load in 1.0f64..1e5,
+    ) {
+        let body = json!({
+            "pad": {"breadth_m": 0.05, "length_m": 0.05 * aspect}, "pivot_position_fraction": pivot,
+            "sliding_speed_m_s": 20, "lubricant": {"iso_vg": 32}, "load_n": load, "fidelity": "fast",
+        });
+        let v = match run(TILTING, &body) {
+            Ok(v) => v,
+            // A small pad under a heavy load may heat beyond any oil.
+            Err(Failure::Calc(CalcError::Impossible { message, .. })) if message.contains("thermal runaway") => return Ok(()),
+            Err(other) => panic!("{other:?}"),
+        };
+        assert_finite(&v);
+        prop_assert!((number(&v, "/result/center_of_pressure_fraction") - pivot).abs() < 1e-8);
+        prop_assert!((number(&v, "/result/load_n") / load - 1.0).abs() < 1e-9);
+        prop_assert!(number(&v, "/result/film_ratio_per_pivot_fraction") > 0.0);
+    }
+}
+
+#[test]
+fn the_load_falls_as_the_film_thickens_over_six_decades() {
+    // Over 1e-8 … 1e-2 m, isothermal and with the thermal effect on a temperature-dependent
+    // oil; the thinnest films heat beyond any oil (a 422 that says so), the rest answer.
+    for thermal in ["off", "on"] {
+        let mut last = f64::INFINITY;
+        let mut refused = 0;
+        for i in 0..=24 {
+            let film = 1e-8 * 10f64.powf(i as f64 / 4.0);
+            let body = json!({
+                "pad": {"breadth_m": 0.1, "length_m": 0.1},
+                "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": 20,
+                "lubricant": {"iso_vg": 46}, "outlet_film_m": film, "effects": {"thermal": thermal},
+            });
+            let v = match run(FIXED, &body) {
+                Ok(v) => v,
+                Err(Failure::Calc(CalcError::Impossible { message, .. }))
+                    if thermal == "on" && last.is_infinite() =>
+                {
+                    assert!(message.contains("thermal runaway"), "{message}");
+                    refused += 1;
+                    continue;
+                }
+                other => panic!("{thermal} at h2 = {film}: {other:?}"),
+            };
+            let load = number(&v, "/result/load_n");
+            assert!(load < last, "{thermal} at h2 = {film}: {load} after {last}");
+            let t = number(&v, "/result/effective_temperature_c");
+            let rise = number(&v, "/result/temperature_rise_k");
+            if thermal == "on" {
+                assert!(
+                    (t - 40.0 - rise).abs() < 1e-6 * (1.0 + rise),
+                    "T_eff = T_in + ΔT"
+                );
+            }
+            last = load;
+        }
+        assert!(refused <= 12, "{refused} films refused");
+    }
+}
+
+#[tokio::test]
+async fn the_examples_answer_over_http() {
+    let app = spawn_app().await;
+    for path in [FIXED, TILTING] {
+        let example: Value = serde_json::from_str(find(path).unwrap().example).unwrap();
+        let r = app.post_json(path, &example).await;
+        assert_eq!(r.status, 200, "{path}: {}", r.text);
+        assert!((number(&r.body, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-12);
+        assert!(r.body["solver"]["film_solves"].as_u64().unwrap() >= 2);
+    }
+}
+
+#[test]
+fn bad_requests_name_the_field() {
+    let base = json!({
+        "pad": {"breadth_m": 0.1, "length_m": 0.1},
+        "profile": {"kind": "step", "film_ratio": 2, "step_position_fraction": 0.6},
+        "sliding_speed_m_s": 10, "lubricant": {"iso_vg": 32}, "load_n": 1000,
+    });
+    let with = |pointer: &str, value: Value| {
+        let mut b = base.clone();
+        let (parent, key) = pointer.rsplit_once('/').unwrap();
+        b.pointer_mut(parent).unwrap()[key] = value;
+        b
+    };
+    let cases = [
+        (with("/outlet_film_m", json!(1e-5)), "/load_n"),
+        (
+            with("/profile/film_ratio", json!(12)),
+            "/profile/film_ratio",
+        ),
+        (
+            with("/profile/film_ratio", json!("best")),
+            "/profile/film_ratio",
+        ),
+        (
+            with("/profile/land_fraction", json!(0.2)),
+            "/profile/land_fraction",
+        ),
+        (
+            with("/profile/step_position_fraction", json!(0.99)),
+            "/profile/step_position_fraction",
+        ),
+        (with("/pad/length_m", json!(5.0)), "/pad/length_m"),
+        (
+            with("/fidelity", json!({"tolerance": 1e-8})),
+            "/fidelity/tolerance",
+        ),
+        (with("/fidelity", json!({"grid": [4, 4]})), "/fidelity/grid"),
+    ];
+    for (body, pointer) in cases {
+        match run(FIXED, &body) {
+            Err(Failure::Invalid(errors)) => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+    let central = json!({
+        "pad": {"breadth_m": 0.1, "length_m": 0.1}, "pivot_position_fraction": 0.5,
+        "sliding_speed_m_s": 10, "lubricant": {"iso_vg": 32}, "load_n": 1000,
+    });
+    match run(TILTING, &central) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/pivot_position_fraction");
+            assert!(message.contains("no useful load"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
