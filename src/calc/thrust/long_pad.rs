@@ -15,6 +15,8 @@
 //! pieces, cut where h̄ changes by a quarter, so they are exact to round-off (the integrands are
 //! analytic there, their poles at h̄ = 0 well off each piece).
 
+use std::sync::OnceLock;
+
 use super::performance::Performance;
 use super::profile::Profile;
 use crate::numerics::quadrature::gauss_legendre;
@@ -23,6 +25,8 @@ use crate::numerics::quadrature::gauss_legendre;
 const POINTS: usize = 24;
 /// Largest ratio of h̄ across a sub-piece.
 const PIECE_RATIO: f64 = 1.25;
+/// The Gauss–Legendre rule, computed once.
+static RULE: OnceLock<Vec<(f64, f64)>> = OnceLock::new();
 
 /// ∫ f(x̄, h̄(x̄)) dx̄ over [a, b] (inside one smooth piece), for N integrands at once.
 fn integrate<const N: usize>(
@@ -39,11 +43,11 @@ fn integrate<const N: usize>(
     let (h0, h1) = (profile.thickness(a), profile.thickness(b - 1e-15 * (b - a)));
     let spread = (h0.max(h1) / h0.min(h1)).ln();
     let cuts = ((spread / PIECE_RATIO.ln()).ceil() as usize).max(1);
-    let rule = gauss_legendre(POINTS);
+    let rule = RULE.get_or_init(|| gauss_legendre(POINTS));
     let width = (b - a) / cuts as f64;
     for c in 0..cuts {
         let mid = a + (c as f64 + 0.5) * width;
-        for &(t, w) in &rule {
+        for &(t, w) in rule {
             let x = mid + 0.5 * width * t;
             let values = f(x, profile.thickness(x));
             for (s, v) in sum.iter_mut().zip(values) {
