@@ -268,6 +268,7 @@ impl Calculation for FixedPad {
             &evaluated,
             profile.ratio(),
             long_pad::mean_thickness(profile),
+            matches!(profile, Profile::PlaneInclined { .. }),
             c,
         )?;
         ctx.record(&op.notes);

@@ -7,6 +7,7 @@
 //! - `performance`: dimensionless performance by closed form or numerics, the optimum ratio;
 //! - `long_pad`: the infinitely long pad, exact;
 //! - `film`: the finite pad's numerical film (finite-volume Reynolds, exact active-set solve);
+//! - `thd`: Jang & Khonsari's THD temperature fits for a plane pad;
 //! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic).
 
 pub mod film;
@@ -17,4 +18,5 @@ pub mod pad_spec;
 pub mod performance;
 pub mod pivot;
 pub mod profile;
+pub mod thd;
 pub mod tilting_pad;

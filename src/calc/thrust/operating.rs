@@ -8,6 +8,7 @@
 //! temperature T_in + ΔT (the texts' design procedure, §7.4 step 5; Ex 7.1, 7.2): a root in T.
 
 use super::performance::{Evaluated, Performance};
+use super::thd;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
@@ -92,10 +93,15 @@ pub struct Operating {
 }
 
 /// The pad of `evaluated` performance (film ratio `ratio`, mean film h̄_mean h2) under `c`.
+///
+/// `plane` says the pad is plane over its whole breadth (a plane fixed pad, or a tilting pad):
+/// then, inside the fits' range, its mean and maximum temperatures are Jang & Khonsari's
+/// ([`thd`]); elsewhere the mean is T_in + ΔT and the maximum T_in + 2ΔT (§7.3).
 pub fn operate(
     evaluated: &Evaluated,
     ratio: f64,
     mean_film: f64,
+    plane: bool,
     c: &Conditions,
 ) -> Result<Operating, CalcError> {
     let p = evaluated.performance;
@@ -122,7 +128,20 @@ pub fn operate(
         power / (lub.density_kg_m3(t) * lub.specific_heat_j_kg_k(t) * flow)
     };
     let mut notes = Notes::default();
-    let isothermal_rise = rise(t_in);
+    let fits = jang_khonsari(plane, ratio, c, &mut notes);
+    // The mean and maximum rises at temperature t, and a ceiling of the mean rise.
+    let rises = |t: f64| match fits {
+        Some(f) => f.temperature_rises((ratio - 1.0) * film(lub.viscosity_pa_s(t)), ratio),
+        None => {
+            let r = rise(t);
+            (2.0 * r, r)
+        }
+    };
+    let isothermal_rise = rises(t_in).1;
+    let ceiling = match fits {
+        Some(f) => thd::rises(ratio, f64::INFINITY, f64::INFINITY).1 / f.beta_1_k,
+        None => isothermal_rise,
+    };
     let heated = (t_in + isothermal_rise).min(MAX_FILM_TEMPERATURE_C.max(t_in));
     let drop = 1.0 - lub.viscosity_pa_s(heated) / lub.viscosity_pa_s(t_in);
     let thermal = Decision::decide(
@@ -132,10 +151,22 @@ pub fn operate(
             value: drop,
             threshold: THERMAL_VISCOSITY_DROP,
         },
-        "effective temperature T_in + ΔT",
+        if fits.is_some() {
+            "effective temperature: Jang & Khonsari's THD mean temperature"
+        } else {
+            "effective temperature T_in + ΔT"
+        },
     );
+    let thermal = Decision {
+        model: Some(if fits.is_some() {
+            "jang_khonsari"
+        } else {
+            "adiabatic_rise"
+        }),
+        ..thermal
+    };
     let t_eff = if thermal.applied {
-        effective_temperature(t_in, isothermal_rise, rise).ok_or_else(|| {
+        effective_temperature(t_in, ceiling, |t| rises(t).1).ok_or_else(|| {
             let pointer = match c.given {
                 Given::OutletFilm(_) => "/outlet_film_m",
                 Given::Load(_) => "/load_n",
@@ -191,11 +222,11 @@ pub fn operate(
     let inlet_flow = p.inlet_flow * u * l * h2;
     let power = friction * u;
     let rise = power / (rho * lub.specific_heat_j_kg_k(t_eff) * inlet_flow);
-    let max_temperature = t_in + 2.0 * rise;
+    let max_temperature = t_in + rises(t_eff).0;
     if max_temperature > BABBITT_LIMIT_C {
         notes.warn(
             "above_babbitt_limit",
-            format!("the estimated maximum film temperature {max_temperature:.0} °C (inlet plus twice the rise, Khonsari & Booser §7.3) exceeds the {BABBITT_LIMIT_C:.0} °C at which babbitt flows (§7.9)"),
+            format!("the estimated maximum film temperature {max_temperature:.0} °C exceeds the {BABBITT_LIMIT_C:.0} °C at which babbitt flows (§7.9)"),
         );
     }
     let inlet_film = ratio * h2;
@@ -249,4 +280,41 @@ fn effective_temperature(
         max_iterations: 100,
     };
     brent(g, t_in, hi, stop).ok().map(|root| root.x)
+}
+
+/// Jang & Khonsari's fits for this pad, when they apply: a plane pad of B/L near 1 with a film
+/// ratio in [1.25, 3.25] on an oil whose viscosity falls with temperature (β > 0, taken at the
+/// inlet as −d ln μ/dT). Outside B/L = 1 the fits are extrapolated, with a warning.
+fn jang_khonsari(
+    plane: bool,
+    ratio: f64,
+    c: &Conditions,
+    notes: &mut Notes,
+) -> Option<thd::Parameters> {
+    let (lub, t_in) = (&c.lubricant, c.inlet_temperature_c);
+    let b_over_l = 1.0 / c.pad.l_over_b();
+    let beta = -(lub.viscosity_pa_s(t_in + 0.5).ln() - lub.viscosity_pa_s(t_in - 0.5).ln());
+    let fits = plane
+        && (thd::RATIOS.0..thd::RATIOS.1).contains(&ratio)
+        && (thd::ASPECT_SPREAD.0..=thd::ASPECT_SPREAD.1).contains(&b_over_l)
+        && beta.is_finite()
+        && beta > 1e-6;
+    if !fits {
+        return None;
+    }
+    if (b_over_l - 1.0).abs() > 1e-9 {
+        notes.warn(
+            "thd_fit_aspect",
+            format!("Jang & Khonsari's temperature fits were made for B/L = 1; used at B/L = {b_over_l:.3}"),
+        );
+    }
+    let k = lub.thermal_conductivity_w_m_k(t_in);
+    Some(thd::Parameters {
+        diffusivity_m2_s: k / (lub.density_kg_m3(t_in) * lub.specific_heat_j_kg_k(t_in)),
+        conductivity_w_m_k: k,
+        inlet_viscosity_pa_s: lub.viscosity_pa_s(t_in),
+        beta_1_k: beta,
+        speed_m_s: c.sliding_speed_m_s,
+        breadth_m: c.pad.breadth_m,
+    })
 }

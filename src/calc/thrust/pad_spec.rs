@@ -54,9 +54,13 @@ impl PadSpec {
 #[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PadEffects {
-    /// The viscosity at the effective temperature T_in + ΔT, with ΔT = E_p/(ρ c_p Q₁)
-    /// (Khonsari & Booser Eq. 7.8 and §7.4's procedure), solved as a root in T. `auto` applies
-    /// it when the isothermal rise lowers the viscosity by more than 5 %.
+    /// The viscosity at the effective temperature, solved as a root in T: for a plane pad of
+    /// B/L from 0.8 to 1.25 and h1/h2 from 1.25 to 3.25 on an oil whose viscosity falls with
+    /// temperature, Jang & Khonsari's THD mean temperature (Khonsari & Booser §7.9, Table 7.5;
+    /// model `jang_khonsari`, which also gives the maximum temperature); otherwise T_in + ΔT with
+    /// ΔT = E_p/(ρ c_p Q₁) (Eq. 7.8 and §7.4's procedure; model `adiabatic_rise`, maximum
+    /// T_in + 2ΔT). `auto` applies it when the isothermal rise lowers the viscosity by more than
+    /// 5 %.
     #[serde(default)]
     pub thermal: Mode,
     /// Turbulent film: the pad-average Reynolds number ρ U h_mean/μ against the transition at
@@ -167,9 +171,11 @@ pub struct PadResult {
     pub outlet_flow_m3_s: f64,
     /// ΔT = E_p/(ρ c_p Q₁), K (Eq. 7.8).
     pub temperature_rise_k: f64,
-    /// Where the viscosity is taken: T_in + ΔT with the thermal effect, else T_in, °C.
+    /// Where the viscosity is taken, °C: with the thermal effect the THD mean temperature
+    /// (model `jang_khonsari`) or T_in + ΔT (`adiabatic_rise`); else T_in.
     pub effective_temperature_c: f64,
-    /// Estimated maximum film temperature T_in + 2 ΔT, °C (Khonsari & Booser §7.3).
+    /// Estimated maximum film temperature, °C: Jang & Khonsari's fit where it applies, else
+    /// T_in + 2ΔT (Khonsari & Booser §7.3).
     pub max_temperature_c: f64,
     /// μ at the effective temperature, Pa·s.
     pub effective_viscosity_pa_s: f64,

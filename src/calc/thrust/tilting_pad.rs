@@ -155,6 +155,7 @@ impl Calculation for TiltingPad {
             &eq.evaluated,
             eq.ratio,
             long_pad::mean_thickness(profile),
+            true,
             c,
         )?;
         ctx.record(&op.notes);
