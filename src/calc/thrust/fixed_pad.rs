@@ -6,12 +6,10 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::long_pad;
-use super::operating::{self, Conditions};
-use super::pad_spec::{
-    self, check_finite, check_viscosity, conditions, given, PadEffects, PadResult, PadSpec,
-};
-use super::performance::{self, evaluate, Method, RATIOS};
+use super::operating::Conditions;
+use super::pad;
+use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
+use super::performance::{Method, RATIOS};
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
@@ -246,45 +244,22 @@ impl Calculation for FixedPad {
     type Output = FixedPadOutput;
 
     fn run(case: Case, ctx: &mut Context) -> Result<FixedPadOutput, CalcError> {
-        let c = &case.conditions;
-        check_viscosity(c)?;
         let budget = ctx.budget();
-        let l_over_b = c.pad.l_over_b();
-        let (profile, searched) = if case.optimum_ratio {
-            let (ratio, evaluations) =
-                performance::optimum_ratio(case.profile, l_over_b, case.method, &budget)?;
-            (case.profile.with_ratio(ratio), Some(evaluations))
-        } else {
-            (case.profile, None)
-        };
-        let evaluated = evaluate(profile, l_over_b, case.method, &budget)?;
-        if case.method == Method::LongPad && l_over_b < 2.0 {
-            ctx.warn(
-                "long_pad_approximation",
-                format!("the infinitely long pad ignores side leakage, valid for L/B ≥ 2 (Khonsari & Booser §6.5); at L/B = {l_over_b:.3} it overestimates the load: use a numerical fidelity"),
-            );
-        }
-        let op = operating::operate(
-            &evaluated,
-            profile.ratio(),
-            long_pad::mean_thickness(profile),
-            matches!(profile, Profile::PlaneInclined { .. }),
-            c,
+        let solved = pad::fixed(
+            case.profile,
+            case.optimum_ratio,
+            case.method,
+            &case.conditions,
+            &budget,
         )?;
-        ctx.record(&op.notes);
-        let mut report = evaluated.report.clone();
-        if let Some(evaluations) = searched {
-            report.evaluations = Some(evaluations);
-        }
-        if !matches!(case.method, Method::LongPad) {
-            report = report.with_film_solves(budget.field_solves());
-        }
-        ctx.report(report);
-        let mid_plane = evaluated
+        ctx.record(&solved.operating.notes);
+        ctx.report(solved.report(case.method, &budget));
+        let mid_plane = solved
+            .evaluated
             .mid_plane
             .as_deref()
             .filter(|_| case.include_field);
-        let pad = PadResult::new(&op, profile.ratio(), mid_plane);
+        let pad = PadResult::new(&solved.operating, solved.ratio, mid_plane);
         check_finite(&pad)?;
         Ok(FixedPadOutput { pad })
     }

@@ -3,6 +3,7 @@
 //! - `fixed_pad`: the `/v1/thrust-bearings/fixed-pad` room (request, response);
 //! - `tilting_pad`: the `/v1/thrust-bearings/tilting-pad` room; `pivot`: its equilibrium;
 //! - `pad_spec`: the wire parts every pad room shares (pad, effects, fidelity, result);
+//! - `pad`: one pad solved at its operating point (fixed, or tilting in equilibrium);
 //! - `operating`: a pad at its operating point, dimensional, effects decided;
 //! - `performance`: dimensionless performance by closed form or numerics, the optimum ratio;
 //! - `long_pad`: the infinitely long pad, exact;
@@ -14,6 +15,7 @@ pub mod film;
 pub mod fixed_pad;
 pub mod long_pad;
 pub mod operating;
+pub mod pad;
 pub mod pad_spec;
 pub mod performance;
 pub mod pivot;

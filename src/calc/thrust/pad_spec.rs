@@ -304,22 +304,6 @@ pub fn conditions(
     }
 }
 
-/// Refuse an inlet temperature where the lubricant's viscosity law has no value.
-pub fn check_viscosity(c: &Conditions) -> Result<(), CalcError> {
-    let mu = c.lubricant.viscosity_pa_s(c.inlet_temperature_c);
-    if mu.is_finite() && mu > 0.0 {
-        Ok(())
-    } else {
-        Err(CalcError::impossible(
-            "/inlet_temperature_c",
-            format!(
-                "the lubricant's viscosity law has no finite value at {} °C",
-                c.inlet_temperature_c
-            ),
-        ))
-    }
-}
-
 /// Refuse a result with a number outside the floating-point range (an extreme request).
 pub fn check_finite(result: &PadResult) -> Result<(), CalcError> {
     let numbers = [

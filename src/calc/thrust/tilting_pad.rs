@@ -7,13 +7,11 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::fixed_pad::OptimumKeyword;
-use super::long_pad;
-use super::operating::{self, Conditions};
-use super::pad_spec::{
-    self, check_finite, check_viscosity, conditions, given, PadEffects, PadResult, PadSpec,
-};
+use super::operating::Conditions;
+use super::pad;
+use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
 use super::performance::Method;
-use super::pivot::{equilibrium, Pivot};
+use super::pivot::Pivot;
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
@@ -146,42 +144,32 @@ impl Calculation for TiltingPad {
     type Output = TiltingPadOutput;
 
     fn run(case: Case, ctx: &mut Context) -> Result<TiltingPadOutput, CalcError> {
-        let c = &case.conditions;
-        check_viscosity(c)?;
         let budget = ctx.budget();
-        let eq = equilibrium(case.pivot, c.pad.l_over_b(), case.method, &budget)?;
-        let profile = Profile::PlaneInclined { ratio: eq.ratio };
-        let op = operating::operate(
-            &eq.evaluated,
-            eq.ratio,
-            long_pad::mean_thickness(profile),
-            true,
-            c,
-        )?;
-        ctx.record(&op.notes);
-        let mut report = eq.evaluated.report.clone();
-        report.evaluations = Some(eq.evaluations);
-        if !matches!(case.method, Method::LongPad) {
-            report = report.with_film_solves(budget.field_solves());
-        }
-        ctx.report(report);
-        let mid_plane = eq
+        let solved = pad::tilting(case.pivot, case.method, &case.conditions, &budget)?;
+        ctx.record(&solved.operating.notes);
+        ctx.report(solved.report(case.method, &budget));
+        let mid_plane = solved
             .evaluated
             .mid_plane
             .as_deref()
             .filter(|_| case.include_field);
-        let pad = PadResult::new(&op, eq.ratio, mid_plane);
-        check_finite(&pad)?;
-        let h2 = op.outlet_film_m;
+        let result = PadResult::new(&solved.operating, solved.ratio, mid_plane);
+        check_finite(&result)?;
+        let eq = solved
+            .equilibrium
+            .as_ref()
+            .expect("a tilting pad's equilibrium");
+        let h2 = solved.operating.outlet_film_m;
         // At a fixed load h2 ∝ √W̄, so dh2/da = h2 (dW̄/da)/(2 W̄).
         let per_pivot = 0.5 * h2 * eq.load_slope * eq.ratio_per_pivot;
+        let profile = Profile::PlaneInclined { ratio: eq.ratio };
         Ok(TiltingPadOutput {
             pivot_position_fraction: eq.pivot,
             pivot_film_m: h2 * profile.thickness(eq.pivot),
-            tilt_rad: (eq.ratio - 1.0) * h2 / c.pad.breadth_m,
+            tilt_rad: (eq.ratio - 1.0) * h2 / case.conditions.pad.breadth_m,
             film_ratio_per_pivot_fraction: eq.ratio_per_pivot,
             outlet_film_per_pivot_fraction_m: per_pivot,
-            pad,
+            pad: result,
         })
     }
 }
