@@ -27,6 +27,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<journal::plain::PlainJournal>().numerical(),
     Entry::of::<thrust::fixed_pad::FixedPad>().numerical(),
     Entry::of::<thrust::tilting_pad::TiltingPad>().numerical(),
+    Entry::of::<thrust::bearing::Bearing>().numerical(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl::film::EhlFilm>(),
     Entry::of::<contact::ehl::Ehl>().numerical(),
@@ -378,7 +379,8 @@ mod tests {
                 "/v1/journal-bearings/plain"
                 | "/v1/contacts/ehl"
                 | "/v1/thrust-bearings/fixed-pad"
-                | "/v1/thrust-bearings/tilting-pad" => Cost::Heavy,
+                | "/v1/thrust-bearings/tilting-pad"
+                | "/v1/thrust-bearings/bearing" => Cost::Heavy,
                 _ => Cost::Light,
             };
             assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);

@@ -10,6 +10,7 @@ use crate::helpers::spawn_app;
 
 const FIXED: &str = "/v1/thrust-bearings/fixed-pad";
 const TILTING: &str = "/v1/thrust-bearings/tilting-pad";
+const BEARING: &str = "/v1/thrust-bearings/bearing";
 
 fn run(path: &str, body: &Value) -> Result<Value, Failure> {
     let entry = find(path).expect("registered");
@@ -159,6 +160,72 @@ async fn the_examples_answer_over_http() {
         assert!((number(&r.body, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-12);
         assert!(r.body["solver"]["film_solves"].as_u64().unwrap() >= 2);
     }
+    let example: Value = serde_json::from_str(find(BEARING).unwrap().example).unwrap();
+    let r = app.post_json(BEARING, &example).await;
+    assert_eq!(r.status, 200, "{}", r.text);
+    let per_pad = number(&r.body, "/result/load_per_pad_n");
+    assert!((7.0 * per_pad / 111_200.0 - 1.0).abs() < 1e-12);
+    assert!((number(&r.body, "/result/pad/load_n") / per_pad - 1.0).abs() < 1e-12);
+    let power = number(&r.body, "/result/power_loss_w");
+    assert!((power / (7.0 * number(&r.body, "/result/pad/power_loss_w")) - 1.0).abs() < 1e-12);
+    assert_eq!(r.body["result"]["checks"].as_array().unwrap().len(), 4);
+    assert_eq!(r.body["result"]["checks_passed"], true);
+}
+
+#[test]
+fn bearing_requests_name_the_field() {
+    let base = json!({
+        "inner_radius_m": 0.073, "outer_radius_m": 0.16, "pad_count": 7,
+        "pads": {"kind": "tilting", "pivot_position_fraction": 0.6}, "speed_rpm": 3600,
+        "load_n": 111200, "lubricant": {"iso_vg": 32},
+    });
+    let with = |pointer: &str, value: Value| {
+        let mut b = base.clone();
+        let (parent, key) = pointer.rsplit_once('/').unwrap();
+        b.pointer_mut(parent).unwrap()[key] = value;
+        b
+    };
+    for (body, pointer) in [
+        (with("/inner_radius_m", json!(0.2)), "/inner_radius_m"),
+        (with("/pad_angle_deg", json!(60)), "/pad_angle_deg"),
+        (with("/pad_angle_deg", json!(1)), "/pad_angle_deg"),
+        (
+            with(
+                "/pads/profile",
+                json!({"kind": "parabolic", "film_ratio": 2}),
+            ),
+            "/pads/profile",
+        ),
+        (with("/pads", json!({"kind": "fixed"})), "/pads/profile"),
+        (
+            with(
+                "/pads",
+                json!({"kind": "fixed", "profile": {"kind": "step", "film_ratio": 2}}),
+            ),
+            "/pads/profile/step_position_fraction",
+        ),
+        (
+            with("/surface_roughness_ra_m", json!([1e-3, 0])),
+            "/surface_roughness_ra_m",
+        ),
+    ] {
+        match run(BEARING, &body) {
+            Err(Failure::Invalid(errors)) => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+    match run(BEARING, &with("/pads/pivot_position_fraction", json!(0.5))) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/pads/pivot_position_fraction")
+        }
+        other => panic!("{other:?}"),
+    }
+    // An overloaded bearing answers with its failed checks, not an error.
+    let v = run(BEARING, &with("/load_n", json!(2e6))).unwrap();
+    assert_eq!(v["result"]["checks_passed"], false);
 }
 
 #[test]

@@ -1,5 +1,6 @@
 //! Thrust and pad bearings (Khonsari & Booser ch. 6–7; Stachowiak & Batchelor ch. 4).
 //!
+//! - `bearing`: the `/v1/thrust-bearings/bearing` room; `sector`: its sectors and design rules;
 //! - `fixed_pad`: the `/v1/thrust-bearings/fixed-pad` room (request, response);
 //! - `tilting_pad`: the `/v1/thrust-bearings/tilting-pad` room; `pivot`: its equilibrium;
 //! - `pad_spec`: the wire parts every pad room shares (pad, effects, fidelity, result);
@@ -11,6 +12,7 @@
 //! - `thd`: Jang & Khonsari's THD temperature fits for a plane pad;
 //! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic).
 
+pub mod bearing;
 pub mod film;
 pub mod fixed_pad;
 pub mod long_pad;
@@ -20,5 +22,6 @@ pub mod pad_spec;
 pub mod performance;
 pub mod pivot;
 pub mod profile;
+pub mod sector;
 pub mod thd;
 pub mod tilting_pad;
