@@ -12,7 +12,8 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, CalcError, Calculation, Context, Validate, Warning,
+    contact, journal, lubricant, rolling, squeeze, CalcError, Calculation, Context, Validate,
+    Warning,
 };
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
@@ -35,6 +36,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::analysis::Analysis>(),
     Entry::of::<rolling::friction::Friction>(),
     Entry::of::<rolling::grease_life::GreaseLife>(),
+    Entry::of::<squeeze::plates::SqueezePlates>(),
 ];
 
 /// The calculation registered at `path`.
