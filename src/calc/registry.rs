@@ -37,6 +37,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::friction::Friction>(),
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
+    Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
 ];
 
 /// The calculation registered at `path`.

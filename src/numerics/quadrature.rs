@@ -63,21 +63,26 @@ const GAUSS_WEIGHTS: [f64; 4] = [
 ];
 
 /// When an adaptive integral is good enough: its estimated error at most
-/// max(`relative` |I|, `absolute`), within at most `max_panels` panels.
+/// max(`relative` |I|, `absolute`), within at most `max_bisections` bisections after the
+/// `initial_panels` equal panels it starts from (at least 1; more where the caller wants the
+/// running integral at their ends).
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Tolerance {
     pub relative: f64,
     pub absolute: f64,
-    pub max_panels: u32,
+    pub max_bisections: u32,
+    pub initial_panels: u32,
 }
 
-/// An adaptive integral: its value, the estimated absolute error, and the driver's report
-/// (iterations: panel bisections; evaluations: integrand calls).
+/// An adaptive integral: its value, the estimated absolute error, the panels it was summed
+/// over (a, b, ∫ₐᵇ f) in order of a, and the driver's report (iterations: panels built;
+/// evaluations: integrand calls).
 #[derive(Debug, Clone, PartialEq)]
 #[must_use]
 pub struct Integral {
     pub value: f64,
     pub error: f64,
+    pub panels: Vec<(f64, f64, f64)>,
     pub report: SolverReport,
 }
 
@@ -130,10 +135,11 @@ fn panel<E>(
     })
 }
 
-/// ∫ₐᵇ f by adaptive Gauss–Kronrod 7–15: start with one panel, then bisect the panel with the
-/// largest error estimate |K15 − G7| until the sum of the estimates meets `tolerance` (the
-/// estimate is conservative: K15 is far more accurate than G7 on a smooth panel). Each
-/// iteration is one bisection (30 evaluations), under the solver driver: the panel cap,
+/// ∫ₐᵇ f by adaptive Gauss–Kronrod 7–15: start with `initial_panels` equal panels, then bisect
+/// the panel with the largest error estimate |K15 − G7| until the sum of the estimates meets
+/// `tolerance` (the estimate is conservative: K15 is far more accurate than G7 on a smooth
+/// panel). The first iteration builds the initial panels (15 evaluations each), each later one
+/// is one bisection (30 evaluations), under the solver driver: the bisection cap,
 /// the deadline and a non-finite integrand stop it. Meant for integrands that cost a solve
 /// each (a film's load at one eccentricity): the error estimate says what the evaluations bought.
 pub fn adaptive_gauss_kronrod<E>(
@@ -148,12 +154,17 @@ pub fn adaptive_gauss_kronrod<E>(
     let driver = Driver::new(
         "adaptive_gauss_kronrod_7_15",
         IterationUnit::Evaluations,
-        tolerance.max_panels.max(1),
+        tolerance.max_bisections.saturating_add(1),
         budget,
     );
+    let initial = tolerance.initial_panels.max(1);
     let run = driver.run(|counter| {
         let step = if panels.is_empty() {
-            panel(&mut f, a, b, counter).map(|p| panels.push(p))
+            (0..initial).try_for_each(|k| {
+                let at = |k: u32| a + (b - a) * f64::from(k) / f64::from(initial);
+                let end = if k + 1 == initial { b } else { at(k + 1) };
+                panel(&mut f, at(k), end, counter).map(|p| panels.push(p))
+            })
         } else {
             // Bisect the worst panel.
             let worst = panels
@@ -184,11 +195,17 @@ pub fn adaptive_gauss_kronrod<E>(
     });
     match (run, failure) {
         (_, Some(e)) => Err(IntegralError::Integrand(e)),
-        (Ok(done), None) => Ok(Integral {
-            value: done.value.0,
-            error: done.value.1,
-            report: done.report,
-        }),
+        (Ok(done), None) => {
+            let mut pieces: Vec<(f64, f64, f64)> =
+                panels.iter().map(|p| (p.a, p.b, p.value)).collect();
+            pieces.sort_by(|x, y| x.0.total_cmp(&y.0));
+            Ok(Integral {
+                value: done.value.0,
+                error: done.value.1,
+                panels: pieces,
+                report: done.report,
+            })
+        }
         (Err(stopped), None) => Err(IntegralError::Stopped(stopped)),
     }
 }
@@ -200,7 +217,8 @@ mod tests {
     const TIGHT: Tolerance = Tolerance {
         relative: 1e-12,
         absolute: 0.0,
-        max_panels: 200,
+        max_bisections: 200,
+        initial_panels: 1,
     };
 
     fn integrate(f: impl Fn(f64) -> f64, a: f64, b: f64, tol: Tolerance) -> Integral {
@@ -223,14 +241,30 @@ mod tests {
         assert!(((i.value - exact) / exact).abs() < 1e-11, "{}", i.value);
         assert!(i.error <= 1e-12 * exact);
         assert!(i.report.iterations > 1);
+        // The panels tile [0, 0.999] in order and sum to the value.
+        assert_eq!(
+            (i.panels[0].0, i.panels[i.panels.len() - 1].1),
+            (0.0, 0.999)
+        );
+        assert!(i.panels.windows(2).all(|w| w[0].1 == w[1].0));
+        let sum: f64 = i.panels.iter().map(|p| p.2).sum();
+        assert!(((sum - i.value) / i.value).abs() < 1e-14);
     }
 
     #[test]
     fn a_capped_run_and_a_failing_integrand_are_errors() {
         let tol = Tolerance {
-            max_panels: 2,
+            max_bisections: 2,
             ..TIGHT
         };
+        let started = Tolerance {
+            initial_panels: 7,
+            ..TIGHT
+        };
+        let i = integrate(|x| x.exp(), 0.0, 1.0, started);
+        assert_eq!(i.panels.len(), 7);
+        assert!((i.panels[3].0 - 3.0 / 7.0).abs() < 1e-16 && i.panels[6].1 == 1.0);
+        assert!((i.value - (1f64.exp() - 1.0)).abs() < 1e-14);
         let r = adaptive_gauss_kronrod(
             |x| Ok::<_, ()>((1.0 - x).powf(-1.5)),
             0.0,

@@ -192,7 +192,8 @@ impl Shape {
                 let tolerance = Tolerance {
                     relative: 1e-10,
                     absolute: 0.0,
-                    max_panels: 64,
+                    max_bisections: 64,
+                    initial_panels: 1,
                 };
                 let integral = quadrature::adaptive_gauss_kronrod(
                     |u: f64| {
