@@ -60,7 +60,12 @@ pub fn viscosity(
         ));
         return None;
     }
-    let mut assumptions = lubricant.assumptions;
+    // A squeeze film needs only the viscosity: an assumed density is no assumption of its.
+    let mut assumptions: Vec<_> = lubricant
+        .assumptions
+        .into_iter()
+        .filter(|(code, _)| *code != "density_assumed")
+        .collect();
     if lubricant.pour_point_c.is_some_and(|pour| t < pour) {
         assumptions.push((
             "below_pour_point",

@@ -40,7 +40,7 @@ pub enum Shape {
 const RECTANGLE_TERMS: usize = 40;
 
 /// ζ(5), for Σ_{n odd} 1/n⁵ = (31/32) ζ(5).
-const ZETA_5: f64 = 1.036_927_755_143_369_9;
+const ZETA_5: f64 = 1.036_927_755_143_37;
 
 impl Shape {
     /// The name on the wire.
