@@ -7,6 +7,7 @@
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
+//! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod admission;
@@ -17,3 +18,4 @@ mod limits;
 mod lubricants;
 mod reference_cases;
 mod service;
+mod squeeze;
