@@ -46,6 +46,16 @@ fn example_9_2_piston_pin_infinitely_long() {
 }
 
 #[test]
+fn example_9_4_quotes_the_long_bearings_180_degree_time() {
+    // Ex 9.4 compares its finite bearing with an infinitely long one taking "0.055 s"; the spec
+    // (E-5) reads that as a slip for Ex 9.2's 0.059 s, but it is the 180° (cavitated) long
+    // bearing's time for the same pin: 0.05515 s. Two printed figures, ±1 %.
+    let v = ok::<SqueezeJournal>(&piston_pin("cavitated", json!("closed_form")));
+    assert_rel(result_field(&v, "time_s"), 0.055, 0.01, "Δt 180°");
+    assert_eq!(v["result"]["approximation"], "long_180_film");
+}
+
+#[test]
 fn the_long_films_agree_with_table_9_2_and_each_other() {
     // At ε = 0 the 180° film carries half the 360° film's load (each half of the symmetric
     // full film carries half); the path's last time is the total.
