@@ -78,7 +78,7 @@ pub struct FiniteSqueeze {
     /// (ε, ∫_{ε₁}^{ε} W̄, W̄(ε)) at the quadrature's panel ends.
     pub path: Option<Vec<(f64, f64, f64)>>,
     /// The report: grid, panels, film solves, residual (the largest film residual), error
-    /// estimate (quadrature + discretisation at ε₂).
+    /// estimate (quadrature + discretisation at ε₂, from three meshes).
     pub report: SolverReport,
 }
 
@@ -144,10 +144,27 @@ pub fn squeeze(
     })?;
     let load_initial = load(eps1, mesh)?;
     let load_final = load(eps2, mesh)?;
-    // Discretisation: the half mesh at ε₂ (where the integrand is largest), second order.
-    let coarse = mesh.coarse();
-    let r = mesh.refinement_ratio();
-    let mesh_error = ((load_final - load(eps2, coarse)?) / ((r * r - 1.0) * load_final)).abs();
+    // Discretisation, at ε₂ (where the integrand is largest), second order: the half mesh's
+    // difference |W̄_h − W̄_2h|/(r² − 1), guarded against an accidental agreement of the pair by
+    // the quarter mesh's difference scaled to this mesh, |W̄_2h − W̄_4h|/((r² − 1) r²). A mesh
+    // too coarse to halve twice (or to halve across the length) is compared with the next
+    // finer one instead, (4/3)|W̄_h/2 − W̄_h|: its pair would miss the error it has.
+    let mesh_error = if mesh.coarse().coarse().circumferential >= 12 && mesh.halves_exactly() {
+        let (coarse, quarter) = (mesh.coarse(), mesh.coarse().coarse());
+        let w2 = load(eps2, coarse)?;
+        let w4 = load(eps2, quarter)?;
+        let r2 = mesh.refinement_ratio().powi(2);
+        ((load_final - w2) / (r2 - 1.0))
+            .abs()
+            .max(((w2 - w4) / ((r2 - 1.0) * r2)).abs())
+            / load_final
+    } else {
+        let finer = Mesh {
+            circumferential: 2 * mesh.circumferential,
+            axial_half: 2 * mesh.axial_half,
+        };
+        4.0 / 3.0 * ((load(eps2, finer)? - load_final) / load_final).abs()
+    };
     let path = if with_path {
         let mut points = vec![(eps1, 0.0, load_initial)];
         let mut sum = 0.0;
