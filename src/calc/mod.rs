@@ -6,6 +6,7 @@ pub mod journal;
 pub mod lubricant;
 pub mod quantity;
 pub mod rolling;
+pub mod squeeze;
 pub mod surface;
 pub mod thrust;
 

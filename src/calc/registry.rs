@@ -12,8 +12,8 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, thrust, CalcError, Calculation, Context, Validate,
-    Warning,
+    contact, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
+    Validate, Warning,
 };
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
@@ -39,6 +39,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::analysis::Analysis>(),
     Entry::of::<rolling::friction::Friction>(),
     Entry::of::<rolling::grease_life::GreaseLife>(),
+    Entry::of::<squeeze::plates::SqueezePlates>(),
+    Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
 ];
 
 /// The calculation registered at `path`.
@@ -58,10 +60,11 @@ pub enum Cost {
 
 /// How a calculation's requests are costed. Declared once per room, in [`REGISTRY`].
 ///
-/// Measured on the rooms' examples (release build): every room but two answers in under 0.5 ms,
-/// `/ehl-film` and `/hertz` at `standard` included; the plain journal takes 1 ms (`fast`) to
-/// 17 ms (`high`), seconds on fine explicit grids, and the numerical EHL 25 ms, unless the
-/// journal is asked for a closed form.
+/// Measured on the rooms' examples (release build): every room but three answers in under
+/// 0.5 ms, `/ehl-film` and `/hertz` at `standard` included; the plain journal takes 1 ms
+/// (`fast`) to 17 ms (`high`), seconds on fine explicit grids, the numerical EHL 25 ms, and the
+/// squeezed journal (the Ex 9.4 pin) 3 ms (`fast`), 29 ms (`standard`) and 170 ms (`high`),
+/// unless a journal is asked for a closed form.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum Costing {
     /// Every request is [`Cost::Light`].
@@ -378,6 +381,7 @@ mod tests {
             let want = match e.path {
                 "/v1/journal-bearings/plain"
                 | "/v1/contacts/ehl"
+                | "/v1/squeeze-films/journal"
                 | "/v1/thrust-bearings/fixed-pad"
                 | "/v1/thrust-bearings/tilting-pad"
                 | "/v1/thrust-bearings/bearing" => Cost::Heavy,

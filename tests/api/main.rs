@@ -8,6 +8,7 @@
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
 //! - `thrust`: thrust pads over their range: finite, conserving, balanced; errors that name the field.
+//! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod admission;
@@ -18,4 +19,5 @@ mod limits;
 mod lubricants;
 mod reference_cases;
 mod service;
+mod squeeze;
 mod thrust;

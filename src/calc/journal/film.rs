@@ -222,7 +222,7 @@ pub fn grid(mesh: Mesh, film: &Film) -> Grid {
         },
         width: if symmetric { 0.5 } else { 1.0 },
         symmetric,
-        periodic: film.physics.port().is_some(),
+        periodic: film.periodic(),
     }
 }
 
@@ -243,6 +243,12 @@ pub struct Film {
     /// Misalignment in the film frame: (ε′, direction of the tilt θ_δ from h_max); the film is
     /// then h̄ = 1 + A cos θ + B sin θ − ε′ (ȳ − ½) cos(θ − θ_δ) over the whole length ȳ ∈ [0, 1].
     pub tilt: Option<(f64, f64)>,
+    /// The journal turns: the wedge term 12π ∂θh̄ is in the equation (true for every
+    /// [`Film::steady`] film). False: a pure squeeze film (Khonsari & Booser §9.5–9.6), driven
+    /// by the rates alone; its pressure scale N_s is then the squeeze's own rate (with Ȧ = 1,
+    /// P̄ = p (C/R)²/(μ ε̇)). A pure squeeze film without cavitation has no feed line: it is
+    /// periodic round the circle (solved by [`reynolds::solve_full_film_sor`]).
+    pub rotating: bool,
 }
 
 /// What the film model includes beyond the isoviscous, laminar Reynolds equation.
@@ -376,7 +382,23 @@ impl Film {
             physics: FilmModel::REYNOLDS,
             span: None,
             tilt: None,
+            rotating: true,
         }
+    }
+
+    /// The wedge coefficient of Eq. 8.36: 12π for a turning journal, 0 for pure squeeze.
+    fn wedge(&self) -> f64 {
+        if self.rotating {
+            WEDGE
+        } else {
+            0.0
+        }
+    }
+
+    /// Whether the film closes on itself round the circle: fed through ports (mass-conserving),
+    /// or a pure squeeze film that keeps its negative pressures (no feed line).
+    fn periodic(&self) -> bool {
+        self.physics.port().is_some() || (!self.rotating && !self.physics.cavitation)
     }
     fn a(&self) -> f64 {
         self.eccentricity_ratio + self.cos_offset
@@ -520,7 +542,11 @@ pub fn solve(
     let mut p = start
         .filter(|s| s.len() == n)
         .unwrap_or_else(|| vec![0.0; n]);
-    let solved = reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?;
+    let solved = if g.periodic {
+        reynolds::solve_full_film_sor(&stencil, stencil.sor_factor(&g), &mut p, stop, budget)?
+    } else {
+        reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?
+    };
     Ok((integrate(&g, &p, &film, solved, None), p))
 }
 
@@ -549,7 +575,7 @@ fn assemble(film: &Film, g: &Grid, held: Option<&dyn Fn(f64, f64) -> bool>) -> S
             None
         },
         anisotropy: film.anisotropy(),
-        wedge: WEDGE,
+        wedge: film.wedge(),
         source: if moving { Some(&squeeze) } else { None },
         held,
     };
@@ -659,7 +685,7 @@ impl Response {
                 film: &dh,
                 conductance: Some(&dcond),
                 anisotropy: film.anisotropy(),
-                wedge: WEDGE,
+                wedge: film.wedge(),
                 source: None,
                 held: None,
             };

@@ -1,0 +1,397 @@
+//! `POST /v1/squeeze-films/journal`: a journal pressed into its bearing by a constant load
+//! without rotating (a piston pin, a bearing under a shock load): the time for the eccentricity
+//! ratio to grow from ε₁ to ε₂, the approach speeds and the films at both ends (Khonsari &
+//! Booser §9.5–9.6, Ex 9.2 and 9.4). `closed_form`: the infinitely long bearing (Table 9.2,
+//! 360° or 180° film); otherwise the finite bearing numerically ([`super::finite_journal`]).
+//!
+//! This file is the wire (request, validation, response); the physics is
+//! [`super::long_journal`] and [`super::finite_journal`].
+
+use serde::{Deserialize, Serialize};
+use utoipa::ToSchema;
+
+use super::finite_journal::{self, Numerical};
+use super::long_journal::{self, FilmExtent};
+use super::lubricant::{self, Viscosity};
+use crate::calc::journal::film::Mesh;
+use crate::calc::journal::plain::GeometrySpec;
+use crate::calc::lubricant::LubricantSpec;
+use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::effects::{Decision, Mode};
+use crate::fidelity::{FidelityRequest, Level, SolverReport};
+
+pub struct SqueezeJournal;
+
+/// Largest final eccentricity ratio: h_min = 0.001 C (as the journal room).
+const MAX_ECCENTRICITY: f64 = 0.999;
+/// Load range, N.
+const MAX_LOAD_N: f64 = 1e12;
+/// Samples of the closed form's path.
+const CLOSED_FORM_PATH_POINTS: usize = 21;
+
+/// The squeezed film.
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum SqueezeFilm {
+    /// Full 360° film, negative pressures kept (a film that cannot rupture: submerged at a
+    /// high ambient pressure).
+    Full,
+    /// Cavitated: the closing side only carries pressure (closed form: the 180° film of Table
+    /// 9.2; numerical: the Reynolds condition p ≥ 0, Table 9.3's "negative pressures clipped").
+    #[default]
+    Cavitated,
+}
+
+/// Request.
+#[derive(Debug, Clone, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct SqueezeJournalInput {
+    pub geometry: GeometrySpec,
+    pub lubricant: LubricantSpec,
+    /// Film temperature, °C (−273 … 1000): where the viscosity is taken; required unless the
+    /// lubricant has a constant `viscosity_pa_s`.
+    #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 65.6)]
+    pub temperature_c: Option<Celsius>,
+    /// Constant load W pressing the journal into the bearing, N (0 … 1e12).
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 5589.8)]
+    pub load_n: Positive,
+    /// Eccentricity ratio at the start ε₁ = e/C, dimensionless (0 … below the final one).
+    #[schema(minimum = 0.0, maximum = 0.999, example = 0.5)]
+    pub initial_eccentricity_ratio: f64,
+    /// Eccentricity ratio at the end ε₂, dimensionless (above the initial one, at most 0.999).
+    #[schema(minimum = 0.0, maximum = 0.999, example = 0.9)]
+    pub final_eccentricity_ratio: f64,
+    /// Journal speed, rev/min (≥ 0; default 0). Only 0 is modelled: squeeze with rotation
+    /// (Khonsari & Booser Ex 9.5) needs the two-dimensional force balance of a turning journal
+    /// and is answered with a 422 that says so.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 0.0, example = 0.0)]
+    pub speed_rpm: Option<NonNegative>,
+    /// `cavitated` (default) or `full`.
+    #[serde(default)]
+    pub film: SqueezeFilm,
+    /// `closed_form` (the infinitely long bearing, Table 9.2: no side leakage), `fast`,
+    /// `standard` (default), `high`, or `{"grid": [circumferential 16…1024 (even), half-length
+    /// axial 2…256], "tolerance": 1e-10…1e-2}` (the tolerance is the time quadrature's
+    /// relative one).
+    #[serde(default)]
+    pub fidelity: FidelityRequest,
+    /// Include the path: ε, time, approach speed, film and W̄ at the quadrature's panel ends
+    /// (numerical; one more film solve per point) or at 21 points (closed form).
+    #[serde(default)]
+    #[schema(example = false)]
+    pub include_field: bool,
+}
+
+/// How the squeeze is computed.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Method {
+    /// The infinitely long bearing.
+    Long,
+    Finite(Numerical),
+}
+
+/// The parsed request.
+#[derive(Debug, Clone, PartialEq)]
+pub struct SqueezeJournalCase {
+    pub diameter_m: f64,
+    pub length_m: f64,
+    pub radial_clearance_m: f64,
+    pub viscosity: Viscosity,
+    pub load_n: f64,
+    pub initial_eccentricity_ratio: f64,
+    pub final_eccentricity_ratio: f64,
+    pub film: FilmExtent,
+    pub method: Method,
+    pub include_field: bool,
+}
+
+impl Validate for SqueezeJournalInput {
+    type Valid = SqueezeJournalCase;
+    fn validate(self) -> Result<SqueezeJournalCase, Vec<FieldError>> {
+        let mut errors = Vec::new();
+        let g = self.geometry;
+        let (d, l, c) = (
+            g.diameter_m.get(),
+            g.length_m.get(),
+            g.radial_clearance_m.get(),
+        );
+        // The journal room's ranges.
+        if d > 10.0 {
+            errors.push(FieldError::new(
+                "/geometry/diameter_m",
+                "must be at most 10 m",
+            ));
+        }
+        let l_over_d = l / d;
+        if !(0.05..=5.0).contains(&l_over_d) {
+            errors.push(FieldError::new(
+                "/geometry/length_m",
+                format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),
+            ));
+        }
+        let r_over_c = 0.5 * d / c;
+        if !(50.0..=1e4).contains(&r_over_c) {
+            errors.push(FieldError::new(
+                "/geometry/radial_clearance_m",
+                format!("R/C must be within [50, 10000] (typical 500–1000), got {r_over_c:.1}"),
+            ));
+        }
+        let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
+        let load = self.load_n.get();
+        if load > MAX_LOAD_N {
+            errors.push(FieldError::new(
+                "/load_n",
+                format!("must be at most {MAX_LOAD_N:e} N"),
+            ));
+        }
+        let (e1, e2) = (
+            self.initial_eccentricity_ratio,
+            self.final_eccentricity_ratio,
+        );
+        if !(e1.is_finite() && (0.0..MAX_ECCENTRICITY).contains(&e1)) {
+            errors.push(FieldError::new(
+                "/initial_eccentricity_ratio",
+                format!("must be within [0, {MAX_ECCENTRICITY}), got {e1}"),
+            ));
+        }
+        if !(e2.is_finite() && e2 <= MAX_ECCENTRICITY) {
+            errors.push(FieldError::new(
+                "/final_eccentricity_ratio",
+                format!("must be at most {MAX_ECCENTRICITY} (ε ≥ 1 means the journal touches the bearing), got {e2}"),
+            ));
+        } else if e2 <= e1 {
+            errors.push(FieldError::new(
+                "/final_eccentricity_ratio",
+                "must exceed initial_eccentricity_ratio (the load closes the film)",
+            ));
+        }
+        if self.speed_rpm.is_some_and(|n| n.get() > 0.0) {
+            errors.push(FieldError::new(
+                "/speed_rpm",
+                "squeeze with rotation (Khonsari & Booser Ex 9.5) is not modelled: a turning journal's path needs the two-dimensional force balance (the load is not along the line of approach); give 0 or omit it for the pure squeeze",
+            ));
+        }
+        let method = match self.fidelity {
+            FidelityRequest::Level(Level::ClosedForm) => Some(Method::Long),
+            FidelityRequest::Level(level) => Some(Method::Finite(Numerical::at(level, None, None))),
+            FidelityRequest::Custom(custom) => {
+                if let Some([n, m]) = custom.grid {
+                    if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
+                        errors.push(FieldError::new(
+                            "/fidelity/grid",
+                            "must be [circumferential cells 16…1024 (even), half-length axial cells 2…256]",
+                        ));
+                    }
+                }
+                if let Some(t) = custom.tolerance {
+                    if !(1e-10..=1e-2).contains(&t) {
+                        errors.push(FieldError::new(
+                            "/fidelity/tolerance",
+                            "must be within [1e-10, 1e-2]",
+                        ));
+                    }
+                }
+                let mesh = custom.grid.map(|[n, m]| Mesh {
+                    circumferential: n as usize,
+                    axial_half: m as usize,
+                });
+                Some(Method::Finite(Numerical::at(
+                    Level::Standard,
+                    mesh,
+                    custom.tolerance,
+                )))
+            }
+        };
+        match (errors.is_empty(), viscosity, method) {
+            (true, Some(viscosity), Some(method)) => Ok(SqueezeJournalCase {
+                diameter_m: d,
+                length_m: l,
+                radial_clearance_m: c,
+                viscosity,
+                load_n: load,
+                initial_eccentricity_ratio: e1,
+                final_eccentricity_ratio: e2,
+                film: match self.film {
+                    SqueezeFilm::Full => FilmExtent::Full,
+                    SqueezeFilm::Cavitated => FilmExtent::Cavitated,
+                },
+                method,
+                include_field: self.include_field,
+            }),
+            _ => Err(errors),
+        }
+    }
+}
+
+/// One point of the squeeze's path.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct PathPoint {
+    /// ε, dimensionless.
+    pub eccentricity_ratio: f64,
+    /// Time since ε₁, s.
+    pub time_s: f64,
+    /// Approach speed V = C dε/dt, m/s.
+    pub approach_speed_m_s: f64,
+    /// h_min = C (1 − ε), m.
+    pub min_film_m: f64,
+    /// W̄ = W C³/(μ L R³ V), dimensionless.
+    pub load_coefficient: f64,
+}
+
+/// Result.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SqueezeJournalOutput {
+    /// Time for ε to grow from ε₁ to ε₂ under the load, s.
+    pub time_s: f64,
+    /// Approach speed V = C dε/dt at ε₁, m/s.
+    pub approach_speed_initial_m_s: f64,
+    /// Approach speed at ε₂, m/s.
+    pub approach_speed_final_m_s: f64,
+    /// h_min = C (1 − ε₁), m.
+    pub min_film_initial_m: f64,
+    /// h_min = C (1 − ε₂), m.
+    pub min_film_final_m: f64,
+    /// W̄ = W C³/(μ L R³ V) at ε₁ (Table 9.3's load coefficient), dimensionless.
+    pub load_coefficient_initial: f64,
+    /// W̄ at ε₂, dimensionless.
+    pub load_coefficient_final: f64,
+    /// Viscosity used, Pa·s.
+    pub viscosity_pa_s: f64,
+    /// The closed form at `fidelity: closed_form`: `long_360_full_film` or
+    /// `long_180_film`; absent for the numerical solution.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub approximation: Option<String>,
+    /// The path, with `include_field`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub path: Option<Vec<PathPoint>>,
+}
+
+impl Calculation for SqueezeJournal {
+    const PATH: &'static str = "/v1/squeeze-films/journal";
+    const SUMMARY: &'static str = "Squeeze film of a journal pressed into its bearing without rotation: time from ε₁ to ε₂, approach speeds, films (infinitely long or finite, full or cavitated)";
+    const DESCRIPTION: &'static str = include_str!("journal.md");
+    const FIDELITY: &'static [Level] =
+        &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
+    const EFFECTS: &'static [&'static str] = &["cavitation"];
+    const EXAMPLE: &'static str = r#"{"geometry": {"diameter_m": 0.0381, "length_m": 0.0381, "radial_clearance_m": 2.54e-5}, "lubricant": {"viscosity_pa_s": 0.014479}, "load_n": 5589.8, "initial_eccentricity_ratio": 0.5, "final_eccentricity_ratio": 0.9, "film": "cavitated", "fidelity": "fast"}"#;
+
+    type Input = SqueezeJournalInput;
+    type Output = SqueezeJournalOutput;
+
+    fn run(case: SqueezeJournalCase, ctx: &mut Context) -> Result<SqueezeJournalOutput, CalcError> {
+        for (code, message) in &case.viscosity.assumptions {
+            ctx.warn(code, message.clone());
+        }
+        let mu = case.viscosity.pa_s;
+        let (r, l, c, w) = (
+            0.5 * case.diameter_m,
+            case.length_m,
+            case.radial_clearance_m,
+            case.load_n,
+        );
+        let (e1, e2) = (
+            case.initial_eccentricity_ratio,
+            case.final_eccentricity_ratio,
+        );
+        // W = μ V L R³/C³ · W̄: V from W̄, and Δt = (μ L R³/(W C²)) ∫ W̄ dε.
+        let speed = |load_coefficient: f64| w * c.powi(3) / (mu * l * r.powi(3) * load_coefficient);
+        let time_scale = mu * l * r.powi(3) / (w * c * c);
+        let cavitated = case.film == FilmExtent::Cavitated;
+        let (integral, w1, w2, samples, approximation) = match case.method {
+            Method::Long => {
+                let extent = case.film;
+                let load_integral = |e: f64| long_journal::load_integral(e, extent);
+                let samples = case.include_field.then(|| {
+                    let (s1, s2) = (-(-e1).ln_1p(), -(-e2).ln_1p());
+                    (0..CLOSED_FORM_PATH_POINTS)
+                        .map(|k| {
+                            let s =
+                                s1 + (s2 - s1) * k as f64 / (CLOSED_FORM_PATH_POINTS - 1) as f64;
+                            let e = if k + 1 == CLOSED_FORM_PATH_POINTS {
+                                e2
+                            } else {
+                                -(-s).exp_m1()
+                            };
+                            (
+                                e,
+                                load_integral(e) - load_integral(e1),
+                                long_journal::load_coefficient(e, extent),
+                            )
+                        })
+                        .collect::<Vec<_>>()
+                });
+                ctx.report(SolverReport::closed_form("closed_form"));
+                (
+                    load_integral(e2) - load_integral(e1),
+                    long_journal::load_coefficient(e1, extent),
+                    long_journal::load_coefficient(e2, extent),
+                    samples,
+                    Some(if cavitated {
+                        "long_180_film"
+                    } else {
+                        "long_360_full_film"
+                    }),
+                )
+            }
+            Method::Finite(numerical) => {
+                let s = finite_journal::squeeze(
+                    e1,
+                    e2,
+                    l / case.diameter_m,
+                    case.film,
+                    numerical,
+                    case.include_field,
+                    &ctx.budget(),
+                )?;
+                ctx.report(s.report);
+                (s.load_integral, s.load_initial, s.load_final, s.path, None)
+            }
+        };
+        // The film is the request's choice (`film`), not a criterion's: reported as on or off.
+        ctx.decide(
+            "cavitation",
+            Decision {
+                applied: cavitated,
+                mode: if cavitated { Mode::On } else { Mode::Off },
+                reason: if cavitated {
+                    "film: cavitated — the opening side holds no tension (p ≥ 0)".into()
+                } else {
+                    "film: full — negative pressures kept on the opening side".into()
+                },
+                criterion: None,
+                model: cavitated.then_some(match case.method {
+                    Method::Long => "half_film",
+                    Method::Finite(_) => "reynolds",
+                }),
+            },
+        );
+        Ok(SqueezeJournalOutput {
+            time_s: time_scale * integral,
+            approach_speed_initial_m_s: speed(w1),
+            approach_speed_final_m_s: speed(w2),
+            min_film_initial_m: c * (1.0 - e1),
+            min_film_final_m: c * (1.0 - e2),
+            load_coefficient_initial: w1,
+            load_coefficient_final: w2,
+            viscosity_pa_s: mu,
+            approximation: approximation.map(String::from),
+            path: samples.map(|points| {
+                points
+                    .into_iter()
+                    .map(|(e, partial, wbar)| PathPoint {
+                        eccentricity_ratio: e,
+                        time_s: time_scale * partial,
+                        approach_speed_m_s: speed(wbar),
+                        min_film_m: c * (1.0 - e),
+                        load_coefficient: wbar,
+                    })
+                    .collect()
+            }),
+        })
+    }
+}
+
+#[cfg(test)]
+#[path = "journal_tests.rs"]
+mod tests;

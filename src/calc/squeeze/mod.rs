@@ -1,0 +1,15 @@
+//! Squeeze films (Khonsari & Booser ch. 9; spec khonsari-booser-ch9-17 SQ-0 to SQ-7).
+//!
+//! - `plates`: the `/v1/squeeze-films/plates` room (wire); `shapes`: its model — plates, a
+//!   sphere and a cylinder approaching a flat, closed forms;
+//! - `journal`: the `/v1/squeeze-films/journal` room (wire); its models `long_journal` (the
+//!   infinitely long bearing, closed forms) and `finite_journal` (the finite bearing: the
+//!   journal room's numerical film, squeezed, and the time by quadrature);
+//! - `lubricant`: the viscosity both rooms take from the shared `lubricant` object.
+
+pub mod finite_journal;
+pub mod journal;
+pub mod long_journal;
+mod lubricant;
+pub mod plates;
+pub mod shapes;

@@ -1,0 +1,90 @@
+//! Squeeze films over HTTP: the 422s that name an under- or over-determined request, and the
+//! squeezed journal over its whole valid range (finite, monotone, converged or a 422 with the
+//! reason — never a 500).
+
+use proptest::prelude::*;
+use serde_json::{json, Value};
+use stribeck::calc::{find, Failure};
+
+use crate::helpers::{assert_all_finite, spawn_app};
+
+const PLATES: &str = "/v1/squeeze-films/plates";
+const JOURNAL: &str = "/v1/squeeze-films/journal";
+
+#[tokio::test]
+async fn under_and_over_determined_plates_are_422s_naming_the_fields() {
+    let app = spawn_app().await;
+    let disk = json!({"kind": "circular_disk", "radius_m": 0.05});
+    let rows = [
+        (
+            json!({"shape": disk, "lubricant": {"viscosity_pa_s": 0.01}, "approach_speed_m_s": 0.01}),
+            vec!["/film_m"],
+        ),
+        (
+            json!({"shape": disk, "lubricant": {"viscosity_pa_s": 0.01}, "approach_speed_m_s": 0.01, "film_m": 1e-5, "initial_film_m": 2e-5}),
+            vec!["/approach_speed_m_s", "/film_m", "/initial_film_m"],
+        ),
+    ];
+    for (body, want) in rows {
+        let reply = app.post_json(PLATES, &body).await;
+        assert_eq!(reply.status, 422, "{}", reply.text);
+        assert!(reply.content_type.starts_with("application/problem+json"));
+        let got: Vec<&str> = reply.body["errors"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|e| e["pointer"].as_str().unwrap())
+            .collect();
+        assert_eq!(got, want, "{}", reply.text);
+    }
+    let reply = app
+        .post_json(
+            JOURNAL,
+            &json!({"geometry": {"diameter_m": 0.04, "length_m": 0.04, "radial_clearance_m": 2e-5},
+                    "lubricant": {"viscosity_pa_s": 0.01}, "load_n": 1000.0,
+                    "initial_eccentricity_ratio": 0.2, "final_eccentricity_ratio": 0.8,
+                    "speed_rpm": 200.0}),
+        )
+        .await;
+    assert_eq!(reply.status, 422, "{}", reply.text);
+    assert!(reply.text.contains("rotation"), "{}", reply.text);
+}
+
+fn run(body: &Value) -> Result<Value, Failure> {
+    let entry = find(JOURNAL).expect("registered");
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(120);
+    (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())
+        .map(|done| serde_json::from_slice(&done.body).unwrap())
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// L/D over the journal room's range, ε₁ from 0, ε₂ up to 0.999, both films, the closed
+    /// form and the `fast` film: every answer is finite, the time grows with ε₂ and the
+    /// approach slows down as the film closes.
+    #[test]
+    fn squeeze_times_are_finite_and_grow_towards_contact(
+        l_over_d in 0.05..5.0f64,
+        e1 in 0.0..0.95f64,
+        reach in 0.05..1.0f64,
+        full in any::<bool>(),
+        closed in any::<bool>(),
+    ) {
+        let e2 = e1 + reach * (0.999 - e1);
+        let body = |e2: f64| json!({
+            "geometry": {"diameter_m": 0.05, "length_m": 0.05 * l_over_d, "radial_clearance_m": 5e-5},
+            "lubricant": {"viscosity_pa_s": 0.02}, "load_n": 2000.0,
+            "initial_eccentricity_ratio": e1, "final_eccentricity_ratio": e2,
+            "film": if full { "full" } else { "cavitated" },
+            "fidelity": if closed { "closed_form" } else { "fast" }
+        });
+        let near = run(&body(e1 + 0.5 * (e2 - e1))).unwrap();
+        let far = run(&body(e2)).unwrap();
+        assert_all_finite(&far, "");
+        let t = |v: &Value| v["result"]["time_s"].as_f64().unwrap();
+        prop_assert!(t(&near) > 0.0 && t(&far) > t(&near), "{} {}", t(&near), t(&far));
+        let speed = |k: &str| far["result"][k].as_f64().unwrap();
+        prop_assert!(speed("approach_speed_final_m_s") < speed("approach_speed_initial_m_s"));
+    }
+}
