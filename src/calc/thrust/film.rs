@@ -13,7 +13,7 @@
 //! the start of a land sits on a node: the finite volumes on either side then carry their own
 //! h̄ and the 1-D part of the solution is exact.
 
-use super::performance::Performance;
+use super::coefficients::Performance;
 use super::profile::Profile;
 use crate::calc::Budget;
 use crate::numerics::interpolate::Parabola;

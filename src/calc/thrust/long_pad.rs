@@ -17,7 +17,7 @@
 
 use std::sync::OnceLock;
 
-use super::performance::Performance;
+use super::coefficients::Performance;
 use super::profile::Profile;
 use crate::numerics::quadrature::gauss_legendre;
 

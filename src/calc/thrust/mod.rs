@@ -6,6 +6,7 @@
 //! - `pad_spec`: the wire parts every pad room shares (pad, effects, fidelity, result);
 //! - `pad`: one pad solved at its operating point (fixed, or tilting in equilibrium);
 //! - `operating`: a pad at its operating point, dimensional, effects decided;
+//! - `coefficients`: a pad's dimensionless performance (W̄, F̄, flows, x_cp, P̄_max);
 //! - `performance`: dimensionless performance by closed form or numerics, the optimum ratio;
 //! - `long_pad`: the infinitely long pad, exact;
 //! - `film`: the finite pad's numerical film (finite-volume Reynolds, exact active-set solve);
@@ -13,6 +14,7 @@
 //! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic).
 
 pub mod bearing;
+pub mod coefficients;
 pub mod film;
 pub mod fixed_pad;
 pub mod long_pad;
