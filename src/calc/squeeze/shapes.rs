@@ -148,11 +148,7 @@ impl Shape {
             Shape::Annulus {
                 inner_radius: ri,
                 outer_radius: ro,
-            } => {
-                let span = (ro / ri).ln();
-                let r2 = (ro * ro - ri * ri) / (2.0 * span);
-                3.0 / h3 * (ro * ro - r2 - (ro * ro - ri * ri) * (ro * ro / r2).ln() / (2.0 * span))
-            }
+            } => 3.0 * ro * ro / h3 * annulus_peak_shape(ri, ro),
             Shape::Rectangle { length, width } => {
                 let (short, long) = (length.min(width), length.max(width));
                 let aspect = long / short;
@@ -251,4 +247,76 @@ pub fn rectangle_series(ratio: f64) -> f64 {
         })
         .sum();
     PI.powi(4) / 192.0 - ratio / PI * (31.0 / 32.0 * ZETA_5 - tail)
+}
+
+/// The annulus's peak pressure over 3μV R_o²/h³, in δ = (R_o − R_i)/R_o: with
+/// u = r*²/R_o² = s/(2Λ), s = 1 − (R_i/R_o)² = δ(2 − δ), Λ = ln(R_o/R_i) = −ln(1 − δ), it is
+/// 1 − u + u ln u = f(e), e = 1 − u. For a narrow ring both e and f cancel away their leading
+/// terms, so they are summed from their series there: 2Λ − s = 2δ² + Σ_{k≥3} 2δᵏ/k and
+/// f(e) = Σ_{k≥2} eᵏ/(k(k − 1)) (the strip's limit, f → δ²/2: p_max = (3/2) μ V w²/h³).
+fn annulus_peak_shape(inner: f64, outer: f64) -> f64 {
+    const SERIES_BELOW: f64 = 1e-3;
+    let delta = (outer - inner) / outer;
+    let s = delta * (2.0 - delta);
+    let two_span = if delta < 0.5 {
+        -2.0 * (-delta).ln_1p()
+    } else {
+        2.0 * (outer / inner).ln()
+    };
+    let u = s / two_span;
+    if u < 0.5 {
+        // A wide ring (u → 0 as the hole closes: the disk's 1).
+        return 1.0 - u + if u > 0.0 { u * u.ln() } else { 0.0 };
+    }
+    let excess = if delta < SERIES_BELOW {
+        2.0 * delta * delta + (3..12).map(|k| 2.0 * delta.powi(k) / k as f64).sum::<f64>()
+    } else {
+        two_span - s
+    };
+    let e = excess / two_span;
+    if e < SERIES_BELOW {
+        (2..12).map(|k| e.powi(k) / (k * (k - 1)) as f64).sum()
+    } else {
+        e + (1.0 - e) * (-e).ln_1p()
+    }
+}
+
+#[cfg(test)]
+mod annulus_peak_tests {
+    use super::*;
+
+    #[test]
+    fn the_annulus_peak_is_smooth_from_a_wide_ring_to_a_thin_strip() {
+        // The closed form evaluated directly where it is well conditioned.
+        let direct = |delta: f64| {
+            let (ro, ri) = (1.0, 1.0 - delta);
+            let span = (ro / ri).ln();
+            let r2 = (ro * ro - ri * ri) / (2.0 * span);
+            1.0 - r2 - (ro * ro - ri * ri) * (ro * ro / r2).ln() / (2.0 * span)
+        };
+        for delta in [0.9, 0.5, 0.1, 0.01, 2e-3] {
+            let got = annulus_peak_shape(1.0 - delta, 1.0);
+            assert!((got / direct(delta) - 1.0).abs() < 1e-9, "δ = {delta}");
+        }
+        // A narrow ring is a strip of width w = δ R_o: f → δ²/2 (p_max = 1.5 μ V w²/h³).
+        for delta in [1e-4, 1e-7, 1e-10] {
+            // The δ the doubles hold (1 − δ rounds).
+            let delta = 1.0 - (1.0 - delta);
+            let got = annulus_peak_shape(1.0 - delta, 1.0);
+            assert!(
+                (got / (0.5 * delta * delta) - 1.0).abs() < 2.0 * delta,
+                "δ = {delta}: {got}"
+            );
+        }
+        // Continuous across the switch to the series.
+        let (below, above) = (
+            annulus_peak_shape(1.0 - 0.999e-3, 1.0),
+            annulus_peak_shape(1.0 - 1.001e-3, 1.0),
+        );
+        // A vanishing hole tends to the disk's 1, logarithmically: u = 1/(2 ln(R_o/R_i)).
+        let u = 1.0 / (2.0 * 1e300f64.ln());
+        let want = 1.0 - u + u * u.ln();
+        assert!((annulus_peak_shape(1e-300, 1.0) / want - 1.0).abs() < 1e-12);
+        assert!((above / below - (1.001f64 / 0.999).powi(2)).abs() < 1e-4);
+    }
 }

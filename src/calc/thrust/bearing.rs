@@ -251,7 +251,13 @@ impl Validate for BearingInput {
                 self.effects,
                 &mut errors,
             ),
-            Err(_) => None,
+            Err(_) => {
+                errors.push(FieldError::new(
+                    "/speed_rpm",
+                    format!("the runner speed at the mean radius underflows to {speed} m/s: the shaft must turn"),
+                ));
+                None
+            }
         };
         match conditions {
             Some(conditions) if errors.is_empty() => Ok(Case {

@@ -40,12 +40,20 @@ impl Mesh {
 }
 
 /// The grid: uniform along each smooth piece of the profile (a break on a node, the pieces'
-/// cells in proportion to their lengths, at least one each), uniform across.
-pub fn grid(mesh: Mesh, profile: Profile) -> Grid {
+/// cells in proportion to their lengths, at least one each), uniform across. With `halves` the
+/// grid is the fine one of a Richardson pair: its pieces have exactly twice the cells of
+/// [`Mesh::coarse`]'s, so both meshes put the break on a node and the spacing halves exactly.
+pub fn grid(mesh: Mesh, profile: Profile, halves: bool) -> Grid {
+    // Cells of the first piece on a mesh of n cells along.
+    let split = |n: usize, b: f64| ((n as f64 * b).round() as usize).clamp(1, n - 1);
     let x = match profile.breaks() {
         None => uniform(0.0, 1.0, mesh.along),
         Some(b) => {
-            let first = ((mesh.along as f64 * b).round() as usize).clamp(1, mesh.along - 1);
+            let first = if halves {
+                2 * split(mesh.along / 2, b)
+            } else {
+                split(mesh.along, b)
+            };
             let mut x = uniform(0.0, b, first);
             x.pop();
             x.extend(uniform(b, 1.0, mesh.along - first));
@@ -76,14 +84,16 @@ pub struct Field {
     pub mid_plane: Vec<(f64, f64)>,
 }
 
-/// Solve the pad `profile` of aspect L/B = `l_over_b` on `mesh`.
+/// Solve the pad `profile` of aspect L/B = `l_over_b` on `mesh` (`halves`: as the fine mesh
+/// of a Richardson pair, see [`grid`]).
 pub fn solve(
     profile: Profile,
     l_over_b: f64,
     mesh: Mesh,
+    halves: bool,
     budget: &Budget,
 ) -> Result<Field, SolveError> {
-    let g = grid(mesh, profile);
+    let g = grid(mesh, profile, halves);
     let stencil = assemble(profile, l_over_b, &g);
     // Start with every node free: a converging pad has no cavitated node, so one active-set
     // step solves it; a diverging part cavitates in the next steps.

@@ -258,16 +258,13 @@ pub fn operate(
     })
 }
 
-/// T with T = T_in + ΔT(T): ΔT falls as T rises (thinner oil, or a dearer heat capacity), so
-/// the root lies in [T_in, T_in + ΔT(T_in)]; none when it lies above
-/// [`MAX_FILM_TEMPERATURE_C`] (or the laws give no finite value on the way).
-fn effective_temperature(
-    t_in: f64,
-    isothermal_rise: f64,
-    rise: impl Fn(f64) -> f64,
-) -> Option<f64> {
+/// T with T = T_in + ΔT(T), where ΔT never exceeds `ceiling` (the adiabatic ΔT falls as T
+/// rises: thinner oil, a dearer heat capacity; Jang & Khonsari's mean rise may grow with T but
+/// is bounded by its constant term), so the root lies in [T_in, T_in + ceiling]; none when it
+/// lies above [`MAX_FILM_TEMPERATURE_C`] (or the laws give no finite value on the way).
+fn effective_temperature(t_in: f64, ceiling: f64, rise: impl Fn(f64) -> f64) -> Option<f64> {
     let g = |t: f64| t - t_in - rise(t);
-    let hi = t_in + isothermal_rise;
+    let hi = t_in + ceiling;
     if hi <= MAX_FILM_TEMPERATURE_C && g(hi) <= 0.0 {
         return Some(hi);
     }
@@ -295,7 +292,7 @@ fn jang_khonsari(
     let b_over_l = 1.0 / c.pad.l_over_b();
     let beta = -(lub.viscosity_pa_s(t_in + 0.5).ln() - lub.viscosity_pa_s(t_in - 0.5).ln());
     let fits = plane
-        && (thd::RATIOS.0..thd::RATIOS.1).contains(&ratio)
+        && (thd::RATIOS.0..=thd::RATIOS.1).contains(&ratio)
         && (thd::ASPECT_SPREAD.0..=thd::ASPECT_SPREAD.1).contains(&b_over_l)
         && beta.is_finite()
         && beta > 1e-6;

@@ -306,16 +306,31 @@ pub fn conditions(
 
 /// Refuse a result with a number outside the floating-point range (an extreme request).
 pub fn check_finite(result: &PadResult) -> Result<(), CalcError> {
+    let c = &result.coefficients;
     let numbers = [
         result.load_n,
         result.outlet_film_m,
+        result.inlet_film_m,
         result.friction_force_n,
+        result.friction_coefficient,
         result.power_loss_w,
+        result.center_of_pressure_fraction,
         result.max_pressure_pa,
+        result.max_pressure_position_fraction,
+        result.mean_pressure_pa,
         result.inlet_flow_m3_s,
+        result.side_flow_m3_s,
+        result.outlet_flow_m3_s,
         result.temperature_rise_k,
         result.effective_temperature_c,
+        result.max_temperature_c,
+        result.effective_viscosity_pa_s,
         result.reynolds_number,
+        c.load,
+        c.k_h,
+        c.k_f,
+        c.k_q,
+        c.k_s,
     ];
     if numbers.iter().all(|v| v.is_finite()) {
         Ok(())

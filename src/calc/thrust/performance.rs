@@ -10,6 +10,7 @@ use crate::calc::Budget;
 use crate::fidelity::{Level, SolverReport};
 use crate::numerics::optimise::brent_minimise;
 use crate::numerics::reynolds::SolveError;
+use crate::numerics::richardson::fine_error;
 
 /// How the performance is computed.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -85,15 +86,14 @@ pub fn evaluate(
             mesh,
             richardson,
         } => {
-            let fine = film::solve(profile, l_over_b, mesh, budget)?;
+            let fine = film::solve(profile, l_over_b, mesh, richardson, budget)?;
             let grid = vec![mesh.along as u32, mesh.across_half as u32];
             let mut report = fine.solved.report.clone().at(level).on_grid(grid);
             let (performance, error_estimate) = if richardson {
-                let coarse = film::solve(profile, l_over_b, mesh.coarse(), budget)?;
+                let coarse = film::solve(profile, l_over_b, mesh.coarse(), false, budget)?;
                 report.iterations += coarse.solved.report.iterations;
                 let best = fine.performance.extrapolated(&coarse.performance);
-                let error = (fine.performance.load - coarse.performance.load).abs()
-                    / 3.0
+                let error = fine_error(coarse.performance.load, fine.performance.load).abs()
                     / best.load.abs().max(f64::MIN_POSITIVE);
                 (best, Some(error))
             } else {

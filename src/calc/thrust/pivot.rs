@@ -15,8 +15,8 @@ use super::profile::Profile;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent, Stopping};
 
-/// The film ratios a pivoted pad may settle at.
-pub const PIVOT_RATIOS: (f64, f64) = (1.01, 20.0);
+/// The film ratios a pivoted pad may settle at: those of a fixed pad.
+pub const PIVOT_RATIOS: (f64, f64) = super::performance::RATIOS;
 
 /// Where the pivot is.
 #[derive(Debug, Clone, Copy, PartialEq)]

@@ -183,3 +183,41 @@ fn flows_balance_and_converge_at_second_order() {
         fine.error_estimate
     );
 }
+
+#[test]
+fn trailing_edge_flats_reproduce_table_7_3() {
+    // Khonsari & Booser Table 7.3 (Neale): a square pad, h1/h2 = 2, with a flat of 0–50 % of B
+    // at the trailing edge — the `tapered_land` profile. K_h rises by about 13 % at 10–20 %.
+    // Tolerances as Table 7.2's (the table's 3 digits): K_h, K_f 2 %, K_q 3 %.
+    let table = [
+        (0.0, 0.260, 0.727, 0.849),
+        (0.1, 0.283, 0.767, 0.827),
+        (0.2, 0.292, 0.801, 0.805),
+        (0.3, 0.294, 0.834, 0.782),
+        (0.4, 0.289, 0.866, 0.755),
+        (0.5, 0.277, 0.893, 0.725),
+    ];
+    for (flat, k_h, k_f, k_q) in table {
+        let profile = Profile::TaperedLand {
+            ratio: 2.0,
+            land_fraction: flat,
+        };
+        let got = evaluate(
+            profile,
+            1.0,
+            Method::level(Level::Standard),
+            &Budget::unlimited(),
+        )
+        .unwrap()
+        .performance;
+        let close = |what: &str, value: f64, want: f64, tolerance: f64| {
+            assert!(
+                (value / want - 1.0).abs() <= tolerance,
+                "{what} at {flat}: got {value:.4}, table {want}"
+            );
+        };
+        close("K_h", got.k_h(), k_h, 0.02);
+        close("K_f", got.friction, k_f, 0.02);
+        close("K_q", got.inlet_flow, k_q, 0.03);
+    }
+}
