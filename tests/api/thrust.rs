@@ -265,6 +265,7 @@ fn bad_requests_name_the_field() {
             "/fidelity/tolerance",
         ),
         (with("/fidelity", json!({"grid": [4, 4]})), "/fidelity/grid"),
+        (with("/profile/depth_m", json!(1e-5)), "/profile/film_ratio"),
     ];
     for (body, pointer) in cases {
         match run(FIXED, &body) {
@@ -274,6 +275,23 @@ fn bad_requests_name_the_field() {
             ),
             other => panic!("{pointer}: {other:?}"),
         }
+    }
+    // A machined depth: with the film given the ratio is 1 + depth/h2; a depth too shallow for
+    // the load is refused on the depth.
+    let mut depth = base.clone();
+    depth["profile"] = json!({"kind": "plane_inclined", "depth_m": 2e-5});
+    depth.as_object_mut().unwrap().remove("load_n");
+    depth["outlet_film_m"] = json!(1e-5);
+    let v = run(FIXED, &depth).unwrap();
+    assert!((number(&v, "/result/film_ratio") - 3.0).abs() < 1e-12);
+    depth.as_object_mut().unwrap().remove("outlet_film_m");
+    depth["load_n"] = json!(1e-3);
+    match run(FIXED, &depth) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/profile/depth_m");
+            assert!(message.contains("too shallow"), "{message}");
+        }
+        other => panic!("{other:?}"),
     }
     let central = json!({
         "pad": {"breadth_m": 0.1, "length_m": 0.1}, "pivot_position_fraction": 0.5,

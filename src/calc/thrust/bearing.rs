@@ -7,7 +7,7 @@ use utoipa::ToSchema;
 
 use super::fixed_pad::PadProfileSpec;
 use super::operating::Given;
-use super::pad::{self, SolvedPad};
+use super::pad::{self, RatioChoice, SolvedPad};
 use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult};
 use super::pivot::Pivot;
 use super::profile::Profile;
@@ -92,7 +92,10 @@ pub struct BearingInput {
 /// What the pads are.
 #[derive(Debug, Clone, Copy)]
 pub enum Pads {
-    Fixed { profile: Profile, optimum: bool },
+    Fixed {
+        profile: Profile,
+        ratio: RatioChoice,
+    },
     Tilting(Pivot),
 }
 
@@ -164,11 +167,11 @@ impl Validate for BearingInput {
                     match self.pads.profile {
                         Some(p) => {
                             let mut inner = Vec::new();
-                            let (profile, optimum) = p.parse(&mut inner);
+                            let (profile, ratio) = p.parse(&mut inner);
                             errors.extend(inner.into_iter().map(|e| {
                                 FieldError::new(format!("/pads{}", e.pointer), e.message)
                             }));
-                            Pads::Fixed { profile, optimum }
+                            Pads::Fixed { profile, ratio }
                         }
                         None => {
                             errors.push(FieldError::new(
@@ -177,7 +180,7 @@ impl Validate for BearingInput {
                             ));
                             Pads::Fixed {
                                 profile: Profile::PlaneInclined { ratio: 2.0 },
-                                optimum: false,
+                                ratio: RatioChoice::Given,
                             }
                         }
                     }
@@ -351,9 +354,7 @@ impl Calculation for Bearing {
         let budget = ctx.budget();
         let c = &case.conditions;
         let solved = match case.pads {
-            Pads::Fixed { profile, optimum } => {
-                pad::fixed(profile, optimum, case.method, c, &budget)
-            }
+            Pads::Fixed { profile, ratio } => pad::fixed(profile, ratio, case.method, c, &budget),
             Pads::Tilting(pivot) => pad::tilting(pivot, case.method, c, &budget),
         }
         .map_err(per_pad_pointers)?;

@@ -7,7 +7,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::operating::Conditions;
-use super::pad;
+use super::pad::{self, RatioChoice};
 use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
 use super::performance::{Method, RATIOS};
 use super::profile::Profile;
@@ -58,9 +58,14 @@ pub enum OptimumKeyword {
 pub struct PadProfileSpec {
     pub kind: PadProfileKind,
     /// h1/h2 (1.01 … 10), or `"optimum"`: the ratio that maximises the load for the given h2
-    /// and the shape's other proportions.
+    /// and the shape's other proportions. Give this or `depth_m`.
     #[schema(example = 2.0)]
-    pub film_ratio: PadFilmRatio,
+    pub film_ratio: Option<PadFilmRatio>,
+    /// h1 − h2, m (1e-8 … 1e-2): the machined taper depth (or step height), instead of
+    /// `film_ratio`. The film ratio then follows from the film: 1 + depth/h2, found with the
+    /// load when the load is given (Khonsari & Booser §7.4's design iteration, Ex 7.1).
+    #[schema(minimum = 1e-8, maximum = 1e-2, example = 0.00015)]
+    pub depth_m: Option<f64>,
     /// `step`: the step's position, x/B from the leading edge (0.05 … 0.95; Archibald's
     /// optimum for a square pad 0.55, the long pad's 0.718).
     #[schema(minimum = 0.05, maximum = 0.95, example = 0.55)]
@@ -72,19 +77,38 @@ pub struct PadProfileSpec {
 }
 
 impl PadProfileSpec {
-    /// The shape (with the ratio 2 standing in for `"optimum"`) and whether the ratio is to be
-    /// optimised.
-    pub fn parse(self, errors: &mut Vec<FieldError>) -> (Profile, bool) {
-        let (ratio, optimum) = match self.film_ratio {
-            PadFilmRatio::Value(r) if (RATIOS.0..=RATIOS.1).contains(&r) => (r, false),
-            PadFilmRatio::Value(r) => {
+    /// The shape (with the ratio 2 standing in until a search or the film fixes it) and how its
+    /// film ratio is chosen.
+    pub fn parse(self, errors: &mut Vec<FieldError>) -> (Profile, RatioChoice) {
+        let (ratio, choice) = match (self.film_ratio, self.depth_m) {
+            (Some(PadFilmRatio::Value(r)), None) if (RATIOS.0..=RATIOS.1).contains(&r) => {
+                (r, RatioChoice::Given)
+            }
+            (Some(PadFilmRatio::Value(r)), None) => {
                 errors.push(FieldError::new(
                     "/profile/film_ratio",
                     format!("must be within [1.01, 10] or \"optimum\", got {r}"),
                 ));
-                (2.0, false)
+                (2.0, RatioChoice::Given)
             }
-            PadFilmRatio::Optimum(_) => (2.0, true),
+            (Some(PadFilmRatio::Optimum(_)), None) => (2.0, RatioChoice::Optimum),
+            (None, Some(d)) if d.is_finite() && (1e-8..=1e-2).contains(&d) => {
+                (2.0, RatioChoice::Depth(d))
+            }
+            (None, Some(d)) => {
+                errors.push(FieldError::new(
+                    "/profile/depth_m",
+                    format!("must be within [1e-8, 1e-2] m, got {d}"),
+                ));
+                (2.0, RatioChoice::Given)
+            }
+            _ => {
+                errors.push(FieldError::new(
+                    "/profile/film_ratio",
+                    "give exactly one of film_ratio and depth_m",
+                ));
+                (2.0, RatioChoice::Given)
+            }
         };
         let mut fraction = |name: &str, value: Option<f64>, range: (f64, f64), needed: bool| {
             let pointer = format!("/profile/{name}");
@@ -138,7 +162,7 @@ impl PadProfileSpec {
             },
             PadProfileKind::Parabolic => Profile::Parabolic { ratio },
         };
-        (profile, optimum)
+        (profile, choice)
     }
 }
 
@@ -188,7 +212,7 @@ pub struct FixedPadInput {
 pub struct Case {
     pub conditions: Conditions,
     pub profile: Profile,
-    pub optimum_ratio: bool,
+    pub ratio: RatioChoice,
     pub method: Method,
     pub include_field: bool,
 }
@@ -198,7 +222,7 @@ impl Validate for FixedPadInput {
     fn validate(self) -> Result<Case, Vec<FieldError>> {
         let mut errors = Vec::new();
         let pad = self.pad.parse(&mut errors);
-        let (profile, optimum_ratio) = self.profile.parse(&mut errors);
+        let (profile, ratio) = self.profile.parse(&mut errors);
         let given = given(self.outlet_film_m, self.load_n, true, &mut errors);
         let method = pad_spec::method(self.fidelity, &mut errors);
         let conditions = conditions(
@@ -214,7 +238,7 @@ impl Validate for FixedPadInput {
             Some(conditions) if errors.is_empty() => Ok(Case {
                 conditions,
                 profile,
-                optimum_ratio,
+                ratio,
                 method,
                 include_field: self.include_field,
             }),
@@ -247,7 +271,7 @@ impl Calculation for FixedPad {
         let budget = ctx.budget();
         let solved = pad::fixed(
             case.profile,
-            case.optimum_ratio,
+            case.ratio,
             case.method,
             &case.conditions,
             &budget,

@@ -2,13 +2,17 @@
 //! asked) or a tilting pad's equilibrium, made dimensional with its effects decided. The pad
 //! rooms and the whole bearing share it.
 
+use std::cell::Cell;
+
 use super::long_pad;
-use super::operating::{self, Conditions, Operating};
-use super::performance::{self, evaluate, Evaluated, Method};
+use super::operating::{self, Conditions, Given, Operating};
+use super::performance::{self, evaluate, Evaluated, Method, RATIOS};
 use super::pivot::{equilibrium, Equilibrium, Pivot};
 use super::profile::Profile;
 use crate::calc::{Budget, CalcError};
-use crate::fidelity::SolverReport;
+use crate::fidelity::{IterationUnit, SolverReport};
+use crate::numerics::driver::{Driver, Verdict};
+use crate::numerics::roots::{brent, Stopping};
 
 /// A pad at its operating point.
 #[derive(Debug, Clone)]
@@ -53,22 +57,50 @@ fn check_viscosity(c: &Conditions) -> Result<(), CalcError> {
     }
 }
 
-/// A fixed pad of shape `profile` (its ratio optimised when `optimum`).
+/// How a fixed pad's film ratio is chosen.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum RatioChoice {
+    /// The profile's own ratio.
+    Given,
+    /// The ratio that maximises W̄.
+    Optimum,
+    /// A machined depth h1 − h2, m: the ratio is 1 + depth/h2.
+    Depth(f64),
+}
+
+/// A fixed pad of shape `profile`, its film ratio chosen by `choice`.
 pub fn fixed(
     profile: Profile,
-    optimum: bool,
+    choice: RatioChoice,
     method: Method,
     c: &Conditions,
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
     let l_over_b = c.pad.l_over_b();
-    let (profile, evaluations) = if optimum {
-        let (ratio, n) = performance::optimum_ratio(profile, l_over_b, method, budget)?;
-        (profile.with_ratio(ratio), Some(n))
-    } else {
-        (profile, None)
+    let (profile, evaluations) = match choice {
+        RatioChoice::Given => (profile, None),
+        RatioChoice::Optimum => {
+            let (ratio, n) = performance::optimum_ratio(profile, l_over_b, method, budget)?;
+            (profile.with_ratio(ratio), Some(n))
+        }
+        RatioChoice::Depth(depth) => match c.given {
+            Given::OutletFilm(h2) => (profile.with_ratio(depth_ratio(depth, h2)?), None),
+            Given::Load(_) => return with_depth(profile, depth, method, c, budget),
+        },
     };
+    at_ratio(profile, evaluations, method, c, budget)
+}
+
+/// The pad of a fixed `profile` ratio at its operating point.
+fn at_ratio(
+    profile: Profile,
+    evaluations: Option<u32>,
+    method: Method,
+    c: &Conditions,
+    budget: &Budget,
+) -> Result<SolvedPad, CalcError> {
+    let l_over_b = c.pad.l_over_b();
     let evaluated = evaluate(profile, l_over_b, method, budget)?;
     let plane = matches!(profile, Profile::PlaneInclined { .. });
     let mut operating = operating::operate(
@@ -86,6 +118,131 @@ pub fn fixed(
         equilibrium: None,
         evaluations,
     })
+}
+
+/// 1 + depth/h2, inside the film ratios a pad may have.
+fn depth_ratio(depth: f64, h2: f64) -> Result<f64, CalcError> {
+    let ratio = 1.0 + depth / h2;
+    if (RATIOS.0..=RATIOS.1).contains(&ratio) {
+        Ok(ratio)
+    } else {
+        Err(CalcError::impossible(
+            "/profile/depth_m",
+            format!("a depth of {depth:e} m over a film of {h2:e} m makes h1/h2 = {ratio:.4}, outside [1.01, 10]"),
+        ))
+    }
+}
+
+/// A pad of machined depth d under its load (Khonsari & Booser §7.4's iteration, solved): at
+/// viscosity μ the ratio a balances W̄(a) (a − 1)² = W d²/(μ U B² L) — h2 = d/(a − 1) carrying W —
+/// a root on a that rises monotonically; with the thermal effect the viscosity's temperature
+/// and the ratio are iterated to a fixed point under the driver (the film at μ(T_eff) must give
+/// back T_eff).
+fn with_depth(
+    profile: Profile,
+    depth: f64,
+    method: Method,
+    c: &Conditions,
+    budget: &Budget,
+) -> Result<SolvedPad, CalcError> {
+    let Given::Load(load) = c.given else {
+        unreachable!("with_depth is for a given load")
+    };
+    let (pad, u) = (c.pad, c.sliding_speed_m_s);
+    let l_over_b = pad.l_over_b();
+    let evaluations = Cell::new(0u32);
+    let ratio_at = |mu: f64| -> Result<f64, CalcError> {
+        let target = load * depth * depth / (mu * u * pad.breadth_m.powi(2) * pad.length_m);
+        let failure = Cell::new(None);
+        let balance = |a: f64| match evaluate(profile.with_ratio(a), l_over_b, method, budget) {
+            Ok(e) => {
+                evaluations.set(evaluations.get() + 1);
+                e.performance.load * (a - 1.0).powi(2) - target
+            }
+            Err(e) => {
+                failure.set(Some(e));
+                0.0
+            }
+        };
+        let (lo, hi) = RATIOS;
+        let (at_lo, at_hi) = (balance(lo), balance(hi));
+        if let Some(e) = failure.take() {
+            return Err(e.into());
+        }
+        if at_lo > 0.0 || at_hi < 0.0 {
+            let which = if at_lo > 0.0 {
+                "below 1.01: the depth is too shallow for so light a load"
+            } else {
+                "above 10: the depth is too deep for so heavy a load"
+            };
+            return Err(CalcError::impossible(
+                "/profile/depth_m",
+                format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
+            ));
+        }
+        let root = brent(
+            balance,
+            lo,
+            hi,
+            Stopping {
+                x_tolerance: 1e-10,
+                max_iterations: 100,
+            },
+        );
+        if let Some(e) = failure.take() {
+            return Err(e.into());
+        }
+        Ok(root
+            .map_err(|e| CalcError::from_root("thrust_depth_ratio", e))?
+            .x)
+    };
+    let lub = &c.lubricant;
+    let mut ratio = ratio_at(lub.viscosity_pa_s(c.inlet_temperature_c))?;
+    let mut failure = None;
+    let run = Driver::new(
+        "thrust_depth_temperature_fixed_point",
+        IterationUnit::Evaluations,
+        50,
+        budget,
+    )
+    .run(|_| {
+        let solved = match at_ratio(profile.with_ratio(ratio), None, method, c, budget) {
+            Ok(s) => s,
+            Err(e) => {
+                failure = Some(e);
+                return Verdict::Stalled(f64::NAN);
+            }
+        };
+        if !solved
+            .operating
+            .notes
+            .decisions
+            .iter()
+            .any(|(name, d)| *name == "thermal" && d.applied)
+        {
+            return Verdict::Converged(solved, 0.0);
+        }
+        let next = match ratio_at(lub.viscosity_pa_s(solved.operating.effective_temperature_c)) {
+            Ok(r) => r,
+            Err(e) => {
+                failure = Some(e);
+                return Verdict::Stalled(f64::NAN);
+            }
+        };
+        let change = (next - ratio).abs() / ratio;
+        ratio = next;
+        if change <= 1e-9 {
+            Verdict::Converged(solved, change)
+        } else {
+            Verdict::Continue(change)
+        }
+    });
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    let mut solved = run?.value;
+    solved.evaluations = Some(evaluations.get());
+    Ok(solved)
 }
 
 /// A plane pad tilting about `pivot`.
