@@ -27,6 +27,8 @@ pub struct SqueezeJournal;
 const MAX_ECCENTRICITY: f64 = 0.999;
 /// Load range, N.
 const MAX_LOAD_N: f64 = 1e12;
+/// Smallest load, N: below it the squeeze times leave the floating-point range.
+const MIN_LOAD_N: f64 = 1e-6;
 /// Samples of the closed form's path.
 const CLOSED_FORM_PATH_POINTS: usize = 21;
 
@@ -53,8 +55,8 @@ pub struct SqueezeJournalInput {
     /// lubricant has a constant `viscosity_pa_s`.
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 65.6)]
     pub temperature_c: Option<Celsius>,
-    /// Constant load W pressing the journal into the bearing, N (0 … 1e12).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 5589.8)]
+    /// Constant load W pressing the journal into the bearing, N (1e-6 … 1e12).
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e12, example = 5589.8)]
     pub load_n: Positive,
     /// Eccentricity ratio at the start ε₁ = e/C, dimensionless (0 … below the final one).
     #[schema(minimum = 0.0, maximum = 0.999, example = 0.5)]
@@ -139,10 +141,10 @@ impl Validate for SqueezeJournalInput {
         }
         let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let load = self.load_n.get();
-        if load > MAX_LOAD_N {
+        if !(MIN_LOAD_N..=MAX_LOAD_N).contains(&load) {
             errors.push(FieldError::new(
                 "/load_n",
-                format!("must be at most {MAX_LOAD_N:e} N"),
+                format!("must be within [{MIN_LOAD_N:e}, {MAX_LOAD_N:e}] N, got {load}"),
             ));
         }
         let (e1, e2) = (
@@ -366,8 +368,18 @@ impl Calculation for SqueezeJournal {
                 }),
             },
         );
+        let time = time_scale * integral;
+        if ![time, speed(w1), speed(w2), time_scale]
+            .iter()
+            .all(|v| v.is_finite() && *v > 0.0)
+        {
+            return Err(CalcError::impossible(
+                "",
+                "this combination of load, viscosity and geometry takes the squeeze time or the approach speeds outside the floating-point range",
+            ));
+        }
         Ok(SqueezeJournalOutput {
-            time_s: time_scale * integral,
+            time_s: time,
             approach_speed_initial_m_s: speed(w1),
             approach_speed_final_m_s: speed(w2),
             min_film_initial_m: c * (1.0 - e1),

@@ -28,6 +28,8 @@ const MAX_FILM_OVER_SIZE: f64 = 0.1;
 /// Largest approach speed, m/s, and load, N.
 const MAX_SPEED_M_S: f64 = 100.0;
 const MAX_LOAD_N: f64 = 1e12;
+/// Smallest load, N: below it the squeeze times leave the floating-point range.
+const MIN_LOAD_N: f64 = 1e-6;
 /// Smallest final-to-initial film ratio of a squeeze.
 const MIN_FILM_RATIO: f64 = 1e-6;
 
@@ -98,9 +100,9 @@ pub struct PlatesInput {
     /// `approach_speed_m_s`.
     #[schema(value_type = Option<f64>, minimum = 1e-10, maximum = 0.01, example = 2.5e-5)]
     pub film_m: Option<Positive>,
-    /// Constant load W pressing the surfaces together, N (0 … 1e12), with `initial_film_m`
+    /// Constant load W pressing the surfaces together, N (1e-6 … 1e12), with `initial_film_m`
     /// and `final_film_m`.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e12, example = 5462.0)]
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e12, example = 5462.0)]
     pub load_n: Option<Positive>,
     /// Film at the start of the squeeze h₁, m (1e-10 … 0.01, limits as `film_m`).
     #[schema(value_type = Option<f64>, minimum = 1e-10, maximum = 0.01, example = 2.5e-5)]
@@ -279,10 +281,13 @@ impl Validate for PlatesInput {
                 format!("must be at most {MAX_SPEED_M_S} m/s"),
             ));
         }
-        if self.load_n.is_some_and(|w| w.get() > MAX_LOAD_N) {
+        if self
+            .load_n
+            .is_some_and(|w| !(MIN_LOAD_N..=MAX_LOAD_N).contains(&w.get()))
+        {
             errors.push(FieldError::new(
                 "/load_n",
-                format!("must be at most {MAX_LOAD_N:e} N"),
+                format!("must be within [{MIN_LOAD_N:e}, {MAX_LOAD_N:e}] N"),
             ));
         }
         let speed_set = [
@@ -488,6 +493,21 @@ impl Calculation for SqueezePlates {
             }
         }
         ctx.report(report);
+        let numbers = [
+            Some(out.load_n),
+            out.max_pressure_pa,
+            out.time_s,
+            out.approach_speed_initial_m_s,
+            out.approach_speed_final_m_s,
+            out.max_pressure_initial_pa,
+            out.max_pressure_final_pa,
+        ];
+        if numbers.iter().flatten().any(|v| !v.is_finite()) {
+            return Err(CalcError::impossible(
+                "",
+                "this combination of inputs takes the result outside the floating-point range",
+            ));
+        }
         Ok(out)
     }
 }
