@@ -588,9 +588,15 @@ fn thrust_pads(out: &mut String) {
                 if bounded { "yes" } else { "no" },
             )
         };
+        let name = match level {
+            Level::ClosedForm => "closed_form",
+            Level::Fast => "fast",
+            Level::Standard => "standard (default)",
+            Level::High => "high",
+        };
         let _ = writeln!(
             out,
-            "| {level:?} | {grid} | {:.3} % | {:.2} % | {reported} | {holds} | {:.3} ms |",
+            "| {name} | {grid} | {:.3} % | {:.2} % | {reported} | {holds} | {:.3} ms |",
             100.0 * worst,
             100.0 * table_worst,
             times[times.len() / 2]
