@@ -176,7 +176,9 @@ impl Validate for SqueezeJournalInput {
         }
         let method = match self.fidelity {
             FidelityRequest::Level(Level::ClosedForm) => Some(Method::Long),
-            FidelityRequest::Level(level) => Some(Method::Finite(Numerical::at(level, None, None))),
+            FidelityRequest::Level(level) => {
+                Some(Method::Finite(Numerical::at(level, None, None, l_over_d)))
+            }
             FidelityRequest::Custom(custom) => {
                 if let Some([n, m]) = custom.grid {
                     if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
@@ -202,6 +204,7 @@ impl Validate for SqueezeJournalInput {
                     Level::Standard,
                     mesh,
                     custom.tolerance,
+                    l_over_d,
                 )))
             }
         };
