@@ -4,6 +4,14 @@
 
 use serde::Deserialize;
 
+/// Whether a ratio computed from two inputs lies in [lo, hi], allowing its last bits of
+/// rounding: L/D made from L = 5 × 0.0381 and D = 0.0381 is 5.000000000000001, and a request
+/// that sends exactly the limit must not be refused for it.
+pub fn ratio_within(value: f64, lo: f64, hi: f64) -> bool {
+    const SLACK: f64 = 1e-12;
+    value >= lo * (1.0 - SLACK) && value <= hi * (1.0 + SLACK)
+}
+
 /// A finite number > 0.
 #[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Deserialize)]
 #[serde(try_from = "f64")]
@@ -182,5 +190,19 @@ impl TryFrom<f64> for PoissonRatio {
                 "must be within (−1, 0.5] (isotropic elastic solid), got {v}"
             ))
         }
+    }
+}
+
+#[cfg(test)]
+mod ratio_tests {
+    use super::ratio_within;
+
+    #[test]
+    fn a_ratio_at_its_limit_passes_despite_rounding() {
+        assert!(ratio_within(5.0 * 0.0381 / 0.0381, 0.05, 5.0));
+        assert!(ratio_within(0.005 / 0.1, 0.05, 5.0));
+        assert!(!ratio_within(5.001, 0.05, 5.0));
+        assert!(!ratio_within(0.0499, 0.05, 5.0));
+        assert!(!ratio_within(f64::NAN, 0.05, 5.0));
     }
 }

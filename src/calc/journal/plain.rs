@@ -12,7 +12,7 @@ use super::film::Misalignment;
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::quantity::{ratio_within, Celsius, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
@@ -209,7 +209,7 @@ impl Validate for PlainInput {
             g.radial_clearance_m.get(),
         );
         let l_over_d = l / d;
-        if !(0.05..=5.0).contains(&l_over_d) {
+        if !ratio_within(l_over_d, 0.05, 5.0) {
             errors.push(FieldError::new(
                 "/geometry/length_m",
                 format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),

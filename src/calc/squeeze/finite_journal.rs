@@ -52,7 +52,14 @@ impl Numerical {
             Level::High => (192, 24, 1e-6),
             _ => (96, 12, 1e-4),
         };
-        let longer = l_over_d.max(1.0).sqrt().ceil() as usize;
+        // L/D is validated to at most 5; an invalid one (the request is refused anyway) must
+        // not overflow the count.
+        let l_over_d = if l_over_d.is_finite() {
+            l_over_d.clamp(1.0, 5.0)
+        } else {
+            1.0
+        };
+        let longer = l_over_d.sqrt().ceil() as usize;
         Numerical {
             level,
             mesh: mesh.unwrap_or(Mesh {

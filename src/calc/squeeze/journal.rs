@@ -16,7 +16,7 @@ use super::lubricant::{self, Viscosity};
 use crate::calc::journal::film::Mesh;
 use crate::calc::journal::plain::GeometrySpec;
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, NonNegative, Positive};
+use crate::calc::quantity::{ratio_within, Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
@@ -126,7 +126,7 @@ impl Validate for SqueezeJournalInput {
             ));
         }
         let l_over_d = l / d;
-        if !(0.05..=5.0).contains(&l_over_d) {
+        if !ratio_within(l_over_d, 0.05, 5.0) {
             errors.push(FieldError::new(
                 "/geometry/length_m",
                 format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),

@@ -14,7 +14,7 @@ use super::profile::Profile;
 use super::sector::{allowable_film_m, PadType, Sectors};
 use super::tilting_pad::PivotPosition;
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::quantity::{ratio_within, Celsius, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
@@ -149,7 +149,7 @@ impl Validate for BearingInput {
         };
         let pad = sectors.pad();
         let l_over_b = pad.l_over_b();
-        if !(0.1..=10.0).contains(&l_over_b) {
+        if !ratio_within(l_over_b, 0.1, 10.0) {
             errors.push(FieldError::new(
                 "/pad_angle_deg",
                 format!("each pad's L/B = (R2 − R1)/(R_m β) must be within [0.1, 10], got {l_over_b:.4}"),
@@ -262,6 +262,14 @@ impl Validate for BearingInput {
                 None
             }
         };
+        // The runner speed is the bearing's speed at the mean radius: its limit is the speed's.
+        for e in errors
+            .iter_mut()
+            .filter(|e| e.pointer == "/sliding_speed_m_s")
+        {
+            e.pointer = "/speed_rpm".to_owned();
+            e.message = format!("the runner speed at the mean radius {}", e.message);
+        }
         match conditions {
             Some(conditions) if errors.is_empty() => Ok(Case {
                 sectors,

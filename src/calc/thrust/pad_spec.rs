@@ -8,7 +8,7 @@ use super::film::Mesh;
 use super::operating::{Conditions, Effects, Given, Operating, Pad};
 use super::performance::Method;
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::quantity::{ratio_within, Celsius, Positive};
 use crate::calc::{CalcError, FieldError};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
@@ -40,7 +40,7 @@ impl PadSpec {
             }
         }
         let ratio = pad.l_over_b();
-        if !(0.1..=10.0).contains(&ratio) {
+        if !ratio_within(ratio, 0.1, 10.0) {
             errors.push(FieldError::new(
                 "/pad/length_m",
                 format!("L/B must be within [0.1, 10], got {ratio:.4}"),
