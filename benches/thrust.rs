@@ -1,7 +1,8 @@
 //! Thrust pads: the speed targets (release, one core).
 //! - a fixed pad at `standard`: under 2 ms;
 //! - a tilting-pad equilibrium at `standard`: under 20 ms;
-//! - a closed form (the infinitely long pad): under 20 µs.
+//! - a closed form (the infinitely long pad): under 20 µs;
+//! - a whole sector-pad bearing (the README's, tilting pads): under 50 ms.
 //!
 //! Each is the whole request through the room (parse, validate, physics, envelope).
 //! `cargo bench --bench thrust`.
@@ -41,6 +42,15 @@ fn thrust(c: &mut Criterion) {
             &format!(r#"{{{pad}, "pivot_position_fraction": 0.6, "fidelity": "{fidelity}"}}"#),
         );
     }
+    let bearing = stribeck::calc::find("/v1/thrust-bearings/bearing")
+        .unwrap()
+        .example;
+    request(
+        c,
+        "whole bearing, 7 tilting pads, thermal, standard",
+        "/v1/thrust-bearings/bearing",
+        bearing,
+    );
 }
 
 criterion_group!(benches, thrust);
