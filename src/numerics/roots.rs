@@ -54,8 +54,20 @@ pub fn brent(
     b: f64,
     stop: Stopping,
 ) -> Result<Root, RootError> {
+    let (fa, fb) = (f(a), f(b));
+    brent_bracketed(f, (a, fa), (b, fb), stop)
+}
+
+/// [`brent`] from a bracket whose ends the caller has already evaluated (f(a), f(b)), for a
+/// function that costs a solve: the ends are not evaluated again.
+pub fn brent_bracketed(
+    mut f: impl FnMut(f64) -> f64,
+    (a, fa): (f64, f64),
+    (b, fb): (f64, f64),
+    stop: Stopping,
+) -> Result<Root, RootError> {
     let (mut a, mut b) = (a, b);
-    let (mut fa, mut fb) = (f(a), f(b));
+    let (mut fa, mut fb) = (fa, fb);
     for (x, fx) in [(a, fa), (b, fb)] {
         if !fx.is_finite() {
             return Err(RootError::NonFinite { x });

@@ -12,7 +12,7 @@ use super::profile::Profile;
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::driver::{Driver, Verdict};
-use crate::numerics::roots::{brent, Stopping};
+use crate::numerics::roots::{brent_bracketed, Stopping};
 
 /// A pad at its operating point.
 #[derive(Debug, Clone)]
@@ -180,10 +180,10 @@ fn with_depth(
                 format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
             ));
         }
-        let root = brent(
+        let root = brent_bracketed(
             balance,
-            lo,
-            hi,
+            (lo, at_lo),
+            (hi, at_hi),
             Stopping {
                 x_tolerance: 1e-10,
                 max_iterations: 100,

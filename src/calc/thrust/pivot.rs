@@ -13,7 +13,7 @@ use std::cell::Cell;
 use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
 use super::profile::Profile;
 use crate::calc::{Budget, CalcError};
-use crate::numerics::roots::{brent, Stopping};
+use crate::numerics::roots::{brent_bracketed, Stopping};
 
 /// The film ratios a pivoted pad may settle at: those of a fixed pad.
 pub const PIVOT_RATIOS: (f64, f64) = super::performance::RATIOS;
@@ -79,7 +79,7 @@ pub fn equilibrium(
                 ));
             }
             let mut failure = None;
-            let root = brent(
+            let root = brent_bracketed(
                 |a| match at(a) {
                     Ok(e) => e.performance.center_of_pressure - x_p,
                     Err(e) => {
@@ -87,8 +87,8 @@ pub fn equilibrium(
                         0.0
                     }
                 },
-                lo,
-                hi,
+                (lo, x_lo - x_p),
+                (hi, x_hi - x_p),
                 Stopping {
                     x_tolerance: 1e-9,
                     max_iterations: 100,
