@@ -8,7 +8,7 @@ use utoipa::ToSchema;
 
 use super::eccentricity::EccentricityRatio;
 use super::feed_spec::{FeedKind, FeedSpec};
-use super::film::Misalignment;
+use super::film::{Mesh, Misalignment};
 use super::operating::{self, Case, Cavitation, CoefficientsMethod, Effects, Geometry, Solution};
 use super::performance::{Approximation, Method, MAX_ECCENTRICITY};
 use crate::calc::lubricant::LubricantSpec;
@@ -32,6 +32,22 @@ pub struct GeometrySpec {
     /// Radial clearance C, m (> 0; R/C from 50 to 10000, typically 500–1000).
     #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.0001)]
     pub radial_clearance_m: Positive,
+}
+
+/// A request's explicit journal grid `[circumferential cells 16…1024 (even), half-length
+/// axial cells 2…256]` as the film's mesh (the journal and the squeezed journal take the same).
+pub fn grid_mesh(grid: Option<[u32; 2]>, errors: &mut Vec<FieldError>) -> Option<Mesh> {
+    let [n, m] = grid?;
+    if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
+        errors.push(FieldError::new(
+            "/fidelity/grid",
+            "must be [circumferential cells 16…1024 (even), half-length axial cells 2…256]",
+        ));
+    }
+    Some(Mesh {
+        circumferential: n as usize,
+        axial_half: m as usize,
+    })
 }
 
 /// Which closed form `fidelity: closed_form` uses.
@@ -271,18 +287,7 @@ impl Validate for PlainInput {
             }
             FidelityRequest::Level(level) => Some(Method::numerical(level, None, None)),
             FidelityRequest::Custom(custom) => {
-                let mesh = custom.grid.map(|[n, m]| super::film::Mesh {
-                    circumferential: n as usize,
-                    axial_half: m as usize,
-                });
-                if let Some([n, m]) = custom.grid {
-                    if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
-                        errors.push(FieldError::new(
-                            "/fidelity/grid",
-                            "must be [circumferential cells 16…1024 (even), half-length axial cells 2…256]",
-                        ));
-                    }
-                }
+                let mesh = grid_mesh(custom.grid, &mut errors);
                 if let Some(t) = custom.tolerance {
                     if !(1e-14..=1e-3).contains(&t) {
                         errors.push(FieldError::new(

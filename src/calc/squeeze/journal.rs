@@ -13,8 +13,7 @@ use utoipa::ToSchema;
 use super::finite_journal::{self, Numerical};
 use super::long_journal::{self, FilmExtent};
 use super::lubricant::{self, Viscosity};
-use crate::calc::journal::film::Mesh;
-use crate::calc::journal::plain::GeometrySpec;
+use crate::calc::journal::plain::{grid_mesh, GeometrySpec};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{ratio_within, Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -180,14 +179,7 @@ impl Validate for SqueezeJournalInput {
                 Some(Method::Finite(Numerical::at(level, None, None, l_over_d)))
             }
             FidelityRequest::Custom(custom) => {
-                if let Some([n, m]) = custom.grid {
-                    if !(16..=1024).contains(&n) || n % 2 != 0 || !(2..=256).contains(&m) {
-                        errors.push(FieldError::new(
-                            "/fidelity/grid",
-                            "must be [circumferential cells 16…1024 (even), half-length axial cells 2…256]",
-                        ));
-                    }
-                }
+                let mesh = grid_mesh(custom.grid, &mut errors);
                 if let Some(t) = custom.tolerance {
                     if !(1e-10..=1e-2).contains(&t) {
                         errors.push(FieldError::new(
@@ -196,10 +188,6 @@ impl Validate for SqueezeJournalInput {
                         ));
                     }
                 }
-                let mesh = custom.grid.map(|[n, m]| Mesh {
-                    circumferential: n as usize,
-                    axial_half: m as usize,
-                });
                 Some(Method::Finite(Numerical::at(
                     Level::Standard,
                     mesh,

@@ -3,6 +3,7 @@
 //! properties over the valid range.
 
 use super::*;
+use crate::calc::journal::film::Mesh;
 use crate::calc::squeeze::finite_journal::load_coefficient;
 use crate::calc::testing::{assert_rel, invalid_pointers, ok, post, result_field};
 use crate::calc::Budget;
