@@ -12,7 +12,7 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
+    contact, gas, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
     Validate, Warning,
 };
 use crate::effects::Decision;
@@ -41,6 +41,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
 ];
 
 /// The calculation registered at `path`.

@@ -2,7 +2,11 @@
 //!
 //! - `gas_spec`: the shared `gas` object (viscosity, absolute ambient pressure, gas constant,
 //!   temperature, mean free path) and its parsed model [`Gas`], with the slip-flow decision.
+//! - `aerostatic_pad`: the `/v1/gas-bearings/aerostatic-pad` room (wire); `recess_pad`: its
+//!   model, the circular recessed pad's isothermal radial flow.
 
+pub mod aerostatic_pad;
 pub mod gas_spec;
+pub mod recess_pad;
 
 pub use gas_spec::{Gas, GasSpec, NamedGas};
