@@ -34,6 +34,39 @@ pub struct GeometrySpec {
     pub radial_clearance_m: Positive,
 }
 
+impl GeometrySpec {
+    /// D, L and C, with a 422 for each outside the journal room's ranges: D ≤ 10 m,
+    /// L/D within [0.05, 5], R/C within [50, 10000]. Every journal-shaped room takes these.
+    pub fn check(&self, errors: &mut Vec<FieldError>) -> (f64, f64, f64) {
+        let (d, l, c) = (
+            self.diameter_m.get(),
+            self.length_m.get(),
+            self.radial_clearance_m.get(),
+        );
+        if d > 10.0 {
+            errors.push(FieldError::new(
+                "/geometry/diameter_m",
+                "must be at most 10 m",
+            ));
+        }
+        let l_over_d = l / d;
+        if !ratio_within(l_over_d, 0.05, 5.0) {
+            errors.push(FieldError::new(
+                "/geometry/length_m",
+                format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),
+            ));
+        }
+        let r_over_c = 0.5 * d / c;
+        if !(50.0..=1e4).contains(&r_over_c) {
+            errors.push(FieldError::new(
+                "/geometry/radial_clearance_m",
+                format!("R/C must be within [50, 10000] (typical 500–1000), got {r_over_c:.1}"),
+            ));
+        }
+        (d, l, c)
+    }
+}
+
 /// A request's explicit journal grid `[circumferential cells 16…1024 (even), half-length
 /// axial cells 2…256]` as the film's mesh (the journal and the squeezed journal take the same).
 pub fn grid_mesh(grid: Option<[u32; 2]>, errors: &mut Vec<FieldError>) -> Option<Mesh> {
@@ -218,32 +251,8 @@ impl Validate for PlainInput {
     type Valid = Case;
     fn validate(self) -> Result<Case, Vec<FieldError>> {
         let mut errors = Vec::new();
-        let g = self.geometry;
-        let (d, l, c) = (
-            g.diameter_m.get(),
-            g.length_m.get(),
-            g.radial_clearance_m.get(),
-        );
+        let (d, l, c) = self.geometry.check(&mut errors);
         let l_over_d = l / d;
-        if !ratio_within(l_over_d, 0.05, 5.0) {
-            errors.push(FieldError::new(
-                "/geometry/length_m",
-                format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),
-            ));
-        }
-        let r_over_c = 0.5 * d / c;
-        if !(50.0..=1e4).contains(&r_over_c) {
-            errors.push(FieldError::new(
-                "/geometry/radial_clearance_m",
-                format!("R/C must be within [50, 10000] (typical 500–1000), got {r_over_c:.1}"),
-            ));
-        }
-        if d > 10.0 {
-            errors.push(FieldError::new(
-                "/geometry/diameter_m",
-                "must be at most 10 m",
-            ));
-        }
         if self.speed_rpm.get() > 1e6 {
             errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
         }

@@ -15,7 +15,7 @@ use super::long_journal::{self, FilmExtent};
 use super::lubricant::{self, Viscosity};
 use crate::calc::journal::plain::{grid_mesh, GeometrySpec};
 use crate::calc::lubricant::LubricantSpec;
-use crate::calc::quantity::{ratio_within, Celsius, NonNegative, Positive};
+use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Decision, Mode};
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
@@ -111,33 +111,8 @@ impl Validate for SqueezeJournalInput {
     type Valid = SqueezeJournalCase;
     fn validate(self) -> Result<SqueezeJournalCase, Vec<FieldError>> {
         let mut errors = Vec::new();
-        let g = self.geometry;
-        let (d, l, c) = (
-            g.diameter_m.get(),
-            g.length_m.get(),
-            g.radial_clearance_m.get(),
-        );
-        // The journal room's ranges.
-        if d > 10.0 {
-            errors.push(FieldError::new(
-                "/geometry/diameter_m",
-                "must be at most 10 m",
-            ));
-        }
+        let (d, l, c) = self.geometry.check(&mut errors);
         let l_over_d = l / d;
-        if !ratio_within(l_over_d, 0.05, 5.0) {
-            errors.push(FieldError::new(
-                "/geometry/length_m",
-                format!("L/D must be within [0.05, 5], got {l_over_d:.4}"),
-            ));
-        }
-        let r_over_c = 0.5 * d / c;
-        if !(50.0..=1e4).contains(&r_over_c) {
-            errors.push(FieldError::new(
-                "/geometry/radial_clearance_m",
-                format!("R/C must be within [50, 10000] (typical 500–1000), got {r_over_c:.1}"),
-            ));
-        }
         let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let load = self.load_n.get();
         if !(MIN_LOAD_N..=MAX_LOAD_N).contains(&load) {
