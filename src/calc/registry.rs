@@ -42,6 +42,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
+    Entry::of::<gas::foil_journal::FoilJournal>(),
 ];
 
 /// The calculation registered at `path`.

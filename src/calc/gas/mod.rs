@@ -4,8 +4,12 @@
 //!   temperature, mean free path) and its parsed model [`Gas`], with the slip-flow decision.
 //! - `aerostatic_pad`: the `/v1/gas-bearings/aerostatic-pad` room (wire); `recess_pad`: its
 //!   model, the circular recessed pad's isothermal radial flow.
+//! - `foil_journal`: the `/v1/gas-bearings/foil-journal` room (wire); `foil`: its model, the
+//!   bump-foil journal's limiting pressure and load as ω → ∞.
 
 pub mod aerostatic_pad;
+pub mod foil;
+pub mod foil_journal;
 pub mod gas_spec;
 pub mod recess_pad;
 
