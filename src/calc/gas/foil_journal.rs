@@ -251,6 +251,7 @@ pub struct FoilJournalOutput {
     pub attitude_angle_deg: f64,
     /// Largest pressure, Pa absolute, at the narrowest gap (θ = 180°).
     pub max_pressure_pa: f64,
+    /// Where the largest pressure sits, degrees from the widest gap: 180.
     pub max_pressure_angle_deg: f64,
     /// Smallest film C h̄(π) = C (1 + ε_f)/P̄(π), m (the foil's deflection included).
     pub min_film_m: f64,
