@@ -172,7 +172,10 @@ impl SolverReport {
 /// What a request asks for: a level, or an explicit grid and/or tolerance (the level is then
 /// `standard` with those settings).
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
-#[serde(untagged)]
+#[serde(
+    untagged,
+    expecting = "must be a level — \"closed_form\", \"fast\", \"standard\" or \"high\" (those the calculation offers) — or an object {\"grid\": [cells, cells], \"tolerance\": number}"
+)]
 pub enum FidelityRequest {
     /// `closed_form`, `fast`, `standard` (the default) or `high`.
     Level(Level),

@@ -245,11 +245,7 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
         Err(err) => {
             let inner = err.inner();
             match inner.classify() {
-                Category::Data => {
-                    let message = strip_location(&inner.to_string());
-                    let pointer = pointer_of(err.path(), &message);
-                    Err(Failure::Invalid(vec![FieldError { pointer, message }]))
-                }
+                Category::Data => Err(Failure::Invalid(vec![field_error("", &err)])),
                 _ => Err(Failure::Unreadable(format!(
                     "request body is not valid JSON: {inner}"
                 ))),
@@ -263,22 +259,88 @@ fn parse<T: serde::de::DeserializeOwned>(body: &[u8]) -> Result<T, Failure> {
 pub fn validate_value<C: Calculation>(
     value: serde_json::Value,
 ) -> Result<<C::Input as Validate>::Valid, Vec<FieldError>> {
-    let input: C::Input = serde_path_to_error::deserialize(value).map_err(|err| {
-        let message = strip_location(&err.inner().to_string());
-        vec![FieldError {
-            pointer: pointer_of(err.path(), &message),
-            message,
-        }]
-    })?;
+    let input: C::Input =
+        serde_path_to_error::deserialize(value).map_err(|err| vec![field_error("", &err)])?;
     input.validate()
 }
 
-/// serde_json appends " at line L column C"; the pointer says where, so drop it.
-fn strip_location(message: &str) -> String {
-    match message.rfind(" at line ") {
-        Some(i) => message[..i].to_owned(),
-        None => message.to_owned(),
+/// The 422 of a value serde could not read: its JSON pointer (under `at`, where the value sits
+/// inside a larger request) and serde's message in JSON's words.
+pub(crate) fn field_error(
+    at: &str,
+    err: &serde_path_to_error::Error<serde_json::Error>,
+) -> FieldError {
+    let message = strip_location(&err.inner().to_string());
+    FieldError {
+        pointer: format!("{at}{}", pointer_of(err.path(), &message)),
+        message,
     }
+}
+
+/// A serde message as a user reads it: serde_json's " at line L column C" dropped (the pointer
+/// says where) and Rust's type names put in JSON's words ("expected f64" → "expected a number",
+/// "struct PlainInput" → "an object", "sequence" → "array").
+fn strip_location(message: &str) -> String {
+    let message = match message.rfind(" at line ") {
+        Some(i) => &message[..i],
+        None => message,
+    };
+    in_json_words(message)
+}
+
+/// Rust's names for the JSON kinds in a serde message, replaced with JSON's.
+fn in_json_words(message: &str) -> String {
+    const NUMBERS: [(&str, &str); 12] = [
+        ("f64", "a number"),
+        ("f32", "a number"),
+        ("u8", "a non-negative integer"),
+        ("u16", "a non-negative integer"),
+        ("u32", "a non-negative integer"),
+        ("u64", "a non-negative integer"),
+        ("usize", "a non-negative integer"),
+        ("i8", "an integer"),
+        ("i16", "an integer"),
+        ("i32", "an integer"),
+        ("i64", "an integer"),
+        ("bool", "true or false"),
+    ];
+    let mut out = String::with_capacity(message.len());
+    let mut rest = message;
+    // Each "expected <what>" clause: a Rust type name becomes a JSON kind.
+    while let Some(i) = rest.find("expected ") {
+        let (head, tail) = rest.split_at(i + "expected ".len());
+        out.push_str(head);
+        let word_end = tail
+            .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+            .unwrap_or(tail.len());
+        let word = &tail[..word_end];
+        if let Some((_, kind)) = NUMBERS.iter().find(|(rust, _)| *rust == word) {
+            out.push_str(kind);
+            rest = &tail[word_end..];
+        } else if let Some((after, kind)) = [
+            ("struct ", "an object"),
+            ("internally tagged enum ", "an object with its `kind`"),
+            ("enum ", "one of the values the schema lists"),
+        ]
+        .iter()
+        .find_map(|(rust, kind)| tail.strip_prefix(rust).map(|after| (after, kind)))
+        {
+            let name_end = after
+                .find(|c: char| !(c.is_alphanumeric() || c == '_'))
+                .unwrap_or(after.len());
+            out.push_str(kind);
+            rest = &after[name_end..];
+        } else {
+            rest = tail;
+        }
+    }
+    out.push_str(rest);
+    out.replace("a sequence", "an array")
+        .replace("invalid type: sequence", "invalid type: array")
+        .replace("invalid type: map", "invalid type: object")
+        .replace("expected a map", "expected an object")
+        .replace("expected map", "expected an object")
+        .replace("floating point", "number")
 }
 
 /// A JSON pointer from serde's path. serde's path of an unknown field already ends at the field;
@@ -363,6 +425,80 @@ pub mod finite_json {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every field of every example (and of its nested objects) replaced by a value of another
+    /// JSON kind: each 422 speaks JSON, not Rust (issue 12, item 6).
+    #[test]
+    fn parse_errors_name_no_rust_types() {
+        use serde_json::{json, Value};
+        const RUST: [&str; 12] = [
+            "f64", "f32", "u32", "u64", "usize", "i64", "struct ", "enum ", "untagged", "sequence",
+            "Input", "Spec",
+        ];
+        let wrong = [
+            json!("x"),
+            json!(1.5),
+            json!([1]),
+            json!({"a": 1}),
+            json!(true),
+        ];
+        let kind = |v: &Value| std::mem::discriminant(v);
+        let mut checked = 0;
+        for e in REGISTRY {
+            let example: Value = serde_json::from_str(e.example).unwrap();
+            let mut pointers: Vec<String> = Vec::new();
+            for (key, value) in example.as_object().unwrap() {
+                pointers.push(format!("/{key}"));
+                if let Some(inner) = value.as_object() {
+                    pointers.extend(inner.keys().map(|k| format!("/{key}/{k}")));
+                }
+            }
+            for pointer in pointers {
+                for w in &wrong {
+                    let mut body = example.clone();
+                    let slot = body.pointer_mut(&pointer).unwrap();
+                    if kind(slot) == kind(w) {
+                        continue;
+                    }
+                    *slot = w.clone();
+                    let bytes = serde_json::to_vec(&body).unwrap();
+                    let deadline = Instant::now() + std::time::Duration::from_secs(30);
+                    if let Err(Failure::Invalid(errors)) =
+                        (e.execute)(&bytes, deadline, Arc::default())
+                    {
+                        for error in errors {
+                            checked += 1;
+                            assert!(
+                                RUST.iter().all(|r| !error.message.contains(r)),
+                                "{} {pointer} = {w}: {}",
+                                e.path,
+                                error.message
+                            );
+                        }
+                    }
+                }
+            }
+        }
+        assert!(checked > 500, "only {checked} messages checked");
+    }
+
+    #[test]
+    fn an_invalid_fidelity_lists_the_levels_and_the_grid_form() {
+        let e = find("/v1/journal-bearings/plain").unwrap();
+        let mut body: serde_json::Value = serde_json::from_str(e.example).unwrap();
+        body["fidelity"] = serde_json::json!("medium");
+        let bytes = serde_json::to_vec(&body).unwrap();
+        let deadline = Instant::now() + std::time::Duration::from_secs(30);
+        match (e.execute)(&bytes, deadline, Arc::default()) {
+            Err(Failure::Invalid(errors)) => {
+                assert_eq!(errors[0].pointer, "/fidelity");
+                for word in ["closed_form", "fast", "standard", "high", "grid"] {
+                    assert!(errors[0].message.contains(word), "{}", errors[0].message);
+                }
+            }
+            other => panic!("expected a 422, got {other:?}"),
+        }
+    }
 
     #[test]
     fn every_path_is_unique_and_versioned() {

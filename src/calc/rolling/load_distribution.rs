@@ -47,6 +47,7 @@ use super::ring_equilibrium::{
 use super::roller::{self, RollerBearing, RollerCase, ROLLER_STATIC_LIMIT_PA};
 use crate::calc::contact::hertz::{Footprint, Solution};
 use crate::calc::quantity::{NonNegative, RingSpeed};
+use crate::calc::registry;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate, Warning};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::Level;
@@ -154,31 +155,7 @@ pub enum LoadDistributionRequest {
 
 /// Parse `value` as `T`, the pointers of its errors under `at`.
 pub(super) fn parse_at<T: DeserializeOwned>(value: Value, at: &str) -> Result<T, Vec<FieldError>> {
-    serde_path_to_error::deserialize(value).map_err(|e| {
-        let mut pointer: String = at.to_owned();
-        for segment in e.path().iter() {
-            match segment {
-                serde_path_to_error::Segment::Seq { index } => {
-                    pointer.push_str(&format!("/{index}"))
-                }
-                serde_path_to_error::Segment::Map { key } => pointer.push_str(&format!("/{key}")),
-                serde_path_to_error::Segment::Enum { variant } => {
-                    pointer.push_str(&format!("/{variant}"))
-                }
-                serde_path_to_error::Segment::Unknown => {}
-            }
-        }
-        let message = e.inner().to_string();
-        let message = message
-            .rfind(" at line ")
-            .map_or(message.clone(), |i| message[..i].to_owned());
-        if let Some(rest) = message.strip_prefix("missing field `") {
-            if let Some(end) = rest.find('`') {
-                pointer.push_str(&format!("/{}", &rest[..end]));
-            }
-        }
-        vec![FieldError::new(pointer, message)]
-    })
+    serde_path_to_error::deserialize(value).map_err(|e| vec![registry::field_error(at, &e)])
 }
 
 /// The request's load case, typed: everything but the bearing. The pointers of its errors are
