@@ -3,7 +3,7 @@
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use stribeck::calc::{find, Failure};
+use stribeck::calc::{find, CalcError, Failure};
 
 const PATH: &str = "/v1/journal-bearings/plain";
 
@@ -637,5 +637,25 @@ fn jfo_with_arcs_misalignment_and_turbulence() {
         "cavitated_area_fraction",
     ] {
         assert!(num(&f["result"], key).is_finite(), "{key}");
+    }
+}
+
+/// The README's journal driven far too fast (1e5 and 3e5 rpm): a thermal runaway is a 422 that
+/// blames the speed and says so in words, with no Rust in it (issue 12, item 6).
+#[test]
+fn thermal_runaway_blames_the_speed_in_words() {
+    let mut body: Value =
+        serde_json::from_str(find("/v1/journal-bearings/plain").unwrap().example).unwrap();
+    for rpm in [1e5, 3e5] {
+        body["speed_rpm"] = json!(rpm);
+        body["fidelity"] = json!("fast");
+        match run(&body) {
+            Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+                assert_eq!(pointer, "/speed_rpm", "{message}");
+                assert!(message.contains("thermal runaway"), "{message}");
+                assert!(!message.contains("NoSignChange"), "{message}");
+            }
+            other => panic!("{rpm} rpm: expected a 422, got {other:?}"),
+        }
     }
 }

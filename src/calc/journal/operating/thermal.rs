@@ -252,11 +252,21 @@ pub(super) fn effective_temperature(
         Err(e @ RootError::NotConverged { .. }) => {
             Err(CalcError::from_root("brent_effective_temperature", e))
         }
-        Err(e) => Err(CalcError::impossible(
+        // Still heating at the bracket's hot end: the oil would have to run hotter than the
+        // model allows before the heat balance closes.
+        Err(RootError::NoSignChange { b, fb, .. }) if fb < 0.0 => Err(CalcError::impossible(
+            "/speed_rpm",
+            format!(
+                "thermal runaway: even with the oil at {b:.0} °C ({:.0} K above the inlet) the friction heat would warm it {:.0} K above the inlet, so no effective temperature balances the heat; the speed is too high for this load, oil, clearance and feed",
+                b - t_in,
+                b - t_in - fb
+            ),
+        )),
+        Err(_) => Err(CalcError::impossible(
             "/inlet_temperature_c",
             format!(
-                "no effective temperature in [{t_in:.2}, {:.2}] °C: {e:?}",
-                t_in + rise_iso
+                "no effective temperature balances the friction heat between {t_in:.1} and {:.1} °C",
+                t_in + rise_iso.min(MAX_TEMPERATURE_RISE_K)
             ),
         )),
     }
