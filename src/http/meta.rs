@@ -101,9 +101,13 @@ pub async fn method_not_allowed(uri: Uri) -> Problem {
         StatusCode::METHOD_NOT_ALLOWED,
         "method-not-allowed",
         "Method not allowed",
-        format!(
-            "{} does not take this method; calculations take POST with a JSON body",
-            uri.path()
-        ),
+        if uri.path().starts_with("/v1/") && uri.path() != "/v1/calculations" {
+            format!(
+                "{} does not take this method; calculations take POST with a JSON body",
+                uri.path()
+            )
+        } else {
+            format!("{} takes GET only", uri.path())
+        },
     )
 }

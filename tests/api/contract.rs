@@ -212,5 +212,15 @@ async fn unknown_paths_and_methods_are_problems() {
     app.post_json("/v1/lubricants/viscosityy", &good_request())
         .await
         .problem(404);
-    app.get(PATH).await.problem(405);
+    let wrong_method = app.get(PATH).await;
+    wrong_method.problem(405);
+    assert!(
+        wrong_method.text.contains("take POST"),
+        "{}",
+        wrong_method.text
+    );
+    // The service's own routes are GET: a POST to them says so, not "calculations take POST".
+    let health = app.post_json("/health", &good_request()).await;
+    health.problem(405);
+    assert!(health.text.contains("GET only"), "{}", health.text);
 }
