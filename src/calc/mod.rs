@@ -2,6 +2,7 @@
 //! (`crate::http`) and the CLI (`stribeck run`) both go through [`execute`].
 
 pub mod contact;
+pub mod hydrostatic;
 pub mod journal;
 pub mod lubricant;
 pub mod quantity;

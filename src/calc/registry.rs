@@ -12,8 +12,8 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
-    Validate, Warning,
+    contact, hydrostatic, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation,
+    Context, Validate, Warning,
 };
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
@@ -41,6 +41,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<hydrostatic::pad::HydrostaticPad>(),
+    Entry::of::<hydrostatic::design::HydrostaticDesign>(),
 ];
 
 /// The calculation registered at `path`.
