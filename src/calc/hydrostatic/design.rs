@@ -170,6 +170,12 @@ impl Validate for HydrostaticDesignInput {
                 ),
             ));
         }
+        if let Some(eta) = self.pump_efficiency.map(Positive::get).filter(|&e| e > 1.0) {
+            errors.push(FieldError::new(
+                "/pump_efficiency",
+                format!("must be within (0, 1], got {eta}"),
+            ));
+        }
         let t = self.temperature_c.map_or(40.0, Celsius::get);
         let lubricant = lubricant_at(self.lubricant, t, &mut errors);
         let eta = self.pump_efficiency.map_or(1.0, Positive::get).min(1.0);

@@ -705,6 +705,12 @@ impl Validate for HydrostaticPadInput {
             }
             m => m,
         };
+        if let Some(eta) = self.pump_efficiency.map(Positive::get).filter(|&e| e > 1.0) {
+            errors.push(FieldError::new(
+                "/pump_efficiency",
+                format!("must be within (0, 1], got {eta}"),
+            ));
+        }
         if self.effects.turbulence == Mode::On {
             errors.push(FieldError::new(
                 "/effects/turbulence",
