@@ -3,6 +3,7 @@
 
 pub mod contact;
 pub mod gas;
+pub mod hydrostatic;
 pub mod journal;
 pub mod lubricant;
 pub mod quantity;

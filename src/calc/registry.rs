@@ -12,8 +12,8 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, gas, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
-    Validate, Warning,
+    contact, gas, hydrostatic, journal, lubricant, rolling, squeeze, thrust, CalcError,
+    Calculation, Context, Validate, Warning,
 };
 use crate::effects::Decision;
 use crate::fidelity::{Level, SolverReport};
@@ -43,6 +43,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
     Entry::of::<gas::foil_journal::FoilJournal>(),
+    Entry::of::<hydrostatic::pad::HydrostaticPad>(),
+    Entry::of::<hydrostatic::design::HydrostaticDesign>(),
 ];
 
 /// The calculation registered at `path`.

@@ -1,0 +1,578 @@
+//! A pad at its operating point: the determinate set the request gives (two of film, load,
+//! supply pressure and flow) solved in closed form with the restrictor's law, the stiffness,
+//! the powers and the temperature rise, the effects decided (Khonsari & Booser §10.3–10.6;
+//! Stachowiak & Batchelor §6.2–6.4).
+//!
+//! The film carries W = A_eff p_r and passes Q = c₂ h³ p_r (c₂ = B̄/μ); the restrictor
+//! passes the same Q at p_s − p_r. Two of (h, W, p_s, Q) fix the rest, except W with p_s
+//! when nothing ties p_r to the film (constant flow, or a restrictor still to be sized).
+
+use super::geometry::{Drag, Geometry};
+use super::power::{self, Motion, Power};
+use super::restrictor::{self, Kind, Law};
+use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
+use crate::calc::{CalcError, Notes};
+use crate::effects::{Criterion, Decision, Mode};
+use crate::numerics::roots::{brent, RootError, Stopping};
+
+/// The two quantities the request fixes.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Known {
+    FilmLoad(f64, f64),
+    FilmSupply(f64, f64),
+    FilmFlow(f64, f64),
+    LoadSupply(f64, f64),
+    LoadFlow(f64, f64),
+    SupplyFlow(f64, f64),
+}
+
+/// A restrictor given by its size, or to be sized for a pressure ratio m = p_r/p_s.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Sizing {
+    /// Capillary length, or orifice radius, m.
+    Given(f64),
+    /// m, within (0, 1).
+    Ratio(f64),
+}
+
+/// What feeds the recess.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Compensation {
+    ConstantFlow,
+    Capillary {
+        radius: f64,
+        sizing: Sizing,
+    },
+    Orifice {
+        discharge_coefficient: f64,
+        sizing: Sizing,
+    },
+}
+
+impl Compensation {
+    pub fn kind(self) -> Kind {
+        match self {
+            Compensation::ConstantFlow => Kind::ConstantFlow,
+            Compensation::Capillary { .. } => Kind::Capillary,
+            Compensation::Orifice { .. } => Kind::Orifice,
+        }
+    }
+
+    /// The law at the restrictor's viscosity μ and density ρ.
+    pub fn law(self, mu: f64, rho: f64) -> Law {
+        match self {
+            Compensation::ConstantFlow => Law::Direct,
+            Compensation::Capillary {
+                radius,
+                sizing: Sizing::Given(length),
+            } => Law::Linear(restrictor::capillary_conductance(radius, length, mu)),
+            Compensation::Orifice {
+                discharge_coefficient,
+                sizing: Sizing::Given(radius),
+            } => Law::Root(restrictor::orifice_coefficient(
+                radius,
+                discharge_coefficient,
+                rho,
+            )),
+            Compensation::Capillary {
+                sizing: Sizing::Ratio(m),
+                ..
+            }
+            | Compensation::Orifice {
+                sizing: Sizing::Ratio(m),
+                ..
+            } => Law::Ratio(m),
+        }
+    }
+}
+
+/// The film's two constants at one viscosity.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Film {
+    /// A_eff, m².
+    pub area: f64,
+    /// c₂ = B̄/μ, m/(Pa·s): Q = c₂ h³ p_r.
+    pub c2: f64,
+}
+
+/// The operating point: SI throughout.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Point {
+    pub film: f64,
+    pub load: f64,
+    pub supply: f64,
+    pub recess: f64,
+    pub flow: f64,
+}
+
+impl Point {
+    /// m = p_r/p_s.
+    pub fn ratio(&self) -> f64 {
+        self.recess / self.supply
+    }
+}
+
+/// The point where `known` holds, in closed form. Refusals name the request field at fault.
+pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
+    let Film { area, c2 } = film;
+    let film_for = |q: f64, pr: f64| (q / (c2 * pr)).cbrt();
+    let (h, pr, q, ps) = match known {
+        Known::FilmLoad(h, w) => {
+            let pr = w / area;
+            (h, pr, c2 * h.powi(3) * pr, None)
+        }
+        Known::FilmFlow(h, q) => (h, q / (c2 * h.powi(3)), q, None),
+        Known::LoadFlow(w, q) => {
+            let pr = w / area;
+            (film_for(q, pr), pr, q, None)
+        }
+        Known::FilmSupply(h, ps) => {
+            let a = c2 * h.powi(3);
+            let pr = match law {
+                Law::Direct => ps,
+                Law::Ratio(m) => m * ps,
+                Law::Linear(k) => k * ps / (a + k),
+                // The positive root of c₂²h⁶p_r² + k²p_r − k²p_s = 0 (Eq. 10.32–10.33), in the
+                // form without cancellation when the orifice is large.
+                Law::Root(k) => 2.0 * k * k * ps / (k * k + k * (k * k + 4.0 * a * a * ps).sqrt()),
+            };
+            (h, pr, a * pr, Some(ps))
+        }
+        Known::LoadSupply(w, ps) => {
+            let pr = w / area;
+            let q = match law {
+                Law::Linear(k) | Law::Root(k) if pr < ps => {
+                    let drop = ps - pr;
+                    if let Law::Linear(_) = law {
+                        k * drop
+                    } else {
+                        k * drop.sqrt()
+                    }
+                }
+                Law::Linear(_) | Law::Root(_) => {
+                    return Err(CalcError::impossible(
+                        "/load_n",
+                        format!(
+                            "the load needs a recess pressure W/A_eff = {pr:.6e} Pa, not below the supply pressure {ps:.6e} Pa: no film carries it"
+                        ),
+                    ))
+                }
+                Law::Direct | Law::Ratio(_) => {
+                    return Err(CalcError::impossible(
+                        "/supply_pressure_pa",
+                        "load and supply pressure are tied by W = A_eff·m·p_s whatever the film: give film_m or flow_m3_s instead of one of them",
+                    ))
+                }
+            };
+            (film_for(q, pr), pr, q, Some(ps))
+        }
+        Known::SupplyFlow(ps, q) => {
+            let pr = match law {
+                Law::Direct => ps,
+                Law::Ratio(m) => m * ps,
+                Law::Linear(_) | Law::Root(_) => {
+                    let drop = law.drop(q).unwrap_or(0.0);
+                    if drop >= ps {
+                        return Err(CalcError::impossible(
+                            "/flow_m3_s",
+                            format!(
+                                "the restrictor alone drops {drop:.6e} Pa at this flow, not less than the supply pressure {ps:.6e} Pa"
+                            ),
+                        ));
+                    }
+                    ps - drop
+                }
+            };
+            (film_for(q, pr), pr, q, Some(ps))
+        }
+    };
+    let supply = ps.unwrap_or_else(|| match law {
+        Law::Ratio(m) => pr / m,
+        other => pr + other.drop(q).unwrap_or(0.0),
+    });
+    Ok(Point {
+        film: h,
+        load: area * pr,
+        supply,
+        recess: pr,
+        flow: q,
+    })
+}
+
+/// −dW/dh at fixed supply pressure (fixed flow for constant flow): (3W/h) × the restrictor's
+/// factor at the point's m (Eq. 10.12, 10.27, 10.34).
+pub fn stiffness(kind: Kind, point: &Point) -> f64 {
+    3.0 * point.load / point.film * kind.stiffness_factor(point.ratio())
+}
+
+/// Effects the pad understands.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Effects {
+    pub thermal: Mode,
+    pub turbulence: Mode,
+}
+
+/// One pad request, parsed.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Case {
+    pub geometry: Geometry,
+    pub compensation: Compensation,
+    pub known: Known,
+    pub motion: Motion,
+    pub pump_efficiency: f64,
+    pub lubricant: Lubricant,
+    pub inlet_temperature_c: f64,
+    pub effects: Effects,
+}
+
+/// The restrictor as built: its size (given or designed) and the flow through it.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Restrictor {
+    pub kind: Kind,
+    /// Capillary or orifice radius, m.
+    pub radius: Option<f64>,
+    /// Capillary length, m.
+    pub length: Option<f64>,
+    pub discharge_coefficient: Option<f64>,
+    /// K_c, m³/(s·Pa) (capillary) or k_o, m³/(s·Pa^½) (orifice).
+    pub conductance: Option<f64>,
+    pub pressure_drop: f64,
+    pub mean_velocity: Option<f64>,
+    pub reynolds_number: Option<f64>,
+}
+
+/// A pad at its operating point.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Operating {
+    pub point: Point,
+    pub effective_area: f64,
+    pub flow_coefficient: f64,
+    pub stiffness: f64,
+    pub power: Power,
+    pub restrictor: Restrictor,
+    /// ρ Q h̄/(μ …): the land film's Reynolds number (the larger of the pressure flow's at the
+    /// recess edge and the shear flow's at the fastest edge).
+    pub land_reynolds_number: Option<f64>,
+    /// Where the film's viscosity is taken, °C, and that viscosity, Pa·s.
+    pub film_temperature_c: f64,
+    pub film_viscosity_pa_s: f64,
+    /// The restrictor's (inlet) viscosity and density.
+    pub inlet_viscosity_pa_s: f64,
+    pub inlet_density_kg_m3: f64,
+    pub notes: Notes,
+}
+
+/// Capillary laminar limit (Stachowiak & Batchelor §6.4: Re < 2000; Khonsari & Booser §10.4
+/// allow 2500: the stricter is used).
+pub const CAPILLARY_REYNOLDS_LIMIT: f64 = 2000.0;
+/// Capillary length-to-bore for Hagen–Poiseuille to hold (entry losses; S&B §6.4: l/d > 100).
+pub const CAPILLARY_MIN_L_OVER_D: f64 = 100.0;
+/// Below this orifice Reynolds number C_D falls from about 0.6–0.7 towards 0.3 (Khonsari &
+/// Booser §10.5).
+pub const ORIFICE_LOW_REYNOLDS: f64 = 100.0;
+/// Thin-film transition to turbulence, film Reynolds number (Khonsari & Booser §7.11's lower
+/// bound, 580–800).
+pub const LAND_REYNOLDS_LIMIT: f64 = 580.0;
+/// The thermal effect applies (auto) when the isothermal rise lowers μ by more than this.
+pub const THERMAL_VISCOSITY_DROP: f64 = 0.05;
+
+/// The pad at temperature `t_film` (the film's viscosity) with the restrictor at the inlet.
+fn at(case: &Case, t_film: f64) -> Result<Operating, CalcError> {
+    let t_in = case.inlet_temperature_c;
+    let lub = &case.lubricant;
+    let (mu_in, rho) = (lub.viscosity_pa_s(t_in), lub.density_kg_m3(t_in));
+    let mu = lub.viscosity_pa_s(t_film);
+    let cp = lub.specific_heat_j_kg_k(t_in);
+    let flow_coefficient = case.geometry.flow_coefficient();
+    let film = Film {
+        area: case.geometry.effective_area(),
+        c2: flow_coefficient / mu,
+    };
+    let law = case.compensation.law(mu_in, rho);
+    let point = solve(film, law, case.known)?;
+    let kind = case.compensation.kind();
+    // The restrictor's own law gives its drop without the cancellation of p_s − p_r near m = 1.
+    let drop = law.drop(point.flow).unwrap_or(point.supply - point.recess);
+    let restrictor = match case.compensation {
+        Compensation::ConstantFlow => Restrictor {
+            kind,
+            radius: None,
+            length: None,
+            discharge_coefficient: None,
+            conductance: None,
+            pressure_drop: 0.0,
+            mean_velocity: None,
+            reynolds_number: None,
+        },
+        Compensation::Capillary { radius, sizing } => {
+            let conductance = point.flow / drop;
+            let length = match sizing {
+                Sizing::Given(l) => l,
+                Sizing::Ratio(_) => restrictor::capillary_length(radius, conductance, mu_in),
+            };
+            let (u, re) = restrictor::bore_flow(point.flow, radius, rho, mu_in);
+            Restrictor {
+                kind,
+                radius: Some(radius),
+                length: Some(length),
+                discharge_coefficient: None,
+                conductance: Some(conductance),
+                pressure_drop: drop,
+                mean_velocity: Some(u),
+                reynolds_number: Some(re),
+            }
+        }
+        Compensation::Orifice {
+            discharge_coefficient,
+            sizing,
+        } => {
+            let radius = match sizing {
+                Sizing::Given(r) => r,
+                Sizing::Ratio(_) => {
+                    restrictor::orifice_radius(point.flow, drop, discharge_coefficient, rho)
+                }
+            };
+            let (u, re) = restrictor::bore_flow(point.flow, radius, rho, mu_in);
+            Restrictor {
+                kind,
+                radius: Some(radius),
+                length: None,
+                discharge_coefficient: Some(discharge_coefficient),
+                conductance: Some(restrictor::orifice_coefficient(
+                    radius,
+                    discharge_coefficient,
+                    rho,
+                )),
+                pressure_drop: drop,
+                mean_velocity: Some(u),
+                reynolds_number: Some(re),
+            }
+        }
+    };
+    let power = power::of(
+        case.geometry.drag(),
+        &point,
+        mu,
+        case.motion,
+        case.pump_efficiency,
+        rho * cp,
+    );
+    let land_reynolds_number = case.geometry.recess_perimeter().map(|perimeter| {
+        let pressure_flow = rho * point.flow / (mu * perimeter);
+        let shear_speed = match (case.motion, case.geometry.outer_radius()) {
+            (Motion::Rotating { omega }, Some(r)) => omega * r,
+            (Motion::Sliding { speed }, _) => speed,
+            _ => 0.0,
+        };
+        pressure_flow.max(rho * shear_speed * point.film / mu)
+    });
+    Ok(Operating {
+        stiffness: stiffness(kind, &point),
+        point,
+        effective_area: film.area,
+        flow_coefficient,
+        power,
+        restrictor,
+        land_reynolds_number,
+        film_temperature_c: t_film,
+        film_viscosity_pa_s: mu,
+        inlet_viscosity_pa_s: mu_in,
+        inlet_density_kg_m3: rho,
+        notes: Notes::default(),
+    })
+}
+
+/// The pad at its operating point, the thermal effect decided (and solved as a root in the
+/// film temperature where it applies), turbulence decided, warnings noted.
+pub fn operate(case: &Case) -> Result<Operating, CalcError> {
+    let t_in = case.inlet_temperature_c;
+    let isothermal = at(case, t_in)?;
+    let constant = matches!(
+        case.lubricant.temperature_law,
+        TemperatureLaw::Constant { .. }
+    );
+    let rise = isothermal.power.temperature_rise;
+    let mut op = if constant {
+        let mut op = isothermal;
+        op.notes.decide(
+            "thermal",
+            Decision::not_applicable(
+                case.effects.thermal,
+                "thermal: the lubricant's viscosity is constant; the temperature rise is reported, the viscosity does not follow it",
+            ),
+        );
+        op
+    } else {
+        let mean = t_in + 0.5 * rise;
+        let mu_in = case.lubricant.viscosity_pa_s(t_in);
+        let drop = if mean <= crate::calc::quantity::Celsius::MAX {
+            1.0 - case.lubricant.viscosity_pa_s(mean) / mu_in
+        } else {
+            1.0
+        };
+        let mut decision = Decision::decide(
+            case.effects.thermal,
+            Criterion {
+                name: "viscosity_drop_fraction",
+                value: drop,
+                threshold: THERMAL_VISCOSITY_DROP,
+            },
+            "thermal (film viscosity at the mean film temperature T_in + ΔT/2)",
+        );
+        decision.model = Some("mean_film_temperature");
+        if decision.applied {
+            let mut op = thermal_root(case, rise)?;
+            op.notes.decide("thermal", decision);
+            op
+        } else {
+            let mut op = isothermal;
+            op.notes.decide("thermal", decision);
+            op
+        }
+    };
+    decide_turbulence(case, &mut op);
+    warn(case, &mut op);
+    Ok(op)
+}
+
+/// T such that T = T_in + ΔT(μ(T))/2. ΔT falls as the film warms (the flow rises and the
+/// shear falls with μ), so the root lies in [T_in, T_in + ΔT_iso/2].
+fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
+    let t_in = case.inlet_temperature_c;
+    let hi = (t_in + 0.5 * rise).min(crate::calc::quantity::Celsius::MAX);
+    let mut failure = None;
+    let mut residual = |t: f64| match at(case, t) {
+        Ok(op) => t - t_in - 0.5 * op.power.temperature_rise,
+        Err(e) => {
+            failure.get_or_insert(e);
+            f64::NAN
+        }
+    };
+    let stop = Stopping {
+        x_tolerance: 1e-9,
+        max_iterations: 100,
+    };
+    let root = brent(&mut residual, t_in, hi, stop);
+    if let Some(e) = failure {
+        return Err(e);
+    }
+    match root {
+        Ok(root) => at(case, root.x),
+        Err(RootError::NoSignChange { .. }) => Err(CalcError::impossible(
+            "/temperature_c",
+            format!(
+                "thermal runaway: the film heats by {rise:.4e} K, beyond what the oil's viscosity law covers"
+            ),
+        )),
+        Err(e) => Err(CalcError::from_root("hydrostatic_film_temperature", e)),
+    }
+}
+
+fn decide_turbulence(case: &Case, op: &mut Operating) {
+    let capillary = match (op.restrictor.kind, op.restrictor.reynolds_number) {
+        (Kind::Capillary, Some(re)) => re / CAPILLARY_REYNOLDS_LIMIT,
+        _ => 0.0,
+    };
+    let land = op.land_reynolds_number.unwrap_or(0.0) / LAND_REYNOLDS_LIMIT;
+    let decision = Decision::decide(
+        case.effects.turbulence,
+        Criterion {
+            name: "reynolds_number_over_transition",
+            value: capillary.max(land),
+            threshold: 1.0,
+        },
+        "turbulence (capillary Re against 2000, land film Re against 580)",
+    );
+    // The texts give only the laminar limits, no turbulent law for restrictor or lands: an
+    // `auto` above the limit is reported (with a warning), never silently modelled.
+    let decision = if decision.applied {
+        Decision {
+            applied: false,
+            reason: format!(
+                "{}; the texts give no turbulent law for hydrostatic restrictors or lands: the laminar result stands, see the warnings",
+                decision.reason
+            ),
+            ..decision
+        }
+    } else {
+        decision
+    };
+    op.notes.decide("turbulence", decision);
+}
+
+fn warn(case: &Case, op: &mut Operating) {
+    let notes = &mut op.notes;
+    // Density enters the temperature rise and the restrictor's Reynolds number: every
+    // assumption is the pad's.
+    for (code, message) in &case.lubricant.assumptions {
+        notes.warn(code, message.clone());
+    }
+    let r = &op.restrictor;
+    match (r.kind, r.reynolds_number) {
+        (Kind::Capillary, Some(re)) => {
+            if re > CAPILLARY_REYNOLDS_LIMIT {
+                notes.warn(
+                    "restrictor_not_laminar",
+                    format!("capillary Reynolds number {re:.4e} exceeds {CAPILLARY_REYNOLDS_LIMIT} (Stachowiak & Batchelor; Khonsari & Booser allow 2500): Hagen–Poiseuille overstates its flow"),
+                );
+            }
+            if let (Some(l), Some(radius)) = (r.length, r.radius) {
+                let ld = l / (2.0 * radius);
+                if ld < CAPILLARY_MIN_L_OVER_D {
+                    notes.warn(
+                        "capillary_short",
+                        format!("capillary l/d = {ld:.4e} is below {CAPILLARY_MIN_L_OVER_D}: entry losses make Hagen–Poiseuille inexact"),
+                    );
+                }
+            }
+        }
+        (Kind::Orifice, Some(re)) if re < ORIFICE_LOW_REYNOLDS => notes.warn(
+            "orifice_low_reynolds",
+            format!("orifice Reynolds number {re:.4e} is below {ORIFICE_LOW_REYNOLDS}: the discharge coefficient falls towards 0.3 there (Khonsari & Booser §10.5); check the one given"),
+        ),
+        _ => {}
+    }
+    if let Some(re) = op
+        .land_reynolds_number
+        .filter(|&re| re > LAND_REYNOLDS_LIMIT)
+    {
+        notes.warn(
+            "land_flow_not_laminar",
+            format!("land film Reynolds number {re:.4e} exceeds {LAND_REYNOLDS_LIMIT}: the laminar film law overstates the flow and understates the friction"),
+        );
+    }
+    if let Some(land) = case.geometry.narrowest_land() {
+        let ratio = op.point.film / land;
+        if ratio > 0.01 {
+            notes.warn(
+                "film_thick_against_land",
+                format!("the film is {ratio:.4e} of the narrowest land (above 0.01): the thin-film (Reynolds) model loses accuracy"),
+            );
+        }
+    }
+    if op.power.power_ratio >= 1.0 {
+        notes.warn(
+            "hydrodynamic_effects",
+            format!(
+                "friction power is {:.4e} times the pumping power (ζ ≥ 1: a high-speed bearing, Stachowiak & Batchelor §6.4): hydrodynamic pressures, not modelled here, become significant",
+                op.power.power_ratio
+            ),
+        );
+    }
+    if matches!(case.geometry.drag(), Drag::None) && !matches!(case.motion, Motion::Still) {
+        notes.warn(
+            "friction_not_modelled",
+            "performance factors carry no land friction: friction is reported as zero",
+        );
+    }
+    if case
+        .lubricant
+        .pour_point_c
+        .is_some_and(|p| case.inlet_temperature_c < p)
+    {
+        notes.warn(
+            "below_pour_point",
+            "the inlet temperature is below the pour point: the oil does not flow and viscosity laws do not hold",
+        );
+    }
+}
