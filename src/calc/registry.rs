@@ -12,7 +12,7 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
+    contact, gas, journal, lubricant, rolling, squeeze, thrust, CalcError, Calculation, Context,
     Validate, Warning,
 };
 use crate::effects::Decision;
@@ -41,6 +41,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<gas::slider::GasSlider>().numerical(),
 ];
 
 /// The calculation registered at `path`.
@@ -384,7 +385,8 @@ mod tests {
                 | "/v1/squeeze-films/journal"
                 | "/v1/thrust-bearings/fixed-pad"
                 | "/v1/thrust-bearings/tilting-pad"
-                | "/v1/thrust-bearings/bearing" => Cost::Heavy,
+                | "/v1/thrust-bearings/bearing"
+                | "/v1/gas-bearings/slider" => Cost::Heavy,
                 _ => Cost::Light,
             };
             assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);

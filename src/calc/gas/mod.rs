@@ -1,8 +1,14 @@
 //! Gas bearings (Khonsari & Booser ch. 11; Stachowiak & Batchelor §4.8, §6.5).
 //!
 //! - `gas_spec`: the shared `gas` object (viscosity, absolute ambient pressure, gas constant,
-//!   temperature, mean free path) and its parsed model [`Gas`], with the slip-flow decision.
+//!   temperature, mean free path) and its parsed model [`Gas`], with the slip-flow decision;
+//! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
+//! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
+//! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance.
 
 pub mod gas_spec;
+pub mod method;
+pub mod slider;
+pub mod slider_film;
 
 pub use gas_spec::{Gas, GasSpec, NamedGas};
