@@ -41,6 +41,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<gas::journal::GasJournal>().numerical(),
     Entry::of::<gas::slider::GasSlider>().numerical(),
 ];
 
@@ -386,6 +387,7 @@ mod tests {
                 | "/v1/thrust-bearings/fixed-pad"
                 | "/v1/thrust-bearings/tilting-pad"
                 | "/v1/thrust-bearings/bearing"
+                | "/v1/gas-bearings/journal"
                 | "/v1/gas-bearings/slider" => Cost::Heavy,
                 _ => Cost::Light,
             };

@@ -177,6 +177,8 @@ pub fn performance(film: &JournalFilm, grid: &GasGrid, p: &[f64]) -> JournalPerf
 /// The performance by a method: the mesh, and with Richardson the half mesh, extrapolated.
 #[derive(Debug, Clone)]
 pub struct JournalEvaluated {
+    /// ε of the film solved.
+    pub eccentricity: f64,
     pub performance: JournalPerformance,
     /// Relative error estimate of W̄.
     pub error_estimate: Option<f64>,
@@ -202,6 +204,7 @@ pub fn evaluate(
         (fine.report.iterations, fine.report.evaluations.unwrap_or(0));
     let Some(coarse_grid) = coarse_grid else {
         return Ok(JournalEvaluated {
+            eccentricity: film.eccentricity,
             performance: fine.performance,
             error_estimate: None,
             fine,
@@ -229,6 +232,7 @@ pub fn evaluate(
     };
     let error_estimate = Some((fine_error(c.load(), f.load()) / performance.load()).abs());
     Ok(JournalEvaluated {
+        eccentricity: film.eccentricity,
         performance,
         error_estimate,
         fine,

@@ -2,12 +2,14 @@
 //!
 //! - `gas_spec`: the shared `gas` object (viscosity, absolute ambient pressure, gas constant,
 //!   temperature, mean free path) and its parsed model [`Gas`], with the slip-flow decision;
+//! - `journal`: the `/v1/gas-bearings/journal` room (request, response, the load search);
 //! - `journal_film`: the plain 360° gas journal's film and its performance;
 //! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
 //! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance.
 
 pub mod gas_spec;
+pub mod journal;
 pub mod journal_film;
 pub mod method;
 pub mod slider;
