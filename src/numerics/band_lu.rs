@@ -102,9 +102,14 @@ impl Band {
                 if m == 0.0 {
                     continue;
                 }
-                let row_i = at;
-                for s in 1..=last_col - k {
-                    self.data[row_i + s] -= m * self.data[row_k + s];
+                // Row i −= m · row k over the columns after k (contiguous in both rows).
+                let len = last_col - k;
+                let (upper, lower) = self.data.split_at_mut(at);
+                for (t, u) in lower[1..=len]
+                    .iter_mut()
+                    .zip(&upper[row_k + 1..=row_k + len])
+                {
+                    *t -= m * u;
                 }
             }
         }

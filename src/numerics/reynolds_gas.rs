@@ -568,6 +568,34 @@ impl Tally {
     }
 }
 
+/// A field on `coarse` interpolated onto `fine` (bilinear in the node coordinates), as a
+/// Newton start: the fine film of a Richardson pair then needs neither continuation nor more
+/// than a few steps.
+pub fn prolong(coarse: &GasGrid, pc: &[f64], fine: &GasGrid) -> Vec<f64> {
+    // The coarse interval holding v, and the weight of its right end.
+    let locate = |nodes: &[f64], v: f64| -> (usize, f64) {
+        if nodes.len() == 1 {
+            return (0, 0.0);
+        }
+        let k = nodes.partition_point(|&x| x <= v).clamp(1, nodes.len() - 1) - 1;
+        let t = ((v - nodes[k]) / (nodes[k + 1] - nodes[k])).clamp(0.0, 1.0);
+        (k, t)
+    };
+    let mut pf = vec![0.0; fine.x.len() * fine.y.len()];
+    for (i, &x) in fine.x.iter().enumerate() {
+        let (ci, tx) = locate(&coarse.x, x);
+        let ci1 = (ci + 1).min(coarse.nx());
+        for (j, &y) in fine.y.iter().enumerate() {
+            let (cj, ty) = locate(&coarse.y, y);
+            let cj1 = (cj + 1).min(coarse.y.len() - 1);
+            let v = |a: usize, b: usize| pc[coarse.at(a, b)];
+            pf[fine.at(i, j)] = (1.0 - tx) * ((1.0 - ty) * v(ci, cj) + ty * v(ci, cj1))
+                + tx * ((1.0 - ty) * v(ci1, cj) + ty * v(ci1, cj1));
+        }
+    }
+    pf
+}
+
 /// The x-flux through the face between nodes i and i+1 of row j of a solved field (the mass
 /// flow in units of the scaling, Λ P H − k ∂x P, per unit height).
 pub fn flux_x(grid: &GasGrid, problem: &GasProblem, p: &[f64], i: usize, j: usize) -> f64 {

@@ -198,11 +198,10 @@ pub fn evaluate(
     budget: &Budget,
 ) -> Result<JournalEvaluated, Stopped> {
     let fine_grid = grid(film, method.mesh);
-    let coarse_grid = method.richardson.then(|| coarsen(&fine_grid));
-    let fine = solve_on(film, fine_grid, warm.map(|w| w.fine.p.as_slice()), budget)?;
-    let (mut iterations, mut evaluations) =
-        (fine.report.iterations, fine.report.evaluations.unwrap_or(0));
-    let Some(coarse_grid) = coarse_grid else {
+    let Some(coarse_grid) = method.richardson.then(|| coarsen(&fine_grid)) else {
+        let fine = solve_on(film, fine_grid, warm.map(|w| w.fine.p.as_slice()), budget)?;
+        let (iterations, evaluations) =
+            (fine.report.iterations, fine.report.evaluations.unwrap_or(0));
         return Ok(JournalEvaluated {
             eccentricity: film.eccentricity,
             performance: fine.performance,
@@ -213,14 +212,21 @@ pub fn evaluate(
             evaluations,
         });
     };
+    // The half mesh first (from the warm start's, if any); its field, interpolated, starts the
+    // fine Newton unless a warm fine field is at hand.
     let coarse = solve_on(
         film,
         coarse_grid,
         warm.and_then(|w| w.coarse.as_ref()).map(|c| c.p.as_slice()),
         budget,
     )?;
-    iterations += coarse.report.iterations;
-    evaluations += coarse.report.evaluations.unwrap_or(0);
+    let start = match warm {
+        Some(w) => w.fine.p.clone(),
+        None => reynolds_gas::prolong(&coarse.grid, &coarse.p, &fine_grid),
+    };
+    let fine = solve_on(film, fine_grid, Some(&start), budget)?;
+    let iterations = fine.report.iterations + coarse.report.iterations;
+    let evaluations = fine.report.evaluations.unwrap_or(0) + coarse.report.evaluations.unwrap_or(0);
     let (c, f) = (coarse.performance, fine.performance);
     let performance = JournalPerformance {
         load_along: extrapolate(c.load_along, f.load_along),

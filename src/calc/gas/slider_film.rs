@@ -105,13 +105,18 @@ pub struct SliderSolve {
     pub report: SolverReport,
 }
 
-/// Solve the film on `grid`.
-pub fn solve_on(film: &SliderFilm, grid: GasGrid, budget: &Budget) -> Result<SliderSolve, Stopped> {
+/// Solve the film on `grid`, by Newton from `start` when given.
+pub fn solve_on(
+    film: &SliderFilm,
+    grid: GasGrid,
+    start: Option<&[f64]>,
+    budget: &Budget,
+) -> Result<SliderSolve, Stopped> {
     let h1 = film.film_ratio;
     let problem = GasProblem::new(&grid, film.bearing_number, film.knudsen_number, |x, _| {
         h1 - (h1 - 1.0) * x
     });
-    let solved = reynolds_gas::solve(&grid, &problem, None, GasStopping::default(), budget)?;
+    let solved = reynolds_gas::solve(&grid, &problem, start, GasStopping::default(), budget)?;
     let performance = performance(film, &grid, &solved.p);
     Ok(SliderSolve {
         grid,
@@ -183,11 +188,10 @@ pub fn evaluate(
     budget: &Budget,
 ) -> Result<SliderEvaluated, Stopped> {
     let fine_grid = grid(film, method.mesh);
-    let coarse_grid = method.richardson.then(|| coarsen(&fine_grid));
-    let fine = solve_on(film, fine_grid, budget)?;
-    let (mut iterations, mut evaluations) =
-        (fine.report.iterations, fine.report.evaluations.unwrap_or(0));
-    let Some(coarse_grid) = coarse_grid else {
+    let Some(coarse_grid) = method.richardson.then(|| coarsen(&fine_grid)) else {
+        let fine = solve_on(film, fine_grid, None, budget)?;
+        let (iterations, evaluations) =
+            (fine.report.iterations, fine.report.evaluations.unwrap_or(0));
         return Ok(SliderEvaluated {
             performance: fine.performance,
             error_estimate: None,
@@ -196,9 +200,12 @@ pub fn evaluate(
             evaluations,
         });
     };
-    let coarse = solve_on(film, coarse_grid, budget)?;
-    iterations += coarse.report.iterations;
-    evaluations += coarse.report.evaluations.unwrap_or(0);
+    // The half mesh first: its field, interpolated, starts the fine Newton.
+    let coarse = solve_on(film, coarse_grid, None, budget)?;
+    let start = reynolds_gas::prolong(&coarse.grid, &coarse.p, &fine_grid);
+    let fine = solve_on(film, fine_grid, Some(&start), budget)?;
+    let iterations = fine.report.iterations + coarse.report.iterations;
+    let evaluations = fine.report.evaluations.unwrap_or(0) + coarse.report.evaluations.unwrap_or(0);
     let (c, f) = (coarse.performance, fine.performance);
     let x = |a: f64, b: f64| extrapolate(a, b);
     let performance = SliderPerformance {
