@@ -290,7 +290,12 @@ impl Calculation for GasSlider {
                 .named("finite_volume_newton_fitted_flux")
                 .counting(evaluated.iterations, evaluated.evaluations)
                 .at(case.method.level)
-                .on_grid(case.method.grid())
+                .on_grid(if case.length_m.is_some() {
+                    case.method.grid()
+                } else {
+                    // An infinitely wide film has cells along B only.
+                    vec![case.method.mesh.along as u32]
+                })
                 .with_error_estimate(evaluated.error_estimate)
                 .with_film_solves(budget.field_solves()),
         );
