@@ -41,6 +41,8 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<gas::journal::GasJournal>().numerical(),
+    Entry::of::<gas::slider::GasSlider>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
     Entry::of::<gas::foil_journal::FoilJournal>(),
     Entry::of::<hydrostatic::pad::HydrostaticPad>(),
@@ -524,7 +526,9 @@ mod tests {
                 | "/v1/squeeze-films/journal"
                 | "/v1/thrust-bearings/fixed-pad"
                 | "/v1/thrust-bearings/tilting-pad"
-                | "/v1/thrust-bearings/bearing" => Cost::Heavy,
+                | "/v1/thrust-bearings/bearing"
+                | "/v1/gas-bearings/journal"
+                | "/v1/gas-bearings/slider" => Cost::Heavy,
                 _ => Cost::Light,
             };
             assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);

@@ -1,5 +1,6 @@
 //! The basement: numerical kernels every room shares. No physics and no HTTP here.
 
+pub mod band_lu;
 pub mod banded;
 pub mod dense;
 pub mod driver;
@@ -13,5 +14,6 @@ pub mod optimise;
 pub mod quadrature;
 pub mod refine;
 pub mod reynolds;
+pub mod reynolds_gas;
 pub mod richardson;
 pub mod roots;

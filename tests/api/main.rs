@@ -5,6 +5,7 @@
 //! - `contract`: the envelope, every error status and its problem+json, request ids.
 //! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
+//! - `gas`: gas journal and slider: their 422s with reasons and their ranges.
 //! - `hydrostatic`: hydrostatic pads and design: examples, 422s naming the field, the optima.
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
@@ -14,6 +15,7 @@
 
 mod admission;
 mod contract;
+mod gas;
 mod helpers;
 mod hydrostatic;
 mod journal;

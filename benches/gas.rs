@@ -1,0 +1,63 @@
+//! Gas bearings: the speed targets (release, one core; the whole request through the room:
+//! parse, validate, both meshes of the Richardson pair, continuation in Λ, envelope).
+//! - the gas journal at `standard`, at a given ε: under 20 ms for Λ ≤ 100, under 100 ms at
+//!   Λ = 1000;
+//! - the gas slider at `standard` (finite and infinitely wide): under 5 ms.
+//!
+//! `cargo bench --bench gas`.
+
+use std::hint::black_box;
+
+use criterion::{criterion_group, criterion_main, Criterion};
+use stribeck::calc::find;
+
+fn request(c: &mut Criterion, name: &str, path: &str, body: &str) {
+    let entry = find(path).unwrap();
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(3600);
+    c.bench_function(name, |b| {
+        b.iter(|| (entry.execute)(black_box(body.as_bytes()), far, Default::default()).unwrap())
+    });
+}
+
+fn gas(c: &mut Criterion) {
+    let (mu, pa): (f64, f64) = (1.85e-5, 101_325.0);
+    let (d, cl) = (0.05f64, 5e-6f64);
+    for lambda in [1.0, 10.0, 100.0, 1000.0] {
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+        let rpm = omega * 30.0 / std::f64::consts::PI;
+        request(
+            c,
+            &format!("gas journal L/D = 1, ε = 0.6, Λ = {lambda}, standard"),
+            "/v1/gas-bearings/journal",
+            &format!(
+                r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6}}"#
+            ),
+        );
+    }
+    for (name, pad) in [
+        ("L/B = 1", r#"{"breadth_m": 0.02, "length_m": 0.02}"#),
+        ("infinitely wide", r#"{"breadth_m": 0.02}"#),
+    ] {
+        request(
+            c,
+            &format!("gas slider {name}, h1/h2 = 2, Λ = 8.8, standard"),
+            "/v1/gas-bearings/slider",
+            &format!(
+                r#"{{"pad": {pad}, "inlet_film_m": 1e-5, "outlet_film_m": 5e-6, "sliding_speed_m_s": 10, "gas": {{"name": "air"}}}}"#
+            ),
+        );
+    }
+    request(
+        c,
+        "gas slider L/B = 1, h1/h2 = 2, Λ = 1000, standard",
+        "/v1/gas-bearings/slider",
+        r#"{"pad": {"breadth_m": 0.2, "length_m": 0.2}, "inlet_film_m": 1e-5, "outlet_film_m": 5e-6, "sliding_speed_m_s": 114.1, "gas": {"viscosity_pa_s": 1.85e-5}, "effects": {"slip_flow": "off"}}"#,
+    );
+}
+
+criterion_group! {
+    name = benches;
+    config = Criterion::default().sample_size(20);
+    targets = gas
+}
+criterion_main!(benches);

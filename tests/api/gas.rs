@@ -1,0 +1,253 @@
+//! Gas bearings over HTTP: the 422s with their reasons (ε ≥ 1, absolute pressures ≤ 0, a
+//! diverging slider), and the journal and slider over their ranges (finite results whose load
+//! grows with ε and Λ, never a 500).
+
+use proptest::prelude::*;
+use serde_json::{json, Value};
+use stribeck::calc::{find, Failure};
+
+use crate::helpers::{assert_all_finite, spawn_app};
+
+const JOURNAL: &str = "/v1/gas-bearings/journal";
+const SLIDER: &str = "/v1/gas-bearings/slider";
+
+fn journal(extra: Value) -> Value {
+    let mut body = json!({
+        "geometry": {"diameter_m": 0.025, "length_m": 0.025, "radial_clearance_m": 1e-5},
+        "speed_rpm": 30000,
+        "gas": {"name": "air"},
+        "eccentricity_ratio": 0.5
+    });
+    for (k, v) in extra.as_object().unwrap() {
+        body[k] = v.clone();
+    }
+    body
+}
+
+fn slider(extra: Value) -> Value {
+    let mut body = json!({
+        "pad": {"breadth_m": 0.02, "length_m": 0.02},
+        "inlet_film_m": 1e-5,
+        "outlet_film_m": 5e-6,
+        "sliding_speed_m_s": 10,
+        "gas": {"name": "air"}
+    });
+    for (k, v) in extra.as_object().unwrap() {
+        body[k] = v.clone();
+    }
+    body
+}
+
+#[tokio::test]
+async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
+    let app = spawn_app().await;
+    let rows = [
+        (
+            JOURNAL,
+            journal(json!({"eccentricity_ratio": 1.0})),
+            "/eccentricity_ratio",
+            "ε ≥ 1",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"eccentricity_ratio": 0.97})),
+            "/eccentricity_ratio",
+            "0.95",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"gas": {"name": "air", "ambient_pressure_pa": 0.0}})),
+            "/gas/ambient_pressure_pa",
+            "> 0",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"gas": {"name": "air", "ambient_pressure_pa": -101325.0}})),
+            "/gas/ambient_pressure_pa",
+            "> 0",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"load_n": 10.0})),
+            "/load_n",
+            "exactly one",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"gas": {"name": "air", "viscosity_pa_s": 1.8e-5}})),
+            "/gas/viscosity_pa_s",
+            "either",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"fidelity": "closed_form"})),
+            "/fidelity",
+            "no closed form",
+        ),
+        (
+            SLIDER,
+            slider(json!({"inlet_film_m": 4e-6})),
+            "/inlet_film_m",
+            "converging",
+        ),
+        (
+            SLIDER,
+            slider(json!({"gas": {"viscosity_pa_s": 1.8e-5, "ambient_pressure_pa": 0.0}})),
+            "/gas/ambient_pressure_pa",
+            "> 0",
+        ),
+        (
+            SLIDER,
+            slider(json!({"gas": {"name": "argon"}})),
+            "/gas/name",
+            "unknown variant",
+        ),
+        (
+            SLIDER,
+            slider(json!({"sliding_speed_m_s": 900, "outlet_film_m": 1e-8, "inlet_film_m": 2e-8})),
+            "/sliding_speed_m_s",
+            "bearing number",
+        ),
+    ];
+    for (path, body, pointer, why) in rows {
+        let reply = app.post_json(path, &body).await;
+        let problem = reply.problem(422);
+        let errors = problem["errors"].as_array().unwrap();
+        assert!(
+            errors
+                .iter()
+                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
+            "{path} {body}: want {pointer} ({why}), got {}",
+            reply.text
+        );
+    }
+    // A load the film cannot carry below ε = 0.95 names the load.
+    let reply = app
+        .post_json(
+            JOURNAL,
+            &journal(json!({"eccentricity_ratio": null, "load_n": 1e5})),
+        )
+        .await;
+    reply.problem(422);
+    assert!(reply.text.contains("/load_n"), "{}", reply.text);
+}
+
+#[tokio::test]
+async fn the_examples_and_fields_answer_over_http() {
+    let app = spawn_app().await;
+    for path in [JOURNAL, SLIDER] {
+        let example: Value = serde_json::from_str(find(path).unwrap().example).unwrap();
+        let reply = app.post_json(path, &example).await;
+        assert_eq!(reply.status, 200, "{path}: {}", reply.text);
+        assert_all_finite(&reply.body, "");
+        assert_eq!(reply.body["solver"]["stop_reason"], "converged");
+        assert!(reply.body["effects"]["slip_flow"]["criterion"]["value"].is_number());
+    }
+    // The journal's field, the load search and the slider's per-metre fields.
+    let reply = app
+        .post_json(JOURNAL, &journal(json!({"include_field": true})))
+        .await;
+    let field = reply.body["result"]["pressure_field"].as_array().unwrap();
+    assert_eq!(field.len(), 65 * 13);
+    let load = reply.body["result"]["load_n"].as_f64().unwrap();
+    let attitude = reply.body["result"]["attitude_angle_deg"].as_f64().unwrap();
+    let reply = app
+        .post_json(
+            JOURNAL,
+            &journal(json!({"eccentricity_ratio": null, "load_n": load})),
+        )
+        .await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    let e = reply.body["result"]["eccentricity_ratio"].as_f64().unwrap();
+    assert!((e - 0.5).abs() < 1e-6, "{e}");
+    let a = reply.body["result"]["attitude_angle_deg"].as_f64().unwrap();
+    assert!((a - attitude).abs() < 1e-3);
+    let reply = app
+        .post_json(
+            SLIDER,
+            &slider(json!({"pad": {"breadth_m": 0.02}, "include_field": true})),
+        )
+        .await;
+    let r = &reply.body["result"];
+    assert!(r["load_n_per_m"].is_number() && r["load_n"].is_null());
+    assert!(r["power_loss_w_per_m"].is_number() && r["friction_force_pad_n_per_m"].is_number());
+    assert_eq!(r["pressure_profile"].as_array().unwrap().len(), 65);
+}
+
+fn run(path: &str, body: &Value) -> Result<Value, Failure> {
+    let entry = find(path).expect("registered");
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())
+        .map(|done| serde_json::from_slice(&done.body).expect("the envelope is JSON"))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Over ε up to 0.95, Λ from 0.01 to 1000 and L/D 0.25–2: a converged, finite result whose
+    /// load grows with ε, or a 422; never a 500.
+    #[test]
+    fn gas_journals_are_finite_and_their_load_grows_with_eccentricity(
+        e in 0.05f64..0.9,
+        log_lambda in -2.0f64..3.0,
+        l_over_d in 0.25f64..2.0,
+    ) {
+        let (d, c, mu, pa): (f64, f64, f64, f64) = (0.05, 5e-6, 1.85e-5, 101325.0);
+        // Λ = 6μω(R/C)²/p_a → ω, rpm.
+        let omega = 10f64.powf(log_lambda) * pa / (6.0 * mu * (0.5 * d / c).powi(2));
+        let body = |e: f64| json!({
+            "geometry": {"diameter_m": d, "length_m": l_over_d * d, "radial_clearance_m": c},
+            "speed_rpm": omega * 30.0 / std::f64::consts::PI,
+            "gas": {"viscosity_pa_s": mu, "ambient_pressure_pa": pa},
+            "eccentricity_ratio": e,
+            "fidelity": "fast",
+            "effects": {"slip_flow": "off"}
+        });
+        let lo = run(JOURNAL, &body(e));
+        let hi = run(JOURNAL, &body(e + 0.05));
+        match (lo, hi) {
+            (Ok(lo), Ok(hi)) => {
+                assert_all_finite(&lo, "");
+                let w = |v: &Value| v["result"]["load_dimensionless"].as_f64().unwrap();
+                prop_assert!(w(&hi) > w(&lo), "{} vs {}", w(&hi), w(&lo));
+                let a = lo["result"]["attitude_angle_deg"].as_f64().unwrap();
+                prop_assert!((0.0..=90.5).contains(&a), "{a}");
+            }
+            (Err(Failure::Calc(err)), _) | (_, Err(Failure::Calc(err))) => {
+                prop_assert!(!matches!(err, stribeck::calc::CalcError::Internal(_)), "{err:?}");
+            }
+            (Err(other), _) | (_, Err(other)) => prop_assert!(false, "{other:?}"),
+        }
+    }
+
+    /// Sliders over h1/h2 1–10, Λ 0.01–1000 (finite and infinitely wide): finite, converged,
+    /// the load rising with the film ratio up to its optimum and the centre of pressure behind
+    /// mid-pad.
+    #[test]
+    fn gas_sliders_are_finite(
+        ratio in 1.05f64..10.0,
+        log_lambda in -2.0f64..3.0,
+        wide in proptest::bool::ANY,
+    ) {
+        let (b, h2, mu, pa): (f64, f64, f64, f64) = (0.2, 5e-6, 1.85e-5, 101325.0);
+        let u = 10f64.powf(log_lambda) * pa * h2 * h2 / (6.0 * mu * b);
+        let pad = if wide { json!({"breadth_m": b}) } else { json!({"breadth_m": b, "length_m": b}) };
+        let body = json!({
+            "pad": pad, "inlet_film_m": ratio * h2, "outlet_film_m": h2,
+            "sliding_speed_m_s": u, "gas": {"viscosity_pa_s": mu, "ambient_pressure_pa": pa},
+            "fidelity": "fast", "effects": {"slip_flow": "off"}
+        });
+        match run(SLIDER, &body) {
+            Ok(v) => {
+                assert_all_finite(&v, "");
+                let x = v["result"]["center_of_pressure_fraction"].as_f64().unwrap();
+                prop_assert!(x > 0.5 && x < 1.0, "{x}");
+                prop_assert!(v["result"]["load_dimensionless"].as_f64().unwrap() > 0.0);
+            }
+            Err(Failure::Calc(err)) => {
+                prop_assert!(!matches!(err, stribeck::calc::CalcError::Internal(_)), "{err:?}");
+            }
+            Err(other) => prop_assert!(false, "{other:?}"),
+        }
+    }
+}
