@@ -247,11 +247,11 @@ fn parse_pad(spec: &HydrostaticPadSpec, errors: &mut Vec<FieldError>) -> Option<
     let before = errors.len();
     let mut values = Vec::new();
     for (name, value) in fields {
-        let pointer = format!("/pad/{name}");
+        let pointer = || format!("/pad/{name}");
         match (wanted.contains(&name), value) {
-            (true, None) => errors.push(FieldError::new(pointer, "required for this kind")),
+            (true, None) => errors.push(FieldError::new(pointer(), "required for this kind")),
             (false, Some(_)) => errors.push(FieldError::new(
-                pointer,
+                pointer(),
                 format!(
                     "not a dimension of this kind (it takes {})",
                     wanted.join(", ")
@@ -266,10 +266,10 @@ fn parse_pad(spec: &HydrostaticPadSpec, errors: &mut Vec<FieldError>) -> Option<
                     _ => MAX_SIZE_M,
                 };
                 if v > max {
-                    errors.push(FieldError::new(pointer, format!("must be at most {max}")));
+                    errors.push(FieldError::new(pointer(), format!("must be at most {max}")));
                 } else if name == "pressure_factor" && v < 1.0 {
                     errors.push(FieldError::new(
-                        pointer,
+                        pointer(),
                         format!(
                             "must be at least 1 (A_eff cannot exceed the projected area), got {v}"
                         ),
