@@ -360,8 +360,11 @@ pub struct HydrostaticPowerPoint {
     pub supply_pressure_pa: f64,
     /// Q, m³/s.
     pub flow_m3_s: f64,
+    /// p_s Q/η_p, W.
     pub pumping_power_w: f64,
+    /// Land friction power, W.
     pub friction_power_w: f64,
+    /// Pumping + friction power, W.
     pub total_power_w: f64,
 }
 
@@ -412,9 +415,11 @@ pub struct HydrostaticMinimumPower {
     pub stiffness_n_m: f64,
     /// p_s Q/η_p, W.
     pub pumping_power_w: f64,
-    /// N·m.
+    /// Land friction torque, N·m.
     pub friction_torque_n_m: f64,
+    /// Land friction power ω T, W.
     pub friction_power_w: f64,
+    /// Pumping + friction power, W.
     pub total_power_w: f64,
     /// ζ = friction/pumping power (3 at a free optimum film).
     pub power_ratio: f64,
