@@ -1013,7 +1013,12 @@ impl Calculation for HydrostaticPad {
                 ..
             }
         );
-        ctx.report(SolverReport::closed_form("hydrostatic_closed_form"));
+        // A closed form, or with the thermal effect a Brent root in the film temperature whose
+        // every evaluation is the whole closed form.
+        ctx.report(match op.thermal_evaluations {
+            0 => SolverReport::closed_form("hydrostatic_closed_form"),
+            n => SolverReport::closed_form_search("hydrostatic_closed_form_thermal_brent", n),
+        });
         if out.numbers().iter().any(|v| !v.is_finite()) {
             return Err(CalcError::impossible(
                 "",
