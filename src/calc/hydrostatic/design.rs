@@ -71,7 +71,8 @@ pub struct HydrostaticOilLiftSpec {
     pub breakaway_coefficient: Option<Positive>,
     /// B, the lift zone's effective axial length: the pocket pattern's axial extent plus half
     /// the remaining bearing length, m (> 0, at most L). With it the equilibrium feed pressure
-    /// after lift (Eq. 10.45) and the lift pump's power follow.
+    /// after lift (Eq. 10.45, as printed and unverified: see the warning) and the lift pump's
+    /// power follow.
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.3)]
     pub lift_zone_length_m: Option<Positive>,
 }
@@ -359,11 +360,11 @@ pub struct HydrostaticPowerPoint {
     pub supply_pressure_pa: f64,
     /// Q, m³/s.
     pub flow_m3_s: f64,
-    /// Pumping power p_s Q/η_p, W.
+    /// p_s Q/η_p, W.
     pub pumping_power_w: f64,
     /// Land friction power, W.
     pub friction_power_w: f64,
-    /// Pumping plus friction, W.
+    /// Pumping + friction power, W.
     pub total_power_w: f64,
 }
 
@@ -414,11 +415,11 @@ pub struct HydrostaticMinimumPower {
     pub stiffness_n_m: f64,
     /// p_s Q/η_p, W.
     pub pumping_power_w: f64,
-    /// N·m.
+    /// Land friction torque, N·m.
     pub friction_torque_n_m: f64,
     /// Land friction power ω T, W.
     pub friction_power_w: f64,
-    /// Pumping plus friction, W.
+    /// Pumping + friction power, W.
     pub total_power_w: f64,
     /// ζ = friction/pumping power (3 at a free optimum film).
     pub power_ratio: f64,
@@ -601,6 +602,9 @@ impl Calculation for HydrostaticDesign {
                 }
                 let r = lift::lift(&l);
                 let ratio = r.equilibrium_pressure.map(|p| r.breakaway_pressure / p);
+                if r.equilibrium_pressure.is_some() {
+                    ctx.warn("equilibrium_pressure_unverified", "Eq. 10.45 is evaluated as printed; the book evaluates it in no example and it could not be checked (with Ex 10.4's bearing and a lift zone of 0.3 m it exceeds the breakaway pressure, against the text's rule that breakaway is 1.2 to 4 times it): treat it as an estimate");
+                }
                 if let Some(k) = ratio.filter(|k| !(1.2..=4.0).contains(k)) {
                     ctx.warn("breakaway_ratio_unusual", format!("breakaway pressure is {k:.4} times the equilibrium pressure; practice gives 1.2 to 4 (Khonsari & Booser §10.8): check k_BA and the lift zone length"));
                 }

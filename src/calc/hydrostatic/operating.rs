@@ -259,6 +259,8 @@ pub struct Operating {
     /// The restrictor's (inlet) viscosity and density.
     pub inlet_viscosity_pa_s: f64,
     pub inlet_density_kg_m3: f64,
+    /// Evaluations of the pad in the thermal root (0: closed form, no search).
+    pub thermal_evaluations: u32,
     pub notes: Notes,
 }
 
@@ -378,6 +380,7 @@ fn at(case: &Case, t_film: f64) -> Result<Operating, CalcError> {
         film_viscosity_pa_s: mu,
         inlet_viscosity_pa_s: mu_in,
         inlet_density_kg_m3: rho,
+        thermal_evaluations: 0,
         notes: Notes::default(),
     })
 }
@@ -441,11 +444,15 @@ fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
     let hi = (t_in + 0.5 * rise).min(crate::calc::quantity::Celsius::MAX);
     let mut failure = None;
-    let mut residual = |t: f64| match at(case, t) {
-        Ok(op) => t - t_in - 0.5 * op.power.temperature_rise,
-        Err(e) => {
-            failure.get_or_insert(e);
-            f64::NAN
+    let mut evaluations = 0;
+    let mut residual = |t: f64| {
+        evaluations += 1;
+        match at(case, t) {
+            Ok(op) => t - t_in - 0.5 * op.power.temperature_rise,
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
         }
     };
     let stop = Stopping {
@@ -457,7 +464,10 @@ fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
         return Err(e);
     }
     match root {
-        Ok(root) => at(case, root.x),
+        Ok(root) => at(case, root.x).map(|op| Operating {
+            thermal_evaluations: evaluations + 1,
+            ..op
+        }),
         Err(RootError::NoSignChange { .. }) => Err(CalcError::impossible(
             "/temperature_c",
             format!(

@@ -247,11 +247,11 @@ fn parse_pad(spec: &HydrostaticPadSpec, errors: &mut Vec<FieldError>) -> Option<
     let before = errors.len();
     let mut values = Vec::new();
     for (name, value) in fields {
-        let pointer = format!("/pad/{name}");
+        let pointer = || format!("/pad/{name}");
         match (wanted.contains(&name), value) {
-            (true, None) => errors.push(FieldError::new(pointer, "required for this kind")),
+            (true, None) => errors.push(FieldError::new(pointer(), "required for this kind")),
             (false, Some(_)) => errors.push(FieldError::new(
-                pointer,
+                pointer(),
                 format!(
                     "not a dimension of this kind (it takes {})",
                     wanted.join(", ")
@@ -266,10 +266,10 @@ fn parse_pad(spec: &HydrostaticPadSpec, errors: &mut Vec<FieldError>) -> Option<
                     _ => MAX_SIZE_M,
                 };
                 if v > max {
-                    errors.push(FieldError::new(pointer, format!("must be at most {max}")));
+                    errors.push(FieldError::new(pointer(), format!("must be at most {max}")));
                 } else if name == "pressure_factor" && v < 1.0 {
                     errors.push(FieldError::new(
-                        pointer,
+                        pointer(),
                         format!(
                             "must be at least 1 (A_eff cannot exceed the projected area), got {v}"
                         ),
@@ -1013,7 +1013,12 @@ impl Calculation for HydrostaticPad {
                 ..
             }
         );
-        ctx.report(SolverReport::closed_form("hydrostatic_closed_form"));
+        // A closed form, or with the thermal effect a Brent root in the film temperature whose
+        // every evaluation is the whole closed form.
+        ctx.report(match op.thermal_evaluations {
+            0 => SolverReport::closed_form("hydrostatic_closed_form"),
+            n => SolverReport::closed_form_search("hydrostatic_closed_form_thermal_brent", n),
+        });
         if out.numbers().iter().any(|v| !v.is_finite()) {
             return Err(CalcError::impossible(
                 "",

@@ -410,6 +410,13 @@ fn thermal_effect_finds_the_mean_film_temperature() {
     assert!(result_field(&hot, "viscosity_pa_s") < result_field(&cold, "viscosity_pa_s"));
     assert!(result_field(&hot, "flow_m3_s") > result_field(&cold, "flow_m3_s"));
     assert_eq!(hot["effects"]["thermal"]["model"], "mean_film_temperature");
+    // The root's work is reported; the isothermal pad is a closed form.
+    assert!(
+        hot["solver"]["iterations"].as_u64().unwrap() > 1,
+        "{}",
+        hot["solver"]
+    );
+    assert_eq!(cold["solver"]["iterations"], 0);
     // A constant viscosity: not applicable.
     b["lubricant"] = json!({"viscosity_pa_s": 0.05});
     let v = ok::<HydrostaticPad>(&b);
