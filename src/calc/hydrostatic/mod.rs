@@ -4,6 +4,7 @@
 //! - `pad`: the `/v1/hydrostatic-bearings/pad` room (wire);
 //! - `design`: the `/v1/hydrostatic-bearings/design` room (wire): minimum power, oil lift;
 //! - `operating`: a pad at its operating point: the determinate set solved, stiffness, effects;
+//! - `point`: the operating point itself (film, load, pressures, flow);
 //! - `geometry`: A_eff, the flow coefficient and the land drag of each pad kind;
 //! - `restrictor`: constant flow, capillary, orifice: laws, sizes, optimum pressure ratios;
 //! - `power`: pumping, land friction, temperature rise;
@@ -16,5 +17,6 @@ pub mod lift;
 pub mod operating;
 pub mod optimum;
 pub mod pad;
+pub mod point;
 pub mod power;
 pub mod restrictor;

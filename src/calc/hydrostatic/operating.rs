@@ -8,6 +8,7 @@
 //! when nothing ties p_r to the film (constant flow, or a restrictor still to be sized).
 
 use super::geometry::{Drag, Geometry};
+use super::point::Point;
 use super::power::{self, Motion, Power};
 use super::restrictor::{self, Kind, Law};
 use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
@@ -93,23 +94,6 @@ pub struct Film {
     pub area: f64,
     /// c₂ = B̄/μ, m/(Pa·s): Q = c₂ h³ p_r.
     pub c2: f64,
-}
-
-/// The operating point: SI throughout.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Point {
-    pub film: f64,
-    pub load: f64,
-    pub supply: f64,
-    pub recess: f64,
-    pub flow: f64,
-}
-
-impl Point {
-    /// m = p_r/p_s.
-    pub fn ratio(&self) -> f64 {
-        self.recess / self.supply
-    }
 }
 
 /// The point where `known` holds, in closed form. Refusals name the request field at fault.

@@ -3,7 +3,7 @@
 //! ΔT = E_total/(ρ c_p Q) (§10.3; Stachowiak & Batchelor §6.4 with ζ = H_f/H_p).
 
 use super::geometry::Drag;
-use super::operating::Point;
+use super::point::Point;
 
 /// How the runner moves over the lands.
 #[derive(Debug, Clone, Copy, PartialEq)]
