@@ -2,7 +2,8 @@
 //! parse, validate, both meshes of the Richardson pair, continuation in Λ, envelope).
 //! - the gas journal at `standard`, at a given ε: under 20 ms for Λ ≤ 100, under 100 ms at
 //!   Λ = 1000;
-//! - the gas slider at `standard` (finite and infinitely wide): under 5 ms.
+//! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
+//! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
 //!
 //! `cargo bench --bench gas`.
 
@@ -46,6 +47,13 @@ fn gas(c: &mut Criterion) {
                 r#"{{"pad": {pad}, "inlet_film_m": 1e-5, "outlet_film_m": 5e-6, "sliding_speed_m_s": 10, "gas": {{"name": "air"}}}}"#
             ),
         );
+    }
+    for path in [
+        "/v1/gas-bearings/aerostatic-pad",
+        "/v1/gas-bearings/foil-journal",
+    ] {
+        let entry = find(path).unwrap();
+        request(c, &format!("{path} (its example)"), path, entry.example);
     }
     request(
         c,
