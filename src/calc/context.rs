@@ -82,6 +82,32 @@ impl CalcError {
         }
     }
 
+    /// `output` unchanged when every number in it is finite; otherwise a 422 saying that the
+    /// request's magnitudes take the result out of the floating-point range (`what` names the
+    /// inputs to look at). For closed forms whose valid inputs span more decades than an f64
+    /// result can: the limit is the arithmetic's, not the model's.
+    pub fn finite_or_out_of_range<T: serde::Serialize>(
+        output: T,
+        what: &str,
+    ) -> Result<T, CalcError> {
+        // serde_json writes a non-finite number as null, and outputs hold no other null.
+        fn has_null(v: &serde_json::Value) -> bool {
+            match v {
+                serde_json::Value::Null => true,
+                serde_json::Value::Array(a) => a.iter().any(has_null),
+                serde_json::Value::Object(o) => o.values().any(has_null),
+                _ => false,
+            }
+        }
+        match serde_json::to_value(&output) {
+            Ok(v) if !has_null(&v) => Ok(output),
+            _ => Err(CalcError::impossible(
+                "",
+                format!("these inputs take the result outside the floating-point range (a value overflows or underflows): check the magnitudes of {what}"),
+            )),
+        }
+    }
+
     /// A bracketed root search that found no root, as the answer to the request: a capped
     /// search is a 422 with its last bracket width as the residual; a bracket without a sign
     /// change or a non-finite function value is a bug of the caller (500), since rooms bracket

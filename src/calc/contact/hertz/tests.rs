@@ -651,3 +651,20 @@ fn the_model_refuses_with_typed_fields() {
         }));
     assert_eq!(refused[0].field.hertz_pointer(), "/body2/radius_x_m");
 }
+
+/// Schemathesis's find: a line 8.8e307 m long under 2e-78 N against a 2e151 m radius is valid
+/// input whose result leaves the floating-point range — a 422 that says so, not a 500.
+#[test]
+fn results_beyond_the_floating_point_range_are_422s() {
+    let request = json!({
+        "body1": {"poisson_ratio": 0.0379, "elastic_modulus_pa": 4.17e12},
+        "body2": {"poisson_ratio": -1.4e-45, "elastic_modulus_pa": 8.64e12, "radius_x_m": 2.035e151},
+        "load_n": 2.067e-78, "line": {"length_m": 8.79e307}
+    });
+    match post(&request) {
+        Err(Failure::Calc(crate::calc::CalcError::Impossible { message, .. })) => {
+            assert!(message.contains("floating-point range"), "{message}")
+        }
+        other => panic!("expected a 422, got {other:?}"),
+    }
+}

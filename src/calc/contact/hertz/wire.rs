@@ -218,7 +218,10 @@ impl Calculation for Hertz {
     type Output = HertzOutput;
 
     fn run(case: Contact, ctx: &mut Context) -> Result<HertzOutput, CalcError> {
-        Ok(HertzOutput::reported(&case.solve()?, ctx))
+        CalcError::finite_or_out_of_range(
+            HertzOutput::reported(&case.solve()?, ctx),
+            "the load, the radii and the line's length",
+        )
     }
 }
 
