@@ -251,3 +251,36 @@ proptest! {
         }
     }
 }
+
+/// Schemathesis's find: a slider at 2.7e-165 m/s (Λ ≈ 1e-171) answered 500. A bearing number
+/// below 1e-6 is refused on the speed, for the slider and the journal alike.
+#[test]
+fn vanishing_bearing_numbers_are_refused_on_the_speed() {
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    let cases = [
+        (
+            "/v1/gas-bearings/slider",
+            r#"{"pad": {"breadth_m": 0.02}, "inlet_film_m": 1e-5, "outlet_film_m": 5e-6, "sliding_speed_m_s": 2.7e-165, "gas": {"name": "air"}}"#,
+            "/sliding_speed_m_s",
+        ),
+        (
+            "/v1/gas-bearings/journal",
+            r#"{"geometry": {"diameter_m": 0.025, "length_m": 0.025, "radial_clearance_m": 1e-5}, "speed_rpm": 1e-4, "gas": {"name": "air"}, "eccentricity_ratio": 0.5}"#,
+            "/speed_rpm",
+        ),
+    ];
+    for (path, body, pointer) in cases {
+        let entry = find(path).unwrap();
+        match (entry.execute)(body.as_bytes(), far, Default::default()) {
+            Err(Failure::Invalid(errors)) => {
+                assert_eq!(errors[0].pointer, pointer);
+                assert!(
+                    errors[0].message.contains("below 1e-6"),
+                    "{}",
+                    errors[0].message
+                );
+            }
+            other => panic!("{path}: expected a 422, got {:?}", other.map(|_| ())),
+        }
+    }
+}
