@@ -27,12 +27,6 @@ pub const MAX_ECCENTRICITY: f64 = 0.95;
 /// Smallest eccentricity ratio: the attitude angle is the direction of a vanishing load below.
 pub const MIN_ECCENTRICITY: f64 = 1e-4;
 
-/// Largest bearing number accepted (as the slider: P H = const to 0.1 % beyond).
-pub const MAX_BEARING_NUMBER: f64 = 1.0e4;
-/// Smallest bearing number accepted: below it the film's pressure rises less than a millionth
-/// of ambient (W̄ ∝ Λ as Λ → 0), a film that carries nothing worth computing.
-pub const MIN_BEARING_NUMBER: f64 = 1.0e-6;
-
 /// Request. Give exactly one of `eccentricity_ratio` and `load_n`.
 #[derive(Debug, Clone, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -175,19 +169,13 @@ impl Validate for GasJournalInput {
             method,
             include_field: self.include_field,
         };
-        let lambda = case.bearing_number();
-        if lambda.is_nan() || lambda > MAX_BEARING_NUMBER {
-            return Err(vec![FieldError::new(
-                "/speed_rpm",
-                format!("the bearing number Λ = 6μω(R/C)²/p_a = {lambda:.4e} exceeds {MAX_BEARING_NUMBER:e}: the film is at Table 11.4's Λ → ∞ limit"),
-            )]);
-        }
-        if lambda < MIN_BEARING_NUMBER {
-            return Err(vec![FieldError::new(
-                "/speed_rpm",
-                format!("the bearing number Λ = 6μω(R/C)²/p_a = {lambda:.4e} is below {MIN_BEARING_NUMBER:e}: the film's pressure rise is below a millionth of ambient and it carries next to nothing (raise the speed or thin the film)"),
-            )]);
-        }
+        method::check_bearing_number(
+            case.bearing_number(),
+            "/speed_rpm",
+            "6μω(R/C)²/p_a",
+            "the film is at Table 11.4's Λ → ∞ limit",
+        )
+        .map_err(|e| vec![e])?;
         Ok(case)
     }
 }

@@ -4,6 +4,37 @@
 use crate::calc::FieldError;
 use crate::fidelity::{FidelityRequest, Level};
 
+/// Largest bearing number accepted: the solver is validated to Λ = 1000 (docs/accuracy.md) and
+/// stays stable beyond; past 10⁴ the film is at its Λ → ∞ limit (P H = const) to 0.1 % anyway.
+pub const MAX_BEARING_NUMBER: f64 = 1.0e4;
+/// Smallest bearing number accepted: below it the film's pressure rises less than a millionth
+/// of ambient (W̄ ∝ Λ as Λ → 0), a film that carries nothing worth computing.
+pub const MIN_BEARING_NUMBER: f64 = 1.0e-6;
+
+/// The 422 of a bearing number Λ outside [`MIN_BEARING_NUMBER`, `MAX_BEARING_NUMBER`], on the
+/// speed field at `pointer`; `definition` is the film's Λ formula and `limit` names its
+/// Λ → ∞ limit.
+pub fn check_bearing_number(
+    lambda: f64,
+    pointer: &str,
+    definition: &str,
+    limit: &str,
+) -> Result<(), FieldError> {
+    if lambda.is_nan() || lambda > MAX_BEARING_NUMBER {
+        return Err(FieldError::new(
+            pointer,
+            format!("the bearing number Λ = {definition} = {lambda:.4e} exceeds {MAX_BEARING_NUMBER:e}: {limit}"),
+        ));
+    }
+    if lambda < MIN_BEARING_NUMBER {
+        return Err(FieldError::new(
+            pointer,
+            format!("the bearing number Λ = {definition} = {lambda:.4e} is below {MIN_BEARING_NUMBER:e}: the film's pressure rise is below a millionth of ambient and it carries next to nothing (raise the speed or thin the film)"),
+        ));
+    }
+    Ok(())
+}
+
 /// Cells along the sliding direction (x) and across the half-width (y; 0 for an infinitely
 /// wide film).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]

@@ -14,13 +14,6 @@ use crate::fidelity::{FidelityRequest, Level};
 
 pub struct GasSlider;
 
-/// Largest bearing number accepted: the solver is validated to Λ = 1000 (docs/accuracy.md)
-/// and stays stable beyond; past 10⁴ the film is P H = const to 0.1 % anyway.
-pub const MAX_BEARING_NUMBER: f64 = 1.0e4;
-/// Smallest bearing number accepted: below it the film's pressure rises less than a millionth
-/// of ambient (W̄ ∝ Λ as Λ → 0), a film that carries nothing worth computing.
-pub const MIN_BEARING_NUMBER: f64 = 1.0e-6;
-
 /// The pad: B along the sliding direction, L across it.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -181,19 +174,13 @@ impl Validate for GasSliderInput {
             method,
             include_field: self.include_field,
         };
-        let lambda = case.bearing_number();
-        if lambda.is_nan() || lambda > MAX_BEARING_NUMBER {
-            return Err(vec![FieldError::new(
-                "/sliding_speed_m_s",
-                format!("the bearing number Λ = 6μUB/(p_a h2²) = {lambda:.4e} exceeds {MAX_BEARING_NUMBER:e}: the film is P H = const (Table 11.3's Λ → ∞ limit) to better than 0.1 %"),
-            )]);
-        }
-        if lambda < MIN_BEARING_NUMBER {
-            return Err(vec![FieldError::new(
-                "/sliding_speed_m_s",
-                format!("the bearing number Λ = 6μUB/(p_a h2²) = {lambda:.4e} is below {MIN_BEARING_NUMBER:e}: the film's pressure rise is below a millionth of ambient and it carries next to nothing (raise the speed or thin the film)"),
-            )]);
-        }
+        method::check_bearing_number(
+            case.bearing_number(),
+            "/sliding_speed_m_s",
+            "6μUB/(p_a h2²)",
+            "the film is P H = const (Table 11.3's Λ → ∞ limit) to better than 0.1 %",
+        )
+        .map_err(|e| vec![e])?;
         Ok(case)
     }
 }
