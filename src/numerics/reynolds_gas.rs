@@ -212,6 +212,31 @@ fn bernoulli_slope(z: f64) -> f64 {
     }
 }
 
+/// A face's flux f out of node a into node b, with its derivatives (∂f/∂p_a, ∂f/∂p_b), times
+/// the face's `width`: added to a's residual and taken from b's, where each is an unknown.
+fn scatter(
+    r: &mut [f64],
+    jac: &mut Band,
+    (ia, ib): (Option<usize>, Option<usize>),
+    (f, dfa, dfb): (f64, f64, f64),
+    width: f64,
+) {
+    if let Some(ia) = ia {
+        r[ia] += f * width;
+        jac.add(ia, ia, dfa * width);
+        if let Some(ib) = ib {
+            jac.add(ia, ib, dfb * width);
+        }
+    }
+    if let Some(ib) = ib {
+        r[ib] -= f * width;
+        jac.add(ib, ib, -dfb * width);
+        if let Some(ia) = ia {
+            jac.add(ib, ia, -dfa * width);
+        }
+    }
+}
+
 /// Mass flux through an x-face (per unit height), and its derivatives by P_w and P_e.
 /// `dx` the node spacing, `hw`, `he` the node films, `hf` the face film.
 #[allow(clippy::too_many_arguments)]
@@ -347,20 +372,7 @@ impl System<'_> {
                 );
                 let hy = g.cv_y(j);
                 let (ia, ib) = (nb.index(i, j), nb.index(i + 1, j));
-                if let Some(ia) = ia {
-                    r[ia] += f * hy;
-                    jac.add(ia, ia, dfa * hy);
-                    if let Some(ib) = ib {
-                        jac.add(ia, ib, dfb * hy);
-                    }
-                }
-                if let Some(ib) = ib {
-                    r[ib] -= f * hy;
-                    jac.add(ib, ib, -dfb * hy);
-                    if let Some(ia) = ia {
-                        jac.add(ib, ia, -dfa * hy);
-                    }
-                }
+                scatter(&mut r, &mut jac, (ia, ib), (f, dfa, dfb), hy);
             }
         }
         // y faces.
@@ -374,20 +386,7 @@ impl System<'_> {
                 let dy = g.y[j + 1] - g.y[j];
                 let (f, dfa, dfb) = y_flux(kn, dy, (p[a], p[b]), pr.h_y_faces[i * (ny1 - 1) + j]);
                 let (ia, ib) = (nb.index(i, j), nb.index(i, j + 1));
-                if let Some(ia) = ia {
-                    r[ia] += f * hx;
-                    jac.add(ia, ia, dfa * hx);
-                    if let Some(ib) = ib {
-                        jac.add(ia, ib, dfb * hx);
-                    }
-                }
-                if let Some(ib) = ib {
-                    r[ib] -= f * hx;
-                    jac.add(ib, ib, -dfb * hx);
-                    if let Some(ia) = ia {
-                        jac.add(ib, ia, -dfa * hx);
-                    }
-                }
+                scatter(&mut r, &mut jac, (ia, ib), (f, dfa, dfb), hx);
             }
         }
         let norm = r
