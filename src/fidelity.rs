@@ -49,6 +49,8 @@ pub enum IterationUnit {
     RootSearchSteps,
     /// Evaluations of the inner model (for example whole film solves of an outer search).
     Evaluations,
+    /// Attempted steps of a time integrator (accepted and rejected).
+    TimeSteps,
 }
 
 // Filled by the solver driver (`numerics::driver`); a room adds only the fidelity, the grid and
@@ -83,8 +85,21 @@ pub struct SolverReport {
     /// stability threshold included; a linear response about a solved film counts as one).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub film_solves: Option<u32>,
+    /// A time integrator's step control, where the method is one.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub time_integration: Option<Box<TimeIntegration>>,
     /// Wall time of the calculation in milliseconds (parsing and serialisation excluded).
     pub elapsed_ms: f64,
+}
+
+/// How a time integrator controlled its steps (its `iterations` are the attempted steps).
+#[derive(Debug, Clone, PartialEq, Serialize, ToSchema)]
+pub struct TimeIntegration {
+    /// Steps rejected (the local error estimate above the tolerance, a stage outside the
+    /// model's domain, or Newton not converging); they are among the `iterations`.
+    pub rejected_steps: u32,
+    /// The relative tolerance every accepted step's local error estimate met.
+    pub relative_tolerance: f64,
 }
 
 impl SolverReport {
@@ -101,6 +116,7 @@ impl SolverReport {
             residual: None,
             error_estimate: None,
             film_solves: None,
+            time_integration: None,
             elapsed_ms: 0.0,
         }
     }

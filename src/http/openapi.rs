@@ -140,6 +140,8 @@ fn build() -> OpenApi {
     push(SolverReport::name(), SolverReport::schema());
     push(CalculationInfo::name(), CalculationInfo::schema());
     push(CalculationList::name(), CalculationList::schema());
+    // The report's own parts (its units, stop reasons and step control).
+    SolverReport::schemas(&mut schemas);
 
     let mut paths = PathsBuilder::new();
     let before_rooms = schemas.len();

@@ -248,6 +248,7 @@ impl Driver {
             residual: residual.is_finite().then_some(residual),
             error_estimate: None,
             film_solves: None,
+            time_integration: None,
             elapsed_ms: started.elapsed().as_secs_f64() * 1e3,
         }
     }

@@ -10,6 +10,7 @@ pub mod half_space;
 pub mod interpolate;
 pub mod multigrid;
 pub mod newton;
+pub mod ode;
 pub mod optimise;
 pub mod quadrature;
 pub mod refine;
