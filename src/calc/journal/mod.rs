@@ -7,6 +7,7 @@
 //! - `closed_form`: infinitely short and long bearings;
 //! - `eccentricity`: the eccentricity ratio ε, checked once;
 //! - `dynamics`: stiffness, damping and the whirl threshold;
+//! - `moving_film`: the short film's force on a moving journal (orbits);
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
@@ -15,6 +16,7 @@ pub mod eccentricity;
 pub mod feed;
 pub mod feed_spec;
 pub mod film;
+pub mod moving_film;
 pub mod operating;
 pub mod performance;
 pub mod plain;
