@@ -27,6 +27,7 @@
 use std::f64::consts::PI;
 
 use crate::numerics::optimise::brent_minimise;
+use crate::numerics::roots::{brent, Stopping};
 
 /// Which part of the short film carries pressure.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
@@ -128,6 +129,55 @@ impl ShortFilm {
         let fb = -(sc * wa + ss * wb);
         let force = [fa * c - fb * s, fa * s + fb * c];
         force.iter().all(|f| f.is_finite()).then_some(force)
+    }
+
+    /// Booker's mobility: the squeeze vector w̄ at which the film carries `load` (F̄_film =
+    /// −F̄_load), for a massless journal. The half films and the full film are linear in w̄ at a
+    /// fixed arc (a 2 × 2 solve); the π-film's arc turns with w̄, so its direction ψ is the root
+    /// of the angle between M(ψ)ŵ(ψ) and the load, bracketed within ±π/2 of the load because
+    /// M is positive definite (M ŵ stays within 90° of ŵ). None at contact.
+    #[must_use]
+    pub fn squeeze_for(&self, position: [f64; 2], load: [f64; 2]) -> Option<[f64; 2]> {
+        let magnitude = load[0].hypot(load[1]);
+        if magnitude == 0.0 {
+            return self.force(position, [0.0, 0.0]).map(|_| [0.0, 0.0]);
+        }
+        // −F̄_film(ŵ) for a unit squeeze along ψ.
+        let response = |psi: f64| -> Option<[f64; 2]> {
+            let f = self.force(position, [psi.cos(), psi.sin()])?;
+            Some([-f[0], -f[1]])
+        };
+        let direction = if self.arc == ShortArc::PiFilm {
+            let target = load[1].atan2(load[0]);
+            // Continuous angle of the response, unwrapped about ψ (it lies within ±π/2).
+            let miss = |psi: f64| match response(psi) {
+                Some(r) => {
+                    let turn = (r[1].atan2(r[0]) - psi + PI).rem_euclid(2.0 * PI) - PI;
+                    psi + turn - target
+                }
+                None => f64::NAN,
+            };
+            let stop = Stopping {
+                x_tolerance: 1e-13,
+                max_iterations: 100,
+            };
+            brent(miss, target - 0.5 * PI, target + 0.5 * PI, stop)
+                .ok()?
+                .x
+        } else {
+            // Linear: solve M w̄ = F̄ from the responses to the two unit squeezes.
+            let (rx, ry) = (response(0.0)?, response(0.5 * PI)?);
+            let det = rx[0] * ry[1] - ry[0] * rx[1];
+            let w = [
+                (load[0] * ry[1] - ry[0] * load[1]) / det,
+                (rx[0] * load[1] - load[0] * rx[1]) / det,
+            ];
+            return w.iter().all(|v| v.is_finite()).then_some(w);
+        };
+        let unit = response(direction)?;
+        let scale = magnitude / unit[0].hypot(unit[1]);
+        let w = [scale * direction.cos(), scale * direction.sin()];
+        w.iter().all(|v| v.is_finite()).then_some(w)
     }
 
     /// The peak film pressure p̄ = max 1.5 (w̄·n)/h̄³ over the active arc (mid-plane): the best
@@ -284,6 +334,27 @@ mod tests {
         assert!((b[0] - 3.0 * a[0]).abs() < 1e-12 && (b[1] - 3.0 * a[1]).abs() < 1e-12);
         let near = f.force(r, [0.2, 0.1 + 1e-9]).unwrap();
         assert!((near[0] - a[0]).abs() < 1e-7 && (near[1] - a[1]).abs() < 1e-7);
+    }
+
+    #[test]
+    fn the_mobility_squeeze_carries_the_load_for_every_film() {
+        // F̄_film(r̄, w̄) = −F̄ at the w̄ found, over positions and load directions.
+        for arc in [ShortArc::PiFilm, ShortArc::FixedArc, ShortArc::Full] {
+            for (r, load) in [
+                ([0.0, 0.0], [0.0, -3.0]),
+                ([0.3, -0.5], [1.0, -7.0]),
+                ([-0.9, 0.2], [4.0, 0.5]),
+                ([0.1, 0.97], [-2.0, -20.0]),
+            ] {
+                let w = film(arc).squeeze_for(r, load).unwrap();
+                let f = film(arc).force(r, w).unwrap();
+                let scale = load[0].hypot(load[1]);
+                assert!(
+                    (f[0] + load[0]).abs() < 1e-9 * scale && (f[1] + load[1]).abs() < 1e-9 * scale,
+                    "{arc:?} {r:?}: {f:?}"
+                );
+            }
+        }
     }
 
     #[test]
