@@ -7,7 +7,8 @@
 //! - `closed_form`: infinitely short and long bearings;
 //! - `eccentricity`: the eccentricity ratio ε, checked once;
 //! - `dynamics`: stiffness, damping and the whirl threshold;
-//! - `moving_film`: the short film's force on a moving journal (orbits);
+//! - `moving_film`: the short film's force on a moving journal; `load_law`: dynamic loads;
+//!   `orbit`: the journal's orbit under them (stiff time integration);
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
@@ -16,7 +17,9 @@ pub mod eccentricity;
 pub mod feed;
 pub mod feed_spec;
 pub mod film;
+pub mod load_law;
 pub mod moving_film;
 pub mod operating;
+pub mod orbit;
 pub mod performance;
 pub mod plain;

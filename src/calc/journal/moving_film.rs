@@ -96,7 +96,7 @@ impl ShortFilm {
     #[must_use]
     pub fn force(&self, position: [f64; 2], squeeze: [f64; 2]) -> Option<[f64; 2]> {
         let eps = position[0].hypot(position[1]);
-        if !(eps < CONTACT) || !squeeze.iter().all(|w| w.is_finite()) {
+        if eps.is_nan() || eps >= CONTACT || !squeeze.iter().all(|w| w.is_finite()) {
             return None;
         }
         // Line-of-centres frame: a along r̄ (towards the minimum film), b = k × a.
@@ -186,7 +186,7 @@ impl ShortFilm {
     pub fn peak_pressure(&self, position: [f64; 2], squeeze: [f64; 2]) -> f64 {
         const POINTS: usize = 96;
         let eps = position[0].hypot(position[1]);
-        if !(eps < CONTACT) {
+        if eps.is_nan() || eps >= CONTACT {
             return f64::INFINITY;
         }
         let fixed_from = if eps > 0.0 {
