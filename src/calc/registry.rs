@@ -25,6 +25,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::viscosity_index::ViscosityIndex>(),
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>().numerical(),
+    Entry::of::<journal::dynamic::DynamicJournal>().numerical(),
     Entry::of::<thrust::fixed_pad::FixedPad>().numerical(),
     Entry::of::<thrust::tilting_pad::TiltingPad>().numerical(),
     Entry::of::<thrust::bearing::Bearing>().numerical(),

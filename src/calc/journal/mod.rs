@@ -1,6 +1,7 @@
 //! Hydrodynamic journal bearings (Khonsari & Booser ch. 8; Stachowiak & Batchelor ch. 4–5).
 //!
 //! - `plain`: the `/v1/journal-bearings/plain` room (request, response);
+//! - `dynamic`: the `/v1/journal-bearings/dynamic` room (wire of the orbit);
 //! - `operating`: from the parsed case to the dimensional result, effects decided;
 //! - `performance`: dimensionless performance at ε by closed form or numerics, equilibrium;
 //! - `film`: the numerical film (finite-volume Reynolds with cavitation);
@@ -12,6 +13,7 @@
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
+pub mod dynamic;
 pub mod dynamics;
 pub mod eccentricity;
 pub mod feed;
