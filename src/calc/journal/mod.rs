@@ -9,6 +9,7 @@
 //! - `dynamics`: stiffness, damping and the whirl threshold;
 //! - `moving_film`: the short film's force on a moving journal; `load_law`: dynamic loads;
 //!   `orbit`: the journal's orbit under them (stiff time integration);
+//! - `threshold`: the whirl threshold along the equilibrium locus (the `/whirl` room's model);
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
@@ -23,3 +24,4 @@ pub mod operating;
 pub mod orbit;
 pub mod performance;
 pub mod plain;
+pub mod threshold;
