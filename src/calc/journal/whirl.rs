@@ -240,6 +240,10 @@ pub struct WhirlOutput {
     /// system decays).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub stable: Option<bool>,
+    /// Given both: the rotor's mass parameter M̄ = m C ω²/W at the speed, dimensionless (Khonsari
+    /// & Booser's (C/W) M ω²; it whirls when M̄ exceeds `critical_mass_parameter`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub mass_parameter: Option<f64>,
     /// Given both: threshold mass over the rotor's mass, dimensionless (> 1: stable); absent
     /// when no mass whirls at this speed.
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -338,6 +342,7 @@ impl Calculation for Whirl {
             sommerfeld_number: None,
             min_film_thickness_m: None,
             stable: None,
+            mass_parameter: None,
             mass_margin: None,
             speed_margin: None,
             growth_rate_per_s: None,
@@ -434,6 +439,7 @@ impl Calculation for Whirl {
                 _ => v.stable,
             };
             out.stable = Some(stable);
+            out.mass_parameter = Some(rotor.mass_parameter(mass, at.state.speed_rpm));
             out.mass_margin = at.threshold_mass_kg.map(|m| m / mass);
             out.speed_margin = out
                 .threshold_speed_rpm
