@@ -435,7 +435,7 @@ impl Calculation for Whirl {
             // At k_eq = 0 (the full film) the eigenvalue of a light rotor is within rounding of
             // the axis: the threshold of 0 decides.
             let stable = match at.threshold_mass_kg {
-                Some(m) if m == 0.0 => false,
+                Some(0.0) => false,
                 _ => v.stable,
             };
             out.stable = Some(stable);

@@ -543,7 +543,7 @@ fn dynamic_coefficients_give_half_frequency_whirl_at_light_load() {
 
 /// Which part of the short-bearing film carries pressure.
 #[derive(Clone, Copy, Debug)]
-enum Arc {
+enum Extent {
     /// Where the drive G is positive: the half-Sommerfeld π film, its ends moving with the
     /// squeeze velocity (the `/whirl` room's `short_pi_film`).
     PiFilm,
@@ -558,7 +558,7 @@ enum Arc {
 /// With the line of centres at ψ and ε = |(x, y)|, the short-bearing Reynolds equation with
 /// squeeze gives ∫p dz ∝ G/h̄³, G = ε(1 − 2ψ̇) sin θ − 2ε̇ cos θ, kept on the `arc`; the
 /// force is ∫G(cos θ, sin θ)/h̄³ dθ along (towards e, 90° ahead of e).
-fn short_film_force(position: [f64; 2], velocity: [f64; 2], arc: Arc) -> [f64; 2] {
+fn short_film_force(position: [f64; 2], velocity: [f64; 2], arc: Extent) -> [f64; 2] {
     let eps = position[0].hypot(position[1]);
     let (sin_psi, cos_psi) = position[1].atan2(position[0]).sin_cos();
     let eps_rate = velocity[0] * cos_psi + velocity[1] * sin_psi;
@@ -568,12 +568,12 @@ fn short_film_force(position: [f64; 2], velocity: [f64; 2], arc: Arc) -> [f64; 2
     // G = a sin θ − b cos θ is positive on (θ₀, θ₀ + π), θ₀ = atan2(b, a): the π film's ends
     // are found exactly, so the quadrature never straddles a kink.
     let (from, to) = match arc {
-        Arc::PiFilm => {
+        Extent::PiFilm => {
             let start = b.atan2(a);
             (start, start + PI)
         }
-        Arc::FixedArc => (0.0, PI),
-        Arc::Full => (0.0, 2.0 * PI),
+        Extent::FixedArc => (0.0, PI),
+        Extent::Full => (0.0, 2.0 * PI),
     };
     let along = simpson(|t| drive(t) * t.cos(), from, to, 4000);
     let ahead = simpson(|t| drive(t) * t.sin(), from, to, 4000);
@@ -585,7 +585,7 @@ fn short_film_force(position: [f64; 2], velocity: [f64; 2], arc: Arc) -> [f64; 2
 
 /// Stiffness and damping of `arc`'s film at equilibrium at ε, by central differences of
 /// [`short_film_force`], with the attitude the film's static force sets.
-fn differentiated(eps: f64, attitude: f64, arc: Arc) -> ([f64; 4], [f64; 4]) {
+fn differentiated(eps: f64, attitude: f64, arc: Extent) -> ([f64; 4], [f64; 4]) {
     let step = 1e-6;
     let at_rest = [eps * attitude.cos(), eps * attitude.sin()];
     let static_force = short_film_force(at_rest, [0.0, 0.0], arc);
@@ -639,8 +639,8 @@ fn moving_and_fixed_arcs_have_the_same_coefficients() {
             .unwrap()
             .attitude_angle_rad;
         let closed = short_bearing_dynamic_coefficients(eps);
-        let moving = differentiated(eps, attitude, Arc::PiFilm);
-        let fixed = differentiated(eps, attitude, Arc::FixedArc);
+        let moving = differentiated(eps, attitude, Extent::PiFilm);
+        let fixed = differentiated(eps, attitude, Extent::FixedArc);
         assert_coefficients(&format!("π film at ε = {eps}"), moving, closed);
         assert_coefficients(&format!("fixed arc at ε = {eps}"), fixed, closed);
         assert_eq!(closed.1[1], closed.1[2]);
@@ -657,7 +657,7 @@ fn full_film_coefficients_are_the_derivatives_of_the_full_film_force() {
             .attitude_angle_rad;
         assert_close("full-film attitude", attitude, PI / 2.0, 1e-12);
         let closed = short_full_sommerfeld_dynamic_coefficients(eps);
-        let numerical = differentiated(eps, attitude, Arc::Full);
+        let numerical = differentiated(eps, attitude, Extent::Full);
         assert_coefficients(&format!("full film at ε = {eps}"), numerical, closed);
     }
 }
