@@ -26,6 +26,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<lubricant::properties::Properties>(),
     Entry::of::<journal::plain::PlainJournal>().numerical(),
     Entry::of::<journal::dynamic::DynamicJournal>().numerical(),
+    Entry::of::<journal::whirl::Whirl>().numerical(),
     Entry::of::<thrust::fixed_pad::FixedPad>().numerical(),
     Entry::of::<thrust::tilting_pad::TiltingPad>().numerical(),
     Entry::of::<thrust::bearing::Bearing>().numerical(),
@@ -523,6 +524,7 @@ mod tests {
         for e in REGISTRY {
             let want = match e.path {
                 "/v1/journal-bearings/plain"
+                | "/v1/journal-bearings/whirl"
                 | "/v1/contacts/ehl"
                 | "/v1/squeeze-films/journal"
                 | "/v1/thrust-bearings/fixed-pad"

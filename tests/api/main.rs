@@ -11,6 +11,7 @@
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
 //! - `thrust`: thrust pads over their range: finite, conserving, balanced; errors that name the field.
 //! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
+//! - `whirl`: the whirl room's 422s, its README example, and finite answers over its range.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod admission;
@@ -25,3 +26,4 @@ mod reference_cases;
 mod service;
 mod squeeze;
 mod thrust;
+mod whirl;

@@ -200,6 +200,36 @@ pub fn short_bearing_dynamic_coefficients(eps: f64) -> ([f64; 4], [f64; 4]) {
     (stiffness, damping)
 }
 
+/// Linearised stiffness and damping of the short bearing with the full (Sommerfeld, 2π) film,
+/// dimensionless and in the frame of [`short_bearing_dynamic_coefficients`] (x along the load,
+/// y 90° ahead in the direction of rotation; k_ij = K_ij C/W, c_ij = C_ij C ω/W):
+///
+/// ```text
+/// k_xx = k_yy = 0,   k_xy = (1 + 2ε²)/[ε (1 − ε²)],   k_yx = −1/ε,
+/// c_xx = 2/ε,        c_yy = 2 (1 + 2ε²)/[ε (1 − ε²)], c_xy = c_yx = 0.
+/// ```
+///
+/// Derived here (no text prints them): the short-bearing film with squeeze, ∫p dz ∝ G/h̄³ with
+/// G the wedge-and-squeeze drive, integrated over the whole circle, where the Sommerfeld
+/// integrals ∫sin²θ/h̄³ = π/(1 − ε²)^{3/2} and ∫cos²θ/h̄³ = π(1 + 2ε²)/(1 − ε²)^{5/2}, and
+/// ∫sin²θ cos θ/h̄⁴ by parts, give every term; the load is W ∝ (ε/2)∫sin²θ/h̄³. The tests
+/// differentiate the integrated force numerically. The direct stiffnesses vanish (the full film
+/// pushes only at 90° to a displacement), so Lund's equivalent stiffness is 0 and the rotor
+/// whirls at exactly half speed for every mass: there is no stable speed (see
+/// `journal::threshold`). At ε → 0 they are the π film's light-load limits.
+pub fn short_full_sommerfeld_dynamic_coefficients(eps: f64) -> ([f64; 4], [f64; 4]) {
+    debug_assert!(
+        eps > 0.0 && eps < 1.0,
+        "eccentricity ratio {eps} outside (0, 1)"
+    );
+    let e2 = eps * eps;
+    let grown = (1.0 + 2.0 * e2) / (eps * (1.0 - e2));
+    (
+        [0.0, grown, -1.0 / eps, 0.0],
+        [2.0 / eps, 0.0, 0.0, 2.0 * grown],
+    )
+}
+
 /// Table 8.4's pressure scale is μω(R/C)²; Table 8.6's is μN_s(R/C)² = μω(R/C)²/(2π).
 const OMEGA_TO_REV_PER_S: f64 = 2.0 * PI;
 

@@ -205,7 +205,10 @@ pub fn whirl_on_shaft(c: &Coefficients, shaft_flexibility: f64) -> Whirl {
     let unstable_possible = gamma2.is_finite() && gamma2 > 0.0 && k_eq > 0.0;
     Whirl {
         equivalent_stiffness: k_eq,
-        whirl_frequency_ratio: unstable_possible.then(|| gamma2.sqrt()),
+        // k_eq = 0 (the full film's): the massless rotor's pair sits on the imaginary axis at
+        // γ, the frequency every mass whirls at as it leaves it.
+        whirl_frequency_ratio: (gamma2.is_finite() && gamma2 > 0.0 && k_eq >= 0.0)
+            .then(|| gamma2.sqrt()),
         // k_eq ≤ 0: no positive mass is stable (the critical mass is 0).
         critical_mass_parameter: if k_eq <= 0.0 {
             Some(0.0)
@@ -213,6 +216,61 @@ pub fn whirl_on_shaft(c: &Coefficients, shaft_flexibility: f64) -> Whirl {
             unstable_possible.then(|| k_eq / gamma2 / (1.0 + shaft_flexibility * k_eq))
         },
     }
+}
+
+/// The rigid rotor on the film, m ẍ + C ẋ + K x = 0, in τ = ωt and x/C: M̄ x″ + c x′ + k x = 0
+/// with M̄ = m C ω²/W (the mass parameter) and the dimensionless k, c. Its characteristic
+/// polynomial det(M̄ s² + c s + k) = a₄s⁴ + a₃s³ + a₂s² + a₁s + a₀ (s in units of ω), as
+/// [a₀, a₁, a₂, a₃, a₄]: a₄ = M̄², a₃ = M̄ (c_xx + c_yy), a₂ = M̄ (k_xx + k_yy) + c_xx c_yy −
+/// c_xy c_yx, a₁ = k_xx c_yy + k_yy c_xx − k_xy c_yx − k_yx c_xy, a₀ = k_xx k_yy − k_xy k_yx.
+pub fn characteristic_polynomial(c: &Coefficients, mass_parameter: f64) -> [f64; 5] {
+    let [kxx, kxy, kyx, kyy] = c.stiffness;
+    let [cxx, cxy, cyx, cyy] = c.damping;
+    let m = mass_parameter;
+    [
+        kxx * kyy - kxy * kyx,
+        kxx * cyy + kyy * cxx - kxy * cyx - kyx * cxy,
+        m * (kxx + kyy) + cxx * cyy - cxy * cyx,
+        m * (cxx + cyy),
+        m * m,
+    ]
+}
+
+/// Routh–Hurwitz for the quartic of [`characteristic_polynomial`]: every root has a negative
+/// real part iff every aᵢ > 0 and Δ₃ = a₃a₂a₁ − a₄a₁² − a₀a₃² > 0. Δ₃ is M̄ times a linear
+/// function of M̄ that vanishes at Lund's critical mass parameter k_eq/γ² ([`whirl`]): the
+/// same threshold, written as a test of one rotor.
+pub fn routh_hurwitz_stable(c: &Coefficients, mass_parameter: f64) -> bool {
+    let [a0, a1, a2, a3, a4] = characteristic_polynomial(c, mass_parameter);
+    let delta3 = a3 * a2 * a1 - a4 * a1 * a1 - a0 * a3 * a3;
+    [a0, a1, a2, a3, a4].iter().all(|&a| a > 0.0) && delta3 > 0.0
+}
+
+/// The four eigenvalues s of the rotor–film system in units of ω (growth rate Re s · ω, whirl
+/// frequency |Im s| · ω), from the 4×4 first-order form z′ = A z, z = (x, y, x′, y′),
+/// A = [[0, I], [−k/M̄, −c/M̄]] (nalgebra's real Schur form). `mass_parameter` > 0.
+pub fn rotor_eigenvalues(c: &Coefficients, mass_parameter: f64) -> [nalgebra::Complex<f64>; 4] {
+    let m = mass_parameter;
+    let [kxx, kxy, kyx, kyy] = c.stiffness;
+    let [cxx, cxy, cyx, cyy] = c.damping;
+    #[rustfmt::skip]
+    let a = nalgebra::Matrix4::new(
+        0.0, 0.0, 1.0, 0.0,
+        0.0, 0.0, 0.0, 1.0,
+        -kxx / m, -kxy / m, -cxx / m, -cxy / m,
+        -kyx / m, -kyy / m, -cyx / m, -cyy / m,
+    );
+    let values = a.complex_eigenvalues();
+    [values[0], values[1], values[2], values[3]]
+}
+
+/// The least damped mode of [`rotor_eigenvalues`]: (Re s, |Im s|) of the eigenvalue with the
+/// largest real part, in units of ω.
+pub fn least_stable_mode(c: &Coefficients, mass_parameter: f64) -> (f64, f64) {
+    rotor_eigenvalues(c, mass_parameter)
+        .into_iter()
+        .max_by(|a, b| a.re.total_cmp(&b.re))
+        .map_or((f64::NAN, f64::NAN), |s| (s.re, s.im.abs()))
 }
 
 #[cfg(test)]

@@ -10,6 +10,8 @@
 //! - `dynamics`: stiffness, damping and the whirl threshold;
 //! - `moving_film`: the short film's force on a moving journal; `load_law`: dynamic loads;
 //!   `orbit`: the journal's orbit under them (stiff time integration);
+//! - `threshold`: the whirl threshold along the equilibrium locus (the `/whirl` room's model);
+//! - `whirl`: the `/v1/journal-bearings/whirl` room (request, response);
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
@@ -25,3 +27,5 @@ pub mod operating;
 pub mod orbit;
 pub mod performance;
 pub mod plain;
+pub mod threshold;
+pub mod whirl;

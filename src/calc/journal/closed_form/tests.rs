@@ -541,84 +541,123 @@ fn dynamic_coefficients_give_half_frequency_whirl_at_light_load() {
     assert_close("−k_yx / c_xx", -k[2] / c[0], 0.5, 1e-6);
 }
 
-/// π-film short-bearing force on the journal centre at (x, y) moving at (ẋ, ẏ), in the
-/// frame of [`short_bearing_dynamic_coefficients`], in units μRL³/(2C²) = C = ω = 1.
+/// Which part of the short-bearing film carries pressure.
+#[derive(Clone, Copy, Debug)]
+enum Extent {
+    /// Where the drive G is positive: the half-Sommerfeld π film, its ends moving with the
+    /// squeeze velocity (the `/whirl` room's `short_pi_film`).
+    PiFilm,
+    /// 0 < θ < π from the current h_max, whatever the squeeze (`short_fixed_arc`).
+    FixedArc,
+    /// The whole circle, negative pressures kept (`short_full`).
+    Full,
+}
+
+/// Short-bearing force on the journal centre at (x, y) moving at (ẋ, ẏ), in the frame of
+/// [`short_bearing_dynamic_coefficients`], in units μRL³/(2C²) = C = ω = 1.
 /// With the line of centres at ψ and ε = |(x, y)|, the short-bearing Reynolds equation with
-/// squeeze gives ∫p dz ∝ G/h̄³, G = ε(1 − 2ψ̇) sin θ − 2ε̇ cos θ, kept on 0 < θ < π; the
+/// squeeze gives ∫p dz ∝ G/h̄³, G = ε(1 − 2ψ̇) sin θ − 2ε̇ cos θ, kept on the `arc`; the
 /// force is ∫G(cos θ, sin θ)/h̄³ dθ along (towards e, 90° ahead of e).
-fn pi_film_force(position: [f64; 2], velocity: [f64; 2]) -> [f64; 2] {
+fn short_film_force(position: [f64; 2], velocity: [f64; 2], arc: Extent) -> [f64; 2] {
     let eps = position[0].hypot(position[1]);
     let (sin_psi, cos_psi) = position[1].atan2(position[0]).sin_cos();
     let eps_rate = velocity[0] * cos_psi + velocity[1] * sin_psi;
     let eps_psi_rate = -velocity[0] * sin_psi + velocity[1] * cos_psi;
-    let drive = |t: f64| {
-        ((eps - 2.0 * eps_psi_rate) * t.sin() - 2.0 * eps_rate * t.cos())
-            / (1.0 + eps * t.cos()).powi(3)
+    let (a, b) = (eps - 2.0 * eps_psi_rate, 2.0 * eps_rate);
+    let drive = |t: f64| (a * t.sin() - b * t.cos()) / (1.0 + eps * t.cos()).powi(3);
+    // G = a sin θ − b cos θ is positive on (θ₀, θ₀ + π), θ₀ = atan2(b, a): the π film's ends
+    // are found exactly, so the quadrature never straddles a kink.
+    let (from, to) = match arc {
+        Extent::PiFilm => {
+            let start = b.atan2(a);
+            (start, start + PI)
+        }
+        Extent::FixedArc => (0.0, PI),
+        Extent::Full => (0.0, 2.0 * PI),
     };
-    let along = simpson(|t| drive(t) * t.cos(), 0.0, PI, 4000);
-    let ahead = simpson(|t| drive(t) * t.sin(), 0.0, PI, 4000);
+    let along = simpson(|t| drive(t) * t.cos(), from, to, 4000);
+    let ahead = simpson(|t| drive(t) * t.sin(), from, to, 4000);
     [
         along * cos_psi - ahead * sin_psi,
         along * sin_psi + ahead * cos_psi,
     ]
 }
 
-#[test]
-fn dynamic_coefficients_are_the_derivatives_of_the_pi_film_force() {
+/// Stiffness and damping of `arc`'s film at equilibrium at ε, by central differences of
+/// [`short_film_force`], with the attitude the film's static force sets.
+fn differentiated(eps: f64, attitude: f64, arc: Extent) -> ([f64; 4], [f64; 4]) {
     let step = 1e-6;
-    for eps in [0.1, 0.3, 0.5, 0.7, 0.85] {
+    let at_rest = [eps * attitude.cos(), eps * attitude.sin()];
+    let static_force = short_film_force(at_rest, [0.0, 0.0], arc);
+    // The static film pushes straight against the load (−x) at the attitude.
+    assert_close("F_y at rest", static_force[1], 0.0, 1e-9);
+    let load = -static_force[0];
+    assert!(load > 0.0);
+    let mut stiffness = [0.0; 4];
+    let mut damping = [0.0; 4];
+    for j in 0..2 {
+        let mut plus = at_rest;
+        let mut minus = at_rest;
+        plus[j] += step;
+        minus[j] -= step;
+        let (f_plus, f_minus) = (
+            short_film_force(plus, [0.0; 2], arc),
+            short_film_force(minus, [0.0; 2], arc),
+        );
+        let mut rate = [0.0; 2];
+        rate[j] = step;
+        let (v_plus, v_minus) = (
+            short_film_force(at_rest, rate, arc),
+            short_film_force(at_rest, rate.map(|v| -v), arc),
+        );
+        for i in 0..2 {
+            stiffness[2 * i + j] = -(f_plus[i] - f_minus[i]) / (2.0 * step) / load;
+            damping[2 * i + j] = -(v_plus[i] - v_minus[i]) / (2.0 * step) / load;
+        }
+    }
+    (stiffness, damping)
+}
+
+fn assert_coefficients(what: &str, got: ([f64; 4], [f64; 4]), want: ([f64; 4], [f64; 4])) {
+    let names = [
+        "k_xx", "k_xy", "k_yx", "k_yy", "c_xx", "c_xy", "c_yx", "c_yy",
+    ];
+    let got = got.0.iter().chain(&got.1);
+    let want = want.0.iter().chain(&want.1);
+    for ((name, g), w) in names.iter().zip(got).zip(want) {
+        assert_close(&format!("{name} {what}"), *g, *w, 1e-6 * w.abs().max(1.0));
+    }
+}
+
+/// The π film whose ends move with the squeeze and the fixed arc [0, π] have the same
+/// linearised coefficients: at equilibrium G = 0 at both ends of the arc, so the ends' motion
+/// adds nothing to first order. Both are the closed form.
+#[test]
+fn moving_and_fixed_arcs_have_the_same_coefficients() {
+    for eps in [0.05, 0.1, 0.3, 0.5, 0.7, 0.85, 0.9] {
         let attitude = short_bearing(eps, 0.25, Boundary::HalfSommerfeld)
             .unwrap()
             .attitude_angle_rad;
-        let at_rest = [eps * attitude.cos(), eps * attitude.sin()];
-        let static_force = pi_film_force(at_rest, [0.0, 0.0]);
-        // The static film pushes straight against the load (−x) at the book's attitude.
-        assert_close("F_y at rest", static_force[1], 0.0, 1e-9);
-        let load = -static_force[0];
-        assert!(load > 0.0);
-        let mut stiffness = [0.0; 4];
-        let mut damping = [0.0; 4];
-        for j in 0..2 {
-            let mut plus = at_rest;
-            let mut minus = at_rest;
-            plus[j] += step;
-            minus[j] -= step;
-            let (f_plus, f_minus) = (
-                pi_film_force(plus, [0.0; 2]),
-                pi_film_force(minus, [0.0; 2]),
-            );
-            let mut rate = [0.0; 2];
-            rate[j] = step;
-            let (v_plus, v_minus) = (
-                pi_film_force(at_rest, rate),
-                pi_film_force(at_rest, rate.map(|v| -v)),
-            );
-            for i in 0..2 {
-                stiffness[2 * i + j] = -(f_plus[i] - f_minus[i]) / (2.0 * step) / load;
-                damping[2 * i + j] = -(v_plus[i] - v_minus[i]) / (2.0 * step) / load;
-            }
-        }
-        let (k, c) = short_bearing_dynamic_coefficients(eps);
-        for (name, got, want) in ["k_xx", "k_xy", "k_yx", "k_yy"]
-            .iter()
-            .zip(k)
-            .zip(stiffness)
-            .map(|((n, g), w)| (n, g, w))
-            .chain(
-                ["c_xx", "c_xy", "c_yx", "c_yy"]
-                    .iter()
-                    .zip(c)
-                    .zip(damping)
-                    .map(|((n, g), w)| (n, g, w)),
-            )
-        {
-            assert_close(
-                &format!("{name} at ε = {eps}"),
-                got,
-                want,
-                1e-6 * want.abs().max(1.0),
-            );
-        }
-        assert_eq!(c[1], c[2]);
+        let closed = short_bearing_dynamic_coefficients(eps);
+        let moving = differentiated(eps, attitude, Extent::PiFilm);
+        let fixed = differentiated(eps, attitude, Extent::FixedArc);
+        assert_coefficients(&format!("π film at ε = {eps}"), moving, closed);
+        assert_coefficients(&format!("fixed arc at ε = {eps}"), fixed, closed);
+        assert_eq!(closed.1[1], closed.1[2]);
+    }
+}
+
+/// The full-film closed form is the derivative of the whole-circle force, at its attitude of
+/// 90°; its direct stiffnesses vanish, and with them Lund's equivalent stiffness.
+#[test]
+fn full_film_coefficients_are_the_derivatives_of_the_full_film_force() {
+    for eps in [0.05, 0.3, 0.6, 0.9] {
+        let attitude = short_bearing(eps, 0.25, Boundary::FullSommerfeld)
+            .unwrap()
+            .attitude_angle_rad;
+        assert_close("full-film attitude", attitude, PI / 2.0, 1e-12);
+        let closed = short_full_sommerfeld_dynamic_coefficients(eps);
+        let numerical = differentiated(eps, attitude, Extent::Full);
+        assert_coefficients(&format!("full film at ε = {eps}"), numerical, closed);
     }
 }

@@ -4,17 +4,18 @@
 use std::f64::consts::PI;
 
 use super::{Case, Notes, Operating, RotorStability, GRAVITY};
-use crate::calc::journal::closed_form;
 use crate::calc::journal::dynamics::{self, Coefficients};
 use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::film::FilmModel;
-use crate::calc::journal::performance::{self, Approximation, Method, MAX_ECCENTRICITY};
+use crate::calc::journal::performance::{self, Method, MAX_ECCENTRICITY};
+use crate::calc::journal::threshold;
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, StopReason};
 use crate::numerics::driver::{Driver, Verdict};
 use crate::numerics::roots::{brent, Stopping};
 
-/// Coefficients at ε for the case's method (None for the long closed form), and S there.
+/// Coefficients at ε for the case's method (None for the long closed form), and S there
+/// (`threshold::coefficients`, shared with the `/whirl` room).
 pub(super) fn coefficients_at(
     case: &Case,
     method: Method,
@@ -23,24 +24,14 @@ pub(super) fn coefficients_at(
     field: &mut Option<Vec<f64>>,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
-    let ld = case.geometry.l_over_d();
-    let eps = eccentricity.get();
-    match method {
-        Method::ClosedForm(Approximation::Short) => {
-            let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
-            let s = closed_form::short_bearing(eps, ld, closed_form::Boundary::HalfSommerfeld)
-                .map_or(f64::NAN, |p| p.sommerfeld_number);
-            Ok(Some(Coefficients {
-                stiffness,
-                damping,
-                sommerfeld_number: s,
-            }))
-        }
-        Method::ClosedForm(Approximation::Long) => Ok(None),
-        Method::Numerical { mesh, stop, .. } => {
-            dynamics::perturbation(eccentricity, ld, physics, mesh, stop, field, budget).map(Some)
-        }
-    }
+    threshold::coefficients(
+        method,
+        eccentricity,
+        case.geometry.l_over_d(),
+        physics,
+        field,
+        budget,
+    )
 }
 
 /// A point of the locus walk or the threshold search as an eccentricity ratio (they stay
@@ -209,12 +200,13 @@ pub(super) fn dynamic_coefficients(
     let mut lightest = eps;
     // First, secant steps in ln ε from the short bearing's threshold (its slope for the first
     // step); they must land on the side of the operating point the threshold lies on.
-    let seed = short_bearing_threshold(case.geometry.l_over_d(), eps, |e, s_ratio| {
-        let critical = whirl_mass(e, flexibility).map_or(f64::INFINITY, |m| m.max(1e-300));
+    let seed = threshold::short_bearing_threshold(case.geometry.l_over_d(), eps, |e, s_ratio| {
+        let critical = threshold::short_bearing_critical_mass(e, flexibility)
+            .map_or(f64::INFINITY, |m| m.max(1e-300));
         mass_parameter(omega * s_ratio) / critical
     });
     let seeded = match seed {
-        Some(start) => secant_threshold(&mut margin, start, budget)?.filter(|&e| {
+        Some(start) => threshold::secant_threshold(&mut margin, start, budget)?.filter(|&e| {
             if stable_now {
                 e < eps
             } else {
@@ -327,90 +319,4 @@ pub(super) fn dynamic_coefficients(
         statement,
     };
     Ok(Some((coefficients, stability)))
-}
-
-/// The short bearing's critical mass parameter at ε (its closed-form coefficients), None when
-/// its film cannot whirl.
-fn whirl_mass(eps: f64, flexibility: f64) -> Option<f64> {
-    let (stiffness, damping) = closed_form::short_bearing_dynamic_coefficients(eps);
-    let c = Coefficients {
-        stiffness,
-        damping,
-        sommerfeld_number: f64::NAN,
-    };
-    dynamics::whirl_on_shaft(&c, flexibility).critical_mass_parameter
-}
-
-/// Where the short bearing's locus crosses its threshold — ln ε, and the slope of its margin
-/// ln(m̄_c/m̄) in ln ε there — from `ratio(ε, S(ε)/S(ε_op))` = m̄/m̄_c (closed forms only,
-/// microseconds); None when it does not cross between 10⁻³ and MAX_ECCENTRICITY.
-fn short_bearing_threshold(
-    l_over_d: f64,
-    eps_op: f64,
-    ratio: impl Fn(f64, f64) -> f64,
-) -> Option<(f64, f64)> {
-    let s = |e: f64| {
-        closed_form::short_bearing(e, l_over_d, closed_form::Boundary::HalfSommerfeld)
-            .map_or(f64::NAN, |p| p.sommerfeld_number)
-    };
-    let s_op = s(eps_op);
-    let margin = |x: f64| {
-        let e = x.exp();
-        (-ratio(e, s(e) / s_op).ln()).clamp(-50.0, 50.0)
-    };
-    let root = brent(
-        margin,
-        1e-3f64.ln(),
-        MAX_ECCENTRICITY.ln(),
-        Stopping {
-            x_tolerance: 1e-4,
-            max_iterations: 100,
-        },
-    )
-    .ok()?;
-    let h = 1e-3;
-    let slope = (margin(root.x + h) - margin(root.x - h)) / (2.0 * h);
-    slope.is_finite().then_some((root.x, slope))
-}
-
-/// Secant steps on the margin in x = ln ε from `(x, slope)` until the next step is below
-/// 10⁻³ (ε to 0.1 %): the threshold ε, or None when the steps leave the locus or do not settle
-/// in eight (the caller then walks the locus).
-fn secant_threshold(
-    margin: &mut impl FnMut(f64) -> f64,
-    (x0, slope0): (f64, f64),
-    budget: &Budget,
-) -> Result<Option<f64>, CalcError> {
-    let bounds = (1e-3f64.ln(), MAX_ECCENTRICITY.ln());
-    let (mut xa, mut ma) = (x0, margin(x0.exp()));
-    let mut xb = (xa - ma / slope0).clamp(bounds.0, bounds.1);
-    let mut mb = margin(xb.exp());
-    let run = Driver::new(
-        "secant_whirl_threshold",
-        IterationUnit::RootSearchSteps,
-        8,
-        budget,
-    )
-    .run(|_| {
-        let slope = (mb - ma) / (xb - xa);
-        if !(ma.is_finite() && mb.is_finite() && slope.is_finite() && slope != 0.0) {
-            return Verdict::Stalled(f64::NAN);
-        }
-        let step = -mb / slope;
-        if step.abs() < 1e-3 {
-            return Verdict::Converged(xb, step.abs());
-        }
-        (xa, ma) = (xb, mb);
-        xb = (xb + step).clamp(bounds.0, bounds.1);
-        if xb == xa {
-            return Verdict::Stalled(step.abs());
-        }
-        mb = margin(xb.exp());
-        Verdict::Continue(step.abs())
-    });
-    match run {
-        Ok(found) => Ok(Some(found.value.exp())),
-        Err(stopped) if stopped.reason() == StopReason::Deadline => Err(stopped.into()),
-        Err(_) => Ok(None),
-    }
 }
