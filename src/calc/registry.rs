@@ -12,7 +12,7 @@ use utoipa::openapi::{RefOr, Schema};
 use utoipa::{PartialSchema, ToSchema};
 
 use super::{
-    contact, gas, hydrostatic, journal, lubricant, rolling, squeeze, thrust, CalcError,
+    composite, contact, gas, hydrostatic, journal, lubricant, rolling, squeeze, thrust, CalcError,
     Calculation, Context, Validate, Warning,
 };
 use crate::effects::Decision;
@@ -47,6 +47,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<gas::foil_journal::FoilJournal>(),
     Entry::of::<hydrostatic::pad::HydrostaticPad>(),
     Entry::of::<hydrostatic::design::HydrostaticDesign>(),
+    Entry::of::<composite::speed_split::SpeedSplit>(),
 ];
 
 /// The calculation registered at `path`.

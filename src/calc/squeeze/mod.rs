@@ -10,6 +10,6 @@
 pub mod finite_journal;
 pub mod journal;
 pub mod long_journal;
-mod lubricant;
+pub(crate) mod lubricant;
 pub mod plates;
 pub mod shapes;

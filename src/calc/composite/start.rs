@@ -1,0 +1,267 @@
+//! The composite bearing's start-up: the journal's speed ramps from rest, the sleeve first rolls
+//! with it, breaks away, and runs down to its steady split (Harnoy ch. 18, §18.2.2–18.2.3 and
+//! Eqs. 18-12, 18-13; spec PART B.3 item 5).
+//!
+//! The text gives no start-up law (spec B.3 item 5): it says the sleeve rolls with the journal
+//! while the journal–sleeve friction can pass on the restraint, and slides once it cannot.
+//! **The modelling choice made here**, consistent with the full-film torque model of the
+//! steady split:
+//!
+//! 1. *Rolling phase.* From rest the journal rolls inside the sleeve bore like an internal gear
+//!    (R₁ ≈ R, Eq. 18-2): ω_b = ω_j. To keep the sleeve unit with the journal the contact must
+//!    pass the restraint and the sleeve's acceleration, T_req = k ω_j² + M_r + I_eq dω_j/dt.
+//!    It can pass at most T_t = f_t W R: the load W pressing journal on sleeve, times a
+//!    journal–sleeve traction (static friction) coefficient f_t, an input — the boundary and
+//!    mixed friction of the text's Fig 18-4, of which it gives no number.
+//! 2. *Break-away* is the first instant T_req > T_t. With the linear ramp ω_j = a t (a =
+//!    ω_J/t_r) it is t* = √((T_t − M_r − I_eq a)/k)/a, or 0 when T_t ≤ M_r + I_eq a. If
+//!    t* ≥ t_r the sleeve never breaks away: at the ramp's end T_req drops by I_eq a, and
+//!    rolls on at the journal's speed (the steady split is then not reached: a warning says so).
+//! 3. *Sliding phase.* From ω_b(t*) = ω_j(t*) the full film carries the load and drives the
+//!    sleeve: I_eq dω_b/dt = M_h − M_f − M_r (Eq. 18-12 with M_r kept), with the quasi-steady
+//!    torque M_h = 2n(ε)(ω_j − ω_b) of Eq. 18-3, M_f = k ω_b|ω_b| (−ξ|ξ|H₂, spec B.3 item 4) and
+//!    M_r a Coulomb torque (regularised over |ω_b| < 1e-6 ω_J so the sleeve can stand). ε
+//!    follows the load quasi-steadily at the current speed sum ω_j + ω_b (the speed split's
+//!    load search; held at 0.999 where the full film cannot carry the load, with a warning).
+//!    No return to rolling is modelled: a sliding sleeve needs slip to be driven at all.
+//!
+//! In the text's dimensionless form the sliding phase is dξ/dt̄ = (1 − ξ)H₁ 2π/√(1 − ε²) −
+//! ξ|ξ|H₂ with H₁ = LμR³/(C I_eq ω_j) and H₂ = k/I_eq (Eq. 18-16 with I_eq restored), at a
+//! constant journal speed.
+
+use super::film::{LoadError, SleeveFilm, MAX_ECCENTRICITY};
+use super::sleeve::Restraint;
+
+/// A start-up: the bearing, its load, the journal's ramp and the sleeve unit's inertia.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct StartUp {
+    pub film: SleeveFilm,
+    pub restraint: Restraint,
+    /// W, N.
+    pub load: f64,
+    /// The journal's final speed ω_J, rad/s.
+    pub journal_speed: f64,
+    /// t_r, s: ω_j = ω_J t/t_r until t_r, ω_J after.
+    pub ramp_time: f64,
+    /// I_eq, kg·m².
+    pub inertia: f64,
+    /// f_t, dimensionless.
+    pub traction_coefficient: f64,
+}
+
+/// When the rolling phase ends.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Breakaway {
+    /// At t = 0: the contact cannot even start the sleeve with the journal.
+    AtStart,
+    /// At t* ∈ (0, t_r).
+    At(f64),
+    /// Never: the sleeve rolls at the journal's speed throughout.
+    Never,
+}
+
+impl Breakaway {
+    /// t*, s, where the sleeve breaks away.
+    pub fn time(self) -> Option<f64> {
+        match self {
+            Breakaway::AtStart => Some(0.0),
+            Breakaway::At(t) => Some(t),
+            Breakaway::Never => None,
+        }
+    }
+}
+
+/// ε at a speed sum, and whether the full film could not carry the load there (ε held at
+/// [`MAX_ECCENTRICITY`]).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct QuasiSteadyFilm {
+    pub eccentricity: f64,
+    pub beyond_full_film: bool,
+}
+
+impl StartUp {
+    /// The ramp's angular acceleration a = ω_J/t_r, rad/s².
+    pub fn ramp_rate(&self) -> f64 {
+        self.journal_speed / self.ramp_time
+    }
+
+    /// ω_j(t), rad/s.
+    pub fn journal_speed_at(&self, t: f64) -> f64 {
+        self.journal_speed * (t / self.ramp_time).clamp(0.0, 1.0)
+    }
+
+    /// T_t = f_t W R, N·m: the most the rolling contact passes to the sleeve.
+    pub fn transmissible_torque(&self) -> f64 {
+        self.traction_coefficient * self.load * self.film.radius
+    }
+
+    /// T_req at t < t_r, N·m: what keeps the sleeve rolling with the journal.
+    pub fn required_torque(&self, t: f64) -> f64 {
+        let w = self.journal_speed_at(t);
+        let accel = if t < self.ramp_time {
+            self.ramp_rate()
+        } else {
+            0.0
+        };
+        self.restraint.pin_torque(w) + self.restraint.rolling_torque + self.inertia * accel
+    }
+
+    /// The end of the rolling phase (item 2 of the module doc).
+    pub fn breakaway(&self) -> Breakaway {
+        let a = self.ramp_rate();
+        let spare = self.transmissible_torque() - self.restraint.rolling_torque - self.inertia * a;
+        if spare < 0.0 {
+            return Breakaway::AtStart;
+        }
+        let t = (spare / self.restraint.coefficient).sqrt() / a;
+        if t < self.ramp_time {
+            Breakaway::At(t)
+        } else {
+            Breakaway::Never
+        }
+    }
+
+    /// ε of the full film carrying the load at the speed sum ω_j + ω_b, rad/s.
+    pub fn film_at(&self, speed_sum: f64) -> Result<QuasiSteadyFilm, LoadError> {
+        if speed_sum <= 0.0 {
+            return Ok(QuasiSteadyFilm {
+                eccentricity: MAX_ECCENTRICITY,
+                beyond_full_film: true,
+            });
+        }
+        match self
+            .film
+            .eccentricity_for(self.load, MAX_ECCENTRICITY, |_| speed_sum)
+        {
+            Ok(found) => Ok(QuasiSteadyFilm {
+                eccentricity: found.eccentricity,
+                beyond_full_film: false,
+            }),
+            Err(LoadError::TooHeavy { .. }) => Ok(QuasiSteadyFilm {
+                eccentricity: MAX_ECCENTRICITY,
+                beyond_full_film: true,
+            }),
+            Err(e) => Err(e),
+        }
+    }
+
+    /// Half-width of the band where the rolling bearing's Coulomb torque is regularised, rad/s.
+    fn stick_speed(&self) -> f64 {
+        1e-6 * self.journal_speed
+    }
+
+    /// dω_b/dt in the sliding phase at time t and sleeve speed ω_b, rad/s² (item 3).
+    pub fn sleeve_acceleration(&self, t: f64, sleeve_speed: f64) -> Result<f64, LoadError> {
+        let wj = self.journal_speed_at(t);
+        let film = self.film_at(wj + sleeve_speed)?;
+        let m_h = self.film.torque(film.eccentricity, wj, sleeve_speed);
+        let coulomb = (sleeve_speed / self.stick_speed()).clamp(-1.0, 1.0);
+        let net =
+            m_h - self.restraint.pin_torque(sleeve_speed) - self.restraint.rolling_torque * coulomb;
+        Ok(net / self.inertia)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::f64::consts::PI;
+
+    use super::*;
+    use crate::calc::composite::split::{split, Operating};
+
+    fn start(traction: f64, rolling_torque: f64) -> StartUp {
+        StartUp {
+            film: SleeveFilm {
+                radius: 0.05,
+                length: 0.1,
+                clearance: 6e-5,
+                viscosity: 0.03,
+            },
+            restraint: Restraint {
+                coefficient: 0.0357,
+                rolling_torque,
+            },
+            load: 20_000.0,
+            journal_speed: 3500.0 * PI / 30.0,
+            ramp_time: 2.0,
+            inertia: 0.01,
+            traction_coefficient: traction,
+        }
+    }
+
+    /// At t* the required torque equals the transmissible one; before it, it is below.
+    #[test]
+    fn breakaway_is_where_the_contact_cannot_pass_the_restraint() {
+        for (f, m_r) in [(0.005, 0.0), (0.01, 1.0), (0.008, 0.5)] {
+            let s = start(f, m_r);
+            match s.breakaway() {
+                Breakaway::At(t) => {
+                    let (need, can) = (s.required_torque(t), s.transmissible_torque());
+                    assert!(
+                        (need / can - 1.0).abs() < 1e-12,
+                        "{f} {m_r}: {need} vs {can}"
+                    );
+                    assert!(s.required_torque(0.9 * t) < can);
+                    assert!(t > 0.0 && t < s.ramp_time);
+                }
+                other => panic!("{f} {m_r}: {other:?}"),
+            }
+        }
+    }
+
+    /// No traction to speak of: break-away at once; ample traction: the sleeve rolls on.
+    #[test]
+    fn the_two_limits_of_the_rolling_phase() {
+        let s = start(1e-9, 0.0);
+        assert_eq!(s.breakaway(), Breakaway::AtStart);
+        let s = start(10.0, 0.0);
+        assert_eq!(s.breakaway(), Breakaway::Never);
+        assert!(s.required_torque(s.ramp_time) < s.transmissible_torque());
+    }
+
+    /// The sliding phase's rest point at the final speed is the speed split's steady state
+    /// under the same load: the acceleration vanishes there and changes sign about it.
+    #[test]
+    fn the_sliding_phase_rests_at_the_speed_split() {
+        for m_r in [0.0, 3.0] {
+            let s = start(0.002, m_r);
+            let steady = split(
+                &s.film,
+                &s.restraint,
+                s.journal_speed,
+                Operating::Load(s.load),
+            )
+            .unwrap();
+            let wb = steady.composite.speed_ratio * s.journal_speed;
+            let t = 2.0 * s.ramp_time;
+            let at = s.sleeve_acceleration(t, wb).unwrap();
+            let scale = s
+                .film
+                .torque(steady.composite.eccentricity, s.journal_speed, 0.0)
+                / s.inertia;
+            assert!(at.abs() < 1e-9 * scale, "{m_r}: {at} vs {scale}");
+            assert!(s.sleeve_acceleration(t, 1.01 * wb).unwrap() < 0.0);
+            assert!(s.sleeve_acceleration(t, 0.99 * wb).unwrap() > 0.0);
+        }
+    }
+
+    /// The text's dimensionless sleeve equation (Eq. 18-14 with H₂ = k/I_eq, spec B.1.4) is the
+    /// same law: dξ/dt̄ = (1 − ξ)H₁ 2π/√(1 − ε²) − ξ|ξ|H₂ at a constant journal speed.
+    #[test]
+    fn the_dimensionless_form_agrees() {
+        let s = start(0.002, 0.0);
+        let (wj, t) = (s.journal_speed, 3.0 * s.ramp_time);
+        let f = s.film;
+        let h1 = f.length * f.viscosity * f.radius.powi(3) / (f.clearance * s.inertia * wj);
+        let h2 = s.restraint.coefficient / s.inertia;
+        for xi in [0.05, 0.3, 0.7] {
+            let eps = s.film_at(wj * (1.0 + xi)).unwrap().eccentricity;
+            let text = (1.0 - xi) * h1 * 2.0 * PI / (1.0 - eps * eps).sqrt() - xi * xi.abs() * h2;
+            let ours = s.sleeve_acceleration(t, xi * wj).unwrap() / (wj * wj);
+            assert!(
+                (ours / text - 1.0).abs() < 1e-12,
+                "ξ {xi}: {ours} vs {text}"
+            );
+        }
+    }
+}
