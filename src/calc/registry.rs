@@ -48,6 +48,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<hydrostatic::pad::HydrostaticPad>(),
     Entry::of::<hydrostatic::design::HydrostaticDesign>(),
     Entry::of::<composite::speed_split::SpeedSplit>(),
+    Entry::of::<composite::start_up::StartUpRoom>(),
 ];
 
 /// The calculation registered at `path`.

@@ -10,6 +10,19 @@ use stribeck::calc::{find, CalcError, Failure};
 use crate::helpers::{assert_all_finite, spawn_app};
 
 const SPLIT: &str = "/v1/composite-bearings/speed-split";
+const START: &str = "/v1/composite-bearings/start-up";
+
+fn start(extra: Value) -> Value {
+    let mut body: Value = serde_json::from_str(find(START).unwrap().example).unwrap();
+    for (k, v) in extra.as_object().unwrap() {
+        if v.is_null() {
+            body.as_object_mut().unwrap().remove(k);
+        } else {
+            body[k] = v.clone();
+        }
+    }
+    body
+}
 
 fn split(extra: Value) -> Value {
     let mut body = json!({
@@ -141,6 +154,80 @@ async fn bad_composite_input_is_a_422_with_its_reason() {
 }
 
 #[tokio::test]
+async fn bad_start_up_input_is_a_422_with_its_reason() {
+    let app = spawn_app().await;
+    let rows = [
+        (start(json!({"ramp_time_s": 0.0})), "/ramp_time_s", "> 0"),
+        (
+            start(json!({"ramp_time_s": 1e-9})),
+            "/ramp_time_s",
+            "within",
+        ),
+        (
+            start(json!({"sleeve_inertia_kg_m2": null})),
+            "/sleeve_inertia_kg_m2",
+            "missing",
+        ),
+        (
+            start(json!({"rolling_traction_coefficient": 5.0})),
+            "/rolling_traction_coefficient",
+            "within",
+        ),
+        (
+            start(json!({"history_points": 5000})),
+            "/history_points",
+            "within",
+        ),
+        (
+            start(json!({"eccentricity_ratio": 0.5})),
+            "/eccentricity_ratio",
+            "unknown field",
+        ),
+        (
+            start(json!({"load_n": 1e8, "journal_speed_rpm": 1.0})),
+            "/load_n",
+            "cannot carry",
+        ),
+    ];
+    for (body, pointer, why) in rows {
+        let reply = app.post_json(START, &body).await;
+        reply.problem(422);
+        assert!(
+            reply.text.contains(pointer) && reply.text.contains(why),
+            "{body}: want {pointer} ({why}), got {}",
+            reply.text
+        );
+    }
+}
+
+#[tokio::test]
+async fn the_start_up_example_answers_over_http() {
+    let app = spawn_app().await;
+    let reply = app.post_json(START, &start(json!({}))).await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    assert_all_finite(&reply.body, "");
+    let r = &reply.body["result"];
+    for field in [
+        "breakaway_journal_speed_rpm",
+        "breakaway_time_s",
+        "steady_sleeve_speed_rpm",
+        "sleeve_speed_at_ramp_end_rpm",
+        "settling_time_s",
+    ] {
+        assert!(r[field].is_number(), "{field}: {r}");
+    }
+    assert_eq!(r["history"].as_array().unwrap().len(), 11);
+    // The start-up's steady sleeve speed is the speed split's at the same load.
+    let split_body = start(json!({"sleeve_inertia_kg_m2": null, "ramp_time_s": null,
+        "rolling_traction_coefficient": null, "history_points": null}));
+    let reply = app.post_json(SPLIT, &split_body).await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    let want = reply.body["result"]["sleeve_speed_rpm"].as_f64().unwrap();
+    let got = r["steady_sleeve_speed_rpm"].as_f64().unwrap();
+    assert!((got / want - 1.0).abs() < 1e-12, "{got} vs {want}");
+}
+
+#[tokio::test]
 async fn the_speed_split_example_answers_over_http() {
     let app = spawn_app().await;
     let example: Value = serde_json::from_str(find(SPLIT).unwrap().example).unwrap();
@@ -229,6 +316,46 @@ proptest! {
                 prop_assert!(heavy, "{err:?}");
             }
             (Err(other), _, _) | (_, Err(other), _) | (_, _, Err(other)) => prop_assert!(false, "{other:?}"),
+        }
+    }
+
+    /// Start-ups over traction, restraint, inertia, ramp and rolling torque: a finite result
+    /// (or a 422 that the load cannot be carried), never a 500; more traction never breaks
+    /// away sooner; the history starts at rest and ends in the settling band.
+    #[test]
+    fn start_ups_are_finite_and_monotone(
+        log_traction in -4.0f64..0.0,
+        log_k in -3.0f64..0.0,
+        log_inertia in -4.0f64..0.0,
+        log_ramp in -1.0f64..1.0,
+        rolling in prop_oneof![Just(0.0), 0.0f64..5.0],
+    ) {
+        let body = |traction: f64| start(json!({
+            "rolling_traction_coefficient": traction,
+            "restraint_coefficient_kg_m2": 10f64.powf(log_k),
+            "sleeve_inertia_kg_m2": 10f64.powf(log_inertia),
+            "ramp_time_s": 10f64.powf(log_ramp),
+            "rolling_friction_torque_n_m": rolling,
+        }));
+        let traction = 10f64.powf(log_traction);
+        match (run(START, &body(traction)), run(START, &body(1.5 * traction))) {
+            (Ok(lo), Ok(hi)) => {
+                for v in [&lo, &hi] {
+                    assert_all_finite(v, "");
+                    let history = v["result"]["history"].as_array().unwrap();
+                    prop_assert_eq!(history[0]["sleeve_speed_rpm"].as_f64(), Some(0.0));
+                    let steady = field(v, "steady_sleeve_speed_rpm");
+                    let last = history.last().unwrap()["sleeve_speed_rpm"].as_f64().unwrap();
+                    let band = 0.01 * if steady > 0.0 { steady } else { 3500.0 };
+                    prop_assert!((last - steady).abs() <= band, "{} vs {}", last, steady);
+                }
+                let t = |v: &Value| v["result"]["breakaway_time_s"].as_f64().unwrap_or(f64::INFINITY);
+                prop_assert!(t(&hi) >= t(&lo), "{} vs {}", t(&hi), t(&lo));
+            }
+            (Err(Failure::Calc(err)), _) | (_, Err(Failure::Calc(err))) => {
+                prop_assert!(!matches!(err, CalcError::Internal(_)), "{err:?}");
+            }
+            (Err(other), _) | (_, Err(other)) => prop_assert!(false, "{other:?}"),
         }
     }
 }

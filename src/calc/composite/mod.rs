@@ -13,3 +13,4 @@ pub mod sleeve;
 pub mod speed_split;
 pub mod split;
 pub mod start;
+pub mod start_up;

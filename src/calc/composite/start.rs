@@ -29,8 +29,24 @@
 //! ξ|ξ|H₂ with H₁ = LμR³/(C I_eq ω_j) and H₂ = k/I_eq (Eq. 18-16 with I_eq restored), at a
 //! constant journal speed.
 
+use nalgebra::SVector;
+
 use super::film::{LoadError, SleeveFilm, MAX_ECCENTRICITY};
 use super::sleeve::Restraint;
+use super::split::{split, Operating};
+use crate::calc::CalcError;
+use crate::fidelity::{SolverReport, TimeIntegration};
+use crate::numerics::driver::Budget;
+use crate::numerics::ode::{self, Failure, Flow, RateError, Settings, Step};
+
+/// The integrator's tolerances on the sleeve speed over the final journal speed.
+const RELATIVE_TOLERANCE: f64 = 1e-8;
+const ABSOLUTE_TOLERANCE: f64 = 1e-10;
+/// The settling band: ±1 % of the steady sleeve speed.
+const BAND: f64 = 0.01;
+/// Time constants per settling segment, and the most segments before the run gives up.
+const SEGMENT_TIME_CONSTANTS: f64 = 20.0;
+const MAX_SEGMENTS: u32 = 50;
 
 /// A start-up: the bearing, its load, the journal's ramp and the sleeve unit's inertia.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -160,6 +176,302 @@ impl StartUp {
             m_h - self.restraint.pin_torque(sleeve_speed) - self.restraint.rolling_torque * coulomb;
         Ok(net / self.inertia)
     }
+}
+
+/// One point of the start-up.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sample {
+    /// s.
+    pub time: f64,
+    /// ω_j, rad/s.
+    pub journal_speed: f64,
+    /// ω_b, rad/s.
+    pub sleeve_speed: f64,
+}
+
+/// A simulated start-up.
+#[derive(Debug, Clone, PartialEq)]
+pub struct Simulation {
+    pub breakaway: Breakaway,
+    /// The rolling film at break-away (load on 2ω_j).
+    pub film_at_breakaway: Option<QuasiSteadyFilm>,
+    /// ω_b at the final journal speed, rad/s: the speed split's, or ω_J when the sleeve rolls
+    /// on.
+    pub steady_sleeve_speed: f64,
+    pub steady_eccentricity: f64,
+    /// ω_b at t_r, rad/s.
+    pub sleeve_speed_at_ramp_end: f64,
+    /// The last time ω_b leaves the ±1 % band about the steady speed, s.
+    pub settling_time: Option<f64>,
+    /// Where the run ends, s.
+    pub end_time: f64,
+    /// Evenly spaced in time over [0, `end_time`].
+    pub history: Vec<Sample>,
+    pub warnings: Vec<(&'static str, String)>,
+    pub report: SolverReport,
+}
+
+/// Why a start-up has no result.
+#[derive(Debug, Clone, PartialEq)]
+pub enum StartError {
+    /// The film cannot carry the load at the final speed (or a search failed).
+    Load(LoadError),
+    /// The integration stopped (deadline, cap, step underflow) or did not settle.
+    Calc(CalcError),
+}
+
+/// The sliding phase's record: the integrator's accepted steps, in time order.
+struct Record {
+    steps: Vec<Step<1>>,
+}
+
+impl Record {
+    /// ω_b/ω_J at t within the recorded span (the step's Hermite interpolant).
+    fn at(&self, t: f64) -> Option<f64> {
+        let i = self.steps.partition_point(|s| s.t1 < t);
+        self.steps.get(i).map(|s| s.at(t)[0])
+    }
+
+    /// The last time the speed (over ω_J) leaves [target − band, target + band]: the end of
+    /// the last step that is outside anywhere, refined by bisection on its interpolant. None
+    /// when the record ends outside the band.
+    fn settling_time(&self, target: f64, band: f64, rolling_until: f64) -> Option<f64> {
+        let outside = |y: f64| (y - target).abs() > band;
+        let last = self.steps.last()?;
+        if outside(last.y1[0]) {
+            return None;
+        }
+        // A step is probed at its ends and at eight interior points.
+        let probe = |s: &Step<1>| {
+            (0..=9).any(|k| outside(s.at(s.t0 + (s.t1 - s.t0) * f64::from(k) / 9.0)[0]))
+        };
+        match self.steps.iter().rposition(probe) {
+            None => Some(rolling_until),
+            Some(i) => {
+                let s = &self.steps[i];
+                // The crossing from outside to inside within s: bisect on the interpolant
+                // from its last outside probe.
+                let (mut lo, mut hi) = (s.t0, s.t1);
+                for k in (0..=9).rev() {
+                    let t = s.t0 + (s.t1 - s.t0) * f64::from(k) / 9.0;
+                    if outside(s.at(t)[0]) {
+                        lo = t;
+                        hi = (t + (s.t1 - s.t0) / 9.0).min(s.t1);
+                        break;
+                    }
+                }
+                for _ in 0..60 {
+                    let mid = 0.5 * (lo + hi);
+                    if outside(s.at(mid)[0]) {
+                        lo = mid;
+                    } else {
+                        hi = mid;
+                    }
+                }
+                Some(hi)
+            }
+        }
+    }
+}
+
+/// Add one integration's work to the run's report.
+fn accumulate(total: &mut Option<SolverReport>, part: SolverReport) {
+    match total {
+        None => *total = Some(part),
+        Some(t) => {
+            t.iterations += part.iterations;
+            t.evaluations = Some(t.evaluations.unwrap_or(0) + part.evaluations.unwrap_or(0));
+            let rejected =
+                |r: &SolverReport| r.time_integration.as_ref().map_or(0, |x| x.rejected_steps);
+            let sum = rejected(t) + rejected(&part);
+            t.time_integration = Some(Box::new(TimeIntegration {
+                rejected_steps: sum,
+                relative_tolerance: RELATIVE_TOLERANCE,
+            }));
+            t.residual = part.residual;
+            t.stop_reason = part.stop_reason;
+        }
+    }
+}
+
+/// Simulate the start-up (module doc: the rolling phase in closed form, the sliding phase on
+/// the L-stable SDIRK integrator) and sample `samples` points of its history.
+pub fn simulate(s: &StartUp, budget: &Budget, samples: usize) -> Result<Simulation, StartError> {
+    let steady = split(
+        &s.film,
+        &s.restraint,
+        s.journal_speed,
+        Operating::Load(s.load),
+    )
+    .map_err(StartError::Load)?;
+    let wj = s.journal_speed;
+    let breakaway = s.breakaway();
+    let mut warnings = Vec::new();
+    let film_at_breakaway = match breakaway.time() {
+        Some(t) => {
+            let film = s
+                .film_at(2.0 * s.journal_speed_at(t))
+                .map_err(StartError::Load)?;
+            if film.beyond_full_film {
+                warnings.push((
+                    "breakaway_before_full_film",
+                    format!(
+                        "at break-away (journal {:.1} rpm) the rolling film cannot carry the load even at ε = {MAX_ECCENTRICITY}: the journal and sleeve still touch (mixed lubrication); the sliding phase holds ε at {MAX_ECCENTRICITY} until the speed sum lifts the journal",
+                        s.journal_speed_at(t) * 30.0 / std::f64::consts::PI
+                    ),
+                ));
+            }
+            Some(film)
+        }
+        None => None,
+    };
+    let Some(t_break) = breakaway.time() else {
+        // The sleeve rolls throughout: ω_b = ω_j, in closed form.
+        let end = 1.25 * s.ramp_time;
+        let film = s.film_at(2.0 * wj).map_err(StartError::Load)?;
+        warnings.push((
+            "sleeve_rolls_on",
+            format!(
+                "the rolling contact passes up to f_t W R = {:.4e} N·m, more than keeps the sleeve rolling at full speed ({:.4e} N·m): the sleeve never slides, and the speed split's sliding state (ξ = {:.4}) is not reached from rest",
+                s.transmissible_torque(),
+                s.required_torque(s.ramp_time),
+                steady.composite.speed_ratio
+            ),
+        ));
+        let history = (0..samples)
+            .map(|k| {
+                let t = end * k as f64 / (samples - 1) as f64;
+                let w = s.journal_speed_at(t);
+                Sample {
+                    time: t,
+                    journal_speed: w,
+                    sleeve_speed: w,
+                }
+            })
+            .collect();
+        return Ok(Simulation {
+            breakaway,
+            film_at_breakaway,
+            steady_sleeve_speed: wj,
+            steady_eccentricity: film.eccentricity,
+            sleeve_speed_at_ramp_end: wj,
+            settling_time: None,
+            end_time: end,
+            history,
+            warnings,
+            report: SolverReport::closed_form("composite_rolling_start"),
+        });
+    };
+
+    let target = steady.composite.speed_ratio;
+    let band = BAND * if target > 0.0 { target } else { 1.0 };
+    let n_ss = s.film.petroff_coefficient(steady.composite.eccentricity);
+    let tau = s.inertia / (2.0 * n_ss + 2.0 * s.restraint.coefficient * target * wj);
+    let mut beyond_full_film = false;
+    let mut rate = |t: f64, y: &SVector<f64, 1>| -> Result<SVector<f64, 1>, RateError<LoadError>> {
+        let wb = y[0] * wj;
+        let film = s
+            .film_at(s.journal_speed_at(t) + wb)
+            .map_err(RateError::Failed)?;
+        beyond_full_film |= film.beyond_full_film;
+        let a = s.sleeve_acceleration(t, wb).map_err(RateError::Failed)?;
+        Ok(SVector::<f64, 1>::new(a / wj))
+    };
+    let mut record = Record { steps: Vec::new() };
+    let mut report: Option<SolverReport> = None;
+    let mut t = t_break;
+    let mut y = SVector::<f64, 1>::new(s.journal_speed_at(t_break) / wj);
+    let mut run = |from: f64,
+                   y0: SVector<f64, 1>,
+                   to: f64,
+                   record: &mut Record,
+                   report: &mut Option<SolverReport>|
+     -> Result<SVector<f64, 1>, StartError> {
+        let settings = Settings {
+            relative: RELATIVE_TOLERANCE,
+            absolute: ABSOLUTE_TOLERANCE,
+            max_step: (to - from) / 20.0,
+            max_steps: 100_000,
+        };
+        let observe = |step: &Step<1>| {
+            record.steps.push(*step);
+            Flow::Continue
+        };
+        match ode::integrate(&mut rate, from, y0, to, &settings, observe, budget) {
+            Ok(done) => {
+                accumulate(report, done.report);
+                Ok(done.y)
+            }
+            Err(Failure::Rate(e)) => Err(StartError::Load(e)),
+            Err(Failure::Halted(h)) => Err(StartError::Calc(CalcError::from(h.stopped))),
+        }
+    };
+    if t < s.ramp_time {
+        y = run(t, y, s.ramp_time, &mut record, &mut report)?;
+        t = s.ramp_time;
+    }
+    let at_ramp_end = y[0] * wj;
+    let mut segments = 0;
+    loop {
+        let to = t + SEGMENT_TIME_CONSTANTS * tau;
+        y = run(t, y, to, &mut record, &mut report)?;
+        t = to;
+        segments += 1;
+        if (y[0] - target).abs() <= 0.1 * band {
+            break;
+        }
+        if segments >= MAX_SEGMENTS {
+            return Err(StartError::Calc(CalcError::impossible(
+                "/sleeve_inertia_kg_m2",
+                format!(
+                    "the sleeve has not settled within {:.4e} s ({} time constants of {tau:.4e} s): its speed is {:.4e} rpm against a steady {:.4e} rpm",
+                    t - t_break,
+                    f64::from(MAX_SEGMENTS) * SEGMENT_TIME_CONSTANTS,
+                    y[0] * wj * 30.0 / std::f64::consts::PI,
+                    target * wj * 30.0 / std::f64::consts::PI
+                ),
+            )));
+        }
+    }
+    if beyond_full_film {
+        warnings.push((
+            "film_held_at_limit",
+            format!("for part of the sliding phase the full film could not carry the load at the speed sum: ε was held at {MAX_ECCENTRICITY} there (the journal touches the sleeve in reality)"),
+        ));
+    }
+    let settling_time = record.settling_time(target, band, t_break);
+    let end = t;
+    let history = (0..samples)
+        .map(|k| {
+            let time = end * k as f64 / (samples - 1) as f64;
+            let journal = s.journal_speed_at(time);
+            let sleeve = if time <= t_break {
+                journal
+            } else {
+                record.at(time).map_or(y[0], |v| v) * wj
+            };
+            Sample {
+                time,
+                journal_speed: journal,
+                sleeve_speed: sleeve,
+            }
+        })
+        .collect();
+    let report = report
+        .expect("at least one segment ran")
+        .named("sdirk4_l_stable");
+    Ok(Simulation {
+        breakaway,
+        film_at_breakaway,
+        steady_sleeve_speed: target * wj,
+        steady_eccentricity: steady.composite.eccentricity,
+        sleeve_speed_at_ramp_end: at_ramp_end,
+        settling_time,
+        end_time: end,
+        history,
+        warnings,
+        report,
+    })
 }
 
 #[cfg(test)]
