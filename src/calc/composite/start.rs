@@ -15,8 +15,8 @@
 //!    mixed friction of the text's Fig 18-4, of which it gives no number.
 //! 2. *Break-away* is the first instant T_req > T_t. With the linear ramp ω_j = a t (a =
 //!    ω_J/t_r) it is t* = √((T_t − M_r − I_eq a)/k)/a, or 0 when T_t ≤ M_r + I_eq a. If
-//!    t* ≥ t_r the sleeve never breaks away: at the ramp's end T_req drops by I_eq a, and
-//!    rolls on at the journal's speed (the steady split is then not reached: a warning says so).
+//!    t* ≥ t_r the sleeve never breaks away (at the ramp's end T_req drops by I_eq a): it rolls
+//!    on at the journal's speed, and the steady split is not reached (a warning says so).
 //! 3. *Sliding phase.* From ω_b(t*) = ω_j(t*) the full film carries the load and drives the
 //!    sleeve: I_eq dω_b/dt = M_h − M_f − M_r (Eq. 18-12 with M_r kept), with the quasi-steady
 //!    torque M_h = 2n(ε)(ω_j − ω_b) of Eq. 18-3, M_f = k ω_b|ω_b| (−ξ|ξ|H₂, spec B.3 item 4) and
@@ -201,7 +201,8 @@ pub struct Simulation {
     pub steady_eccentricity: f64,
     /// ω_b at t_r, rad/s.
     pub sleeve_speed_at_ramp_end: f64,
-    /// The last time ω_b leaves the ±1 % band about the steady speed, s.
+    /// The time after which ω_b stays within ±1 % of the steady speed (its last crossing of
+    /// the band's edge), s.
     pub settling_time: Option<f64>,
     /// Where the run ends, s.
     pub end_time: f64,
@@ -232,10 +233,10 @@ impl Record {
         self.steps.get(i).map(|s| s.at(t)[0])
     }
 
-    /// The last time the speed (over ω_J) leaves [target − band, target + band]: the end of
-    /// the last step that is outside anywhere, refined by bisection on its interpolant. None
-    /// when the record ends outside the band.
-    fn settling_time(&self, target: f64, band: f64, rolling_until: f64) -> Option<f64> {
+    /// The time after which the speed (over ω_J) stays in [target − band, target + band]: the
+    /// last crossing of the band's edge, found in the last step that is outside anywhere, by
+    /// bisection on its interpolant. None when the record ends outside the band.
+    fn settling_time(&self, target: f64, band: f64, entered_rolling: f64) -> Option<f64> {
         let outside = |y: f64| (y - target).abs() > band;
         let last = self.steps.last()?;
         if outside(last.y1[0]) {
@@ -246,7 +247,7 @@ impl Record {
             (0..=9).any(|k| outside(s.at(s.t0 + (s.t1 - s.t0) * f64::from(k) / 9.0)[0]))
         };
         match self.steps.iter().rposition(probe) {
-            None => Some(rolling_until),
+            None => Some(entered_rolling),
             Some(i) => {
                 let s = &self.steps[i];
                 // The crossing from outside to inside within s: bisect on the interpolant
@@ -439,7 +440,9 @@ pub fn simulate(s: &StartUp, budget: &Budget, samples: usize) -> Result<Simulati
             format!("for part of the sliding phase the full film could not carry the load at the speed sum: ε was held at {MAX_ECCENTRICITY} there (the journal touches the sleeve in reality)"),
         ));
     }
-    let settling_time = record.settling_time(target, band, t_break);
+    // Inside the band from break-away on: the rolling speed t/t_r entered it at its lower edge.
+    let entered_rolling = ((target - band).max(0.0) * s.ramp_time).min(t_break);
+    let settling_time = record.settling_time(target, band, entered_rolling);
     let end = t;
     let history = (0..samples)
         .map(|k| {

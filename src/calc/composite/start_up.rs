@@ -219,7 +219,8 @@ pub struct CompositeStartUpOutput {
     pub steady_eccentricity_ratio: f64,
     /// The sleeve's speed when the ramp ends, rpm.
     pub sleeve_speed_at_ramp_end_rpm: f64,
-    /// The last time the sleeve speed leaves the ±1 % band about its steady speed, s (1 % of
+    /// The time after which the sleeve speed stays within ±1 % of its steady speed — its last
+    /// crossing of the band's edge — s (1 % of
     /// the journal speed where the steady sleeve stands); omitted when the sleeve never breaks
     /// away.
     #[serde(skip_serializing_if = "Option::is_none")]
