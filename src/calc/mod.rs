@@ -1,6 +1,7 @@
 //! The rooms: one folder per calculation family. Nothing here knows about HTTP; the door
 //! (`crate::http`) and the CLI (`stribeck run`) both go through [`execute`].
 
+pub mod composite;
 pub mod contact;
 pub mod gas;
 pub mod hydrostatic;

@@ -2,6 +2,7 @@
 //! server on 127.0.0.1:0.
 //!
 //! - `admission`: admission by cost: closed forms beside busy solvers, the solvers' queue.
+//! - `composite`: the composite bearing: its 422s, the speed split and the start-up over their ranges.
 //! - `contract`: the envelope, every error status and its problem+json, request ids.
 //! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
@@ -15,6 +16,7 @@
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod admission;
+mod composite;
 mod contract;
 mod gas;
 mod helpers;
