@@ -5,7 +5,8 @@
 //! converged film and Khonsari & Booser Table 7.2, and the squeezed journal's time against its
 //! converged quadrature. Writes `docs/accuracy.md`.
 //!
-//! `cargo bench --bench accuracy` (release, one thread).
+//! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` or
+//! `STRIBECK_ACCURACY_SECTION=ehl-point` before it regenerates only that section.
 
 use std::fmt::Write;
 use std::time::Instant;
@@ -119,6 +120,8 @@ fn ehl_point_request(m: f64, l: f64, fidelity: &str) -> String {
     )
 }
 
+const EHL_POINT_HEADING: &str = "\n# Accuracy against time: numerical EHL point contact";
+
 /// The numerical EHL point contact: each level's films against a 512² solve. A solve that
 /// answers 422 (its cycles stalled) is a row that says so.
 fn ehl_point(out: &mut String) {
@@ -144,7 +147,8 @@ fn ehl_point(out: &mut String) {
                 .map(|v| films(&v))
         })
         .collect();
-    out.push_str("\n# Accuracy against time: numerical EHL point contact\n\n");
+    out.push_str(EHL_POINT_HEADING);
+    out.push_str("\n\n");
     out.push_str("Cases: a circular contact at Moes' L = 10 with M ∈ {20, 100, 1000} (Barus, Dowson–Higginson density). Errors in\n");
     out.push_str("the central and the minimum film (a parabola's vertex between nodes), both Richardson-extrapolated, against the same solver on\n");
     out.push_str("512² cells; `grid` is cells per direction; time is the median of 5 solves; `reported` is the service's estimate\n");
@@ -337,20 +341,31 @@ fn journal_request(out: &mut String) {
     let _ = writeln!(out, "\nFitted: time ∝ nodes^{slope:.2}. The active-set solve factors a band as wide as the axial count, so its work grows as nodes × (axial cells)²: with both directions refined, nodes^2 at large meshes; at the levels' meshes the fixed costs (assembly, integration) still weigh.");
 }
 
+/// Regenerates one section of `docs/accuracy.md` in place: from `heading` to the next heading.
+fn regenerate(heading: &str, fill: fn(&mut String)) {
+    let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/accuracy.md");
+    let old = std::fs::read_to_string(path).unwrap();
+    let mut section = String::new();
+    fill(&mut section);
+    let start = old.find(heading).unwrap_or(old.len());
+    let after = (start + heading.len()).min(old.len());
+    let end = ["\n## ", "\n# "]
+        .iter()
+        .filter_map(|h| old[after..].find(h))
+        .min()
+        .map_or(old.len(), |j| after + j);
+    let new = format!("{}{}{}", &old[..start], section, &old[end..]);
+    std::fs::write(path, &new).unwrap();
+    print!("{section}");
+}
+
 fn main() {
-    // `STRIBECK_ACCURACY_SECTION=gas` regenerates only the gas-bearing section, in place.
-    if std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() == Ok("gas") {
-        let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/accuracy.md");
-        let old = std::fs::read_to_string(path).unwrap();
-        let mut section = String::new();
-        gas_bearings(&mut section);
-        let start = old.find(GAS_HEADING).unwrap_or(old.len());
-        let after = (start + GAS_HEADING.len()).min(old.len());
-        let end = old[after..].find("\n## ").map_or(old.len(), |j| after + j);
-        let new = format!("{}{}{}", &old[..start], section, &old[end..]);
-        std::fs::write(path, &new).unwrap();
-        print!("{section}");
-        return;
+    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-point`) regenerates only the gas-bearing (or the
+    // numerical EHL point-contact) section, in place.
+    match std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() {
+        Ok("gas") => return regenerate(GAS_HEADING, gas_bearings),
+        Ok("ehl-point") => return regenerate(EHL_POINT_HEADING, ehl_point),
+        _ => {}
     }
     let text = std::fs::read_to_string(concat!(
         env!("CARGO_MANIFEST_DIR"),

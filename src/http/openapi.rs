@@ -1,9 +1,14 @@
 //! The OpenAPI 3.1 document, assembled from the registry so it cannot drift from the routes, and
-//! the docs UI (swagger-ui, its assets embedded in the binary).
+//! the docs UI (swagger-ui, its assets embedded in the binary). Only what the page loads is
+//! embedded: the bundle and its stylesheet (1.6 MB), not the release's other bundles and source
+//! maps (9 MB more) that serving its whole `dist/` folder would carry.
 
 use std::sync::OnceLock;
 
-use axum::Router;
+use axum::http::header;
+use axum::response::{Html, IntoResponse, Redirect, Response};
+use axum::routing::get;
+use axum::{Json, Router};
 use utoipa::openapi::path::{HttpMethod, OperationBuilder, PathItem};
 use utoipa::openapi::request_body::RequestBodyBuilder;
 use utoipa::openapi::schema::{ArrayBuilder, ObjectBuilder, Ref};
@@ -12,7 +17,6 @@ use utoipa::openapi::{
     Required, ResponseBuilder, Schema,
 };
 use utoipa::{PartialSchema, ToSchema};
-use utoipa_swagger_ui::SwaggerUi;
 
 use super::meta::{CalculationInfo, CalculationList};
 use super::AppState;
@@ -40,9 +44,54 @@ pub fn document_json() -> String {
     s
 }
 
-/// `/docs` (swagger-ui) and `/openapi.json`.
+/// The docs UI's page: Swagger UI's base layout on `/openapi.json`. It loads the two files
+/// below and nothing else (build.rs unpacks exactly those from the vendored release).
+const DOCS_PAGE: &str = r##"<!DOCTYPE html>
+<html lang="en">
+<head>
+  <meta charset="UTF-8">
+  <title>Stribeck API</title>
+  <link rel="stylesheet" type="text/css" href="./swagger-ui.css">
+  <style>html { box-sizing: border-box; overflow-y: scroll; } *, *:before, *:after { box-sizing: inherit; } body { margin: 0; background: #fafafa; }</style>
+</head>
+<body>
+  <div id="swagger-ui"></div>
+  <script src="./swagger-ui-bundle.js" charset="UTF-8"></script>
+  <script>
+    window.onload = function () {
+      window.ui = SwaggerUIBundle({
+        url: "/openapi.json",
+        dom_id: "#swagger-ui",
+        deepLinking: true,
+        presets: [SwaggerUIBundle.presets.apis],
+        layout: "BaseLayout",
+      });
+    };
+  </script>
+</body>
+</html>
+"##;
+const SWAGGER_UI_BUNDLE: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/swagger-ui-bundle.js"));
+const SWAGGER_UI_CSS: &[u8] = include_bytes!(concat!(env!("OUT_DIR"), "/swagger-ui.css"));
+
+/// `/docs` (swagger-ui) and `/openapi.json`. `/docs` redirects to `/docs/` so the page's
+/// relative links resolve under it.
 pub fn docs_router() -> Router<AppState> {
-    Router::from(SwaggerUi::new("/docs").url("/openapi.json", document().clone()))
+    fn asset(content_type: &'static str, bytes: &'static [u8]) -> Response {
+        ([(header::CONTENT_TYPE, content_type)], bytes).into_response()
+    }
+    Router::new()
+        .route("/docs", get(|| async { Redirect::to("/docs/") }))
+        .route("/docs/", get(|| async { Html(DOCS_PAGE) }))
+        .route(
+            "/docs/swagger-ui-bundle.js",
+            get(|| async { asset("text/javascript; charset=utf-8", SWAGGER_UI_BUNDLE) }),
+        )
+        .route(
+            "/docs/swagger-ui.css",
+            get(|| async { asset("text/css; charset=utf-8", SWAGGER_UI_CSS) }),
+        )
+        .route("/openapi.json", get(|| async { Json(document()) }))
 }
 
 fn schema_ref(name: &str) -> RefOr<Schema> {
