@@ -528,6 +528,7 @@ mod tests {
             let want = match e.path {
                 "/v1/journal-bearings/plain"
                 | "/v1/journal-bearings/whirl"
+                | "/v1/journal-bearings/dynamic"
                 | "/v1/contacts/ehl"
                 | "/v1/squeeze-films/journal"
                 | "/v1/thrust-bearings/fixed-pad"

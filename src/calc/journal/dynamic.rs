@@ -141,9 +141,17 @@ pub enum InitialStateName {
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct GivenState {
+    /// Journal centre from the bearing centre along x, m (inside 0.999 C).
+    #[schema(example = 0.0)]
     pub x_m: f64,
+    /// Along y (up), m.
+    #[schema(example = -5e-5)]
     pub y_m: f64,
+    /// Velocity of the centre along x, m/s (at most 1000 C ω in size).
+    #[schema(example = 0.0)]
     pub velocity_x_m_s: f64,
+    /// Along y, m/s.
+    #[schema(example = 0.0)]
     pub velocity_y_m_s: f64,
 }
 
@@ -576,8 +584,9 @@ pub struct DynamicOrbitPoint {
     pub time_s: f64,
     /// Journal rotation since the start of the load period, degrees.
     pub load_cycle_angle_deg: f64,
-    /// Journal centre, m.
+    /// Journal centre along x, m.
     pub x_m: f64,
+    /// Journal centre along y (up), m.
     pub y_m: f64,
     /// ε.
     pub eccentricity_ratio: f64,
