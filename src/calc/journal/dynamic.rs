@@ -448,10 +448,10 @@ impl Validate for DynamicJournalInput {
         let (d, l, c) = self.geometry.check(&mut errors);
         let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let rpm = self.speed_rpm.get();
-        if rpm > 1e6 {
+        if !(1e-6..=1e6).contains(&rpm) {
             errors.push(FieldError::new(
                 "/speed_rpm",
-                format!("must be at most 1e6 rev/min, got {rpm}"),
+                format!("must be within [1e-6, 1e6] rev/min, got {rpm}"),
             ));
         }
         let omega = rpm * PI / 30.0;
@@ -943,7 +943,8 @@ mod tests {
 
     #[test]
     fn invalid_requests_name_their_fields() {
-        let rows: [(Value, Value, &str); 8] = [
+        let rows: [(Value, Value, &str); 9] = [
+            (json!("speed_rpm"), json!(5e-324), "/speed_rpm"),
             (
                 json!("load"),
                 json!({"kind": "constant", "magnitude_n": -1, "direction_deg": 0}),

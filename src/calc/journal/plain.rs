@@ -253,8 +253,13 @@ impl Validate for PlainInput {
         let mut errors = Vec::new();
         let (d, l, c) = self.geometry.check(&mut errors);
         let l_over_d = l / d;
-        if self.speed_rpm.get() > 1e6 {
-            errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
+        // Below 1e-6 rev/min the Sommerfeld number leaves the range its searches work in (a
+        // subnormal speed made S 0 and the equilibrium search a 500).
+        if !(1e-6..=1e6).contains(&self.speed_rpm.get()) {
+            errors.push(FieldError::new(
+                "/speed_rpm",
+                "must be within [1e-6, 1e6] rev/min",
+            ));
         }
         let operating = match (self.load_n, self.eccentricity_ratio) {
             (Some(w), None) if (1e-6..=1e12).contains(&w.get()) => {

@@ -101,8 +101,12 @@ impl Validate for WhirlInput {
             ));
         }
         let speed = self.speed_rpm.map(Positive::get);
-        if speed.is_some_and(|n| n > MAX_SPEED_RPM) {
-            errors.push(FieldError::new("/speed_rpm", "must be at most 1e6 rev/min"));
+        // As /plain: below 1e-6 rev/min S underflows (schemathesis's 5e-324 rev/min was a 500).
+        if speed.is_some_and(|n| !(1e-6..=MAX_SPEED_RPM).contains(&n)) {
+            errors.push(FieldError::new(
+                "/speed_rpm",
+                "must be within [1e-6, 1e6] rev/min",
+            ));
         }
         let mass = self.journal_mass_kg.map(Positive::get);
         if mass.is_some_and(|m| m > MAX_MASS_KG) {
