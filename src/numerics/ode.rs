@@ -365,6 +365,14 @@ fn finite_difference_jacobian<const N: usize, R: Rate<N>>(
     work: &mut Work,
 ) -> Result<SMatrix<f64, N, N>, R::Error> {
     work.jacobians += 1;
+    // The base rate afresh: the f carried from the last step is its last stage's slope, off by
+    // the Newton residual over hγ, which a difference over √ε would magnify past use.
+    work.rate_evaluations += 1;
+    let f = match rate.rate(t, y) {
+        Ok(v) => v,
+        Err(RateError::Failed(e)) => return Err(e),
+        Err(RateError::Outside) => *f,
+    };
     let mut j = SMatrix::<f64, N, N>::zeros();
     for col in 0..N {
         let delta = f64::EPSILON.sqrt()

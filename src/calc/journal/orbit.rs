@@ -669,4 +669,46 @@ mod tests {
             w.min_eccentricity
         );
     }
+
+    #[test]
+    fn a_light_journal_at_loose_tolerances_stays_within_them_of_a_tight_run() {
+        // Convergence study: a light journal (m̄ ≈ 0.1, its squeeze damping rate ~500 per
+        // radian, so stiff) started off equilibrium under F̄ = 4.97 + 2.49 sin τ. Each tolerance's
+        // end state after 30 rad must lie within a few times the tolerance of the 1e-12 run, and
+        // ε_max within it. (A Jacobian differenced from the carried last-stage slope instead of
+        // a fresh rate once sent 1e-5 and looser runs into contact here.)
+        let load = LoadLaw::Sinusoidal {
+            steady: 4.97,
+            amplitude: 2.49,
+            frequency_ratio: 1.0,
+            direction: -0.5 * PI,
+        };
+        let p = problem(ShortArc::PiFilm, 0.098, load);
+        let go = |relative: f64| {
+            run(
+                &p,
+                Start {
+                    position: [0.3, -0.6],
+                    velocity: [0.0, 0.0],
+                },
+                Until::Time(30.0),
+                relative,
+                0,
+                &Budget::unlimited(),
+            )
+            .unwrap()
+        };
+        let reference = go(1e-12);
+        for relative in [1e-4, 1e-6, 1e-8] {
+            let o = go(relative);
+            let [x, y] = o.position;
+            let [xr, yr] = reference.position;
+            let end = (x - xr).hypot(y - yr);
+            let peak = (o.window.max_eccentricity - reference.window.max_eccentricity).abs();
+            assert!(
+                end < 10.0 * relative && peak < relative,
+                "{relative}: {end} {peak}"
+            );
+        }
+    }
 }
