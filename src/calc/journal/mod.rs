@@ -11,7 +11,8 @@
 //! - `moving_film`: the short film's force on a moving journal; `load_law`: dynamic loads;
 //!   `orbit`: the journal's orbit under them (stiff time integration);
 //! - `threshold`: the whirl threshold along the equilibrium locus (the `/whirl` room's model);
-//! - `whirl`: the `/v1/journal-bearings/whirl` room (request, response);
+//! - `whirl`: the `/v1/journal-bearings/whirl` room (request, response); `whirl_confirm`: its
+//!   threshold confirmed by simulating the orbit below and above it;
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
@@ -29,3 +30,4 @@ pub mod performance;
 pub mod plain;
 pub mod threshold;
 pub mod whirl;
+pub mod whirl_confirm;

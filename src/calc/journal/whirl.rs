@@ -6,9 +6,11 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::dynamics::Coefficients;
+use super::moving_film::ShortArc;
 use super::performance::Method;
 use super::plain::{grid_mesh, DynamicCoefficients, GeometrySpec};
 use super::threshold::{Rotor, SpeedThreshold, WhirlFilm};
+use super::whirl_confirm;
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
@@ -78,6 +80,12 @@ pub struct WhirlInput {
     /// ignore it.
     #[serde(default)]
     pub fidelity: FidelityRequest,
+    /// Confirm the threshold by simulation: the nonlinear orbit of rotors 0.8 and 1.25 times
+    /// the threshold mass, disturbed from equilibrium, with their measured growth rates beside
+    /// the eigenvalues' (short π film and fixed arc; default false).
+    #[serde(default)]
+    #[schema(example = false)]
+    pub confirm: bool,
 }
 
 /// The validated request.
@@ -86,6 +94,8 @@ pub struct WhirlCase {
     pub rotor: Rotor,
     pub speed_rpm: Option<f64>,
     pub mass_kg: Option<f64>,
+    /// Simulate the orbit on this arc below and above the threshold.
+    pub confirm: Option<ShortArc>,
 }
 
 impl Validate for WhirlInput {
@@ -181,6 +191,18 @@ impl Validate for WhirlInput {
                 }
             },
         };
+        let confirm = match (self.confirm, film) {
+            (false, _) => None,
+            (true, Some(WhirlFilm::ShortPiFilm)) => Some(ShortArc::PiFilm),
+            (true, Some(WhirlFilm::ShortFixedArc)) => Some(ShortArc::FixedArc),
+            (true, _) => {
+                errors.push(FieldError::new(
+                    "/confirm",
+                    "the nonlinear confirmation runs on the short π film or fixed arc (film_model short_pi_film or short_fixed_arc): the full film has no threshold to confirm, and the finite film has no moving-film model here",
+                ));
+                None
+            }
+        };
         match (errors.is_empty(), viscosity, film) {
             (true, Some(viscosity_pa_s), Some(film)) => Ok(WhirlCase {
                 rotor: Rotor {
@@ -193,6 +215,7 @@ impl Validate for WhirlInput {
                 },
                 speed_rpm: speed,
                 mass_kg: mass,
+                confirm,
             }),
             _ => Err(errors),
         }
@@ -265,6 +288,10 @@ pub struct WhirlOutput {
     /// Given both: that mode's frequency over the running speed, dimensionless.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub mode_frequency_ratio: Option<f64>,
+    /// With `confirm`: the simulated rotors just below and just above the threshold mass (at
+    /// the operating speed, or at the threshold speed when only a mass is given).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub confirmation: Option<WhirlConfirmation>,
     /// Stiffness and damping: at the operating point when a speed is given, else at the
     /// threshold speed (absent when there is none).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -354,6 +381,7 @@ impl Calculation for Whirl {
             growth_rate_per_s: None,
             mode_frequency_ratio: None,
             coefficients: None,
+            confirmation: None,
             statement: String::new(),
         };
         let mut statements = Vec::new();
@@ -481,8 +509,86 @@ impl Calculation for Whirl {
                 "the full (Sommerfeld) film has no direct stiffness: Lund's equivalent stiffness is 0 and a rotor of any mass whirls at half speed at every speed; the threshold is 0",
             );
         }
+        if let Some(arc) = case.confirm {
+            // The threshold to confirm: the mass at the speed, or the speed of the mass.
+            let around = match (&at_speed, &by_mass) {
+                (Some(at), _) => at.threshold_mass_kg.map(|m| (at.state, m)),
+                (None, Some(SpeedThreshold::Found(s))) => case.mass_kg.map(|m| (*s, m)),
+                _ => None,
+            };
+            match around {
+                Some((state, threshold)) if threshold > 0.0 => {
+                    let [below, above] =
+                        whirl_confirm::confirm(&rotor, arc, &state, threshold, &budget)?;
+                    let agrees = below.simulated_growth_rate_per_s < 0.0
+                        && above.simulated_growth_rate_per_s > 0.0;
+                    statements.push(format!(
+                        "simulated at {:.0} rev/min: a rotor of {} kg settles (growth {:.4} 1/s, eigenvalue {:.4}) and one of {} kg whirls (growth {:.4} 1/s, eigenvalue {:.4}){}",
+                        state.speed_rpm,
+                        readable(below.mass_kg),
+                        below.simulated_growth_rate_per_s,
+                        below.linear_growth_rate_per_s,
+                        readable(above.mass_kg),
+                        above.simulated_growth_rate_per_s,
+                        above.linear_growth_rate_per_s,
+                        if agrees { "" } else { " — NOT as the linearised threshold says" },
+                    ));
+                    out.confirmation = Some(WhirlConfirmation {
+                        speed_rpm: state.speed_rpm,
+                        threshold_mass_kg: threshold,
+                        below: below.into(),
+                        above: above.into(),
+                        agrees,
+                    });
+                }
+                _ => ctx.warn(
+                    "nothing_to_confirm",
+                    "confirm: there is no threshold mass here to simulate around (the film is stable for any mass, or no threshold speed was found)",
+                ),
+            }
+        }
         out.statement = statements.join("; ");
         CalcError::finite_or_out_of_range(out, "load_n, speed_rpm and journal_mass_kg")
+    }
+}
+
+/// The threshold confirmed by simulation.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct WhirlConfirmation {
+    /// The speed simulated at, rev/min.
+    pub speed_rpm: f64,
+    /// The linearised threshold mass there, kg.
+    pub threshold_mass_kg: f64,
+    /// The rotor 0.8 times the threshold mass.
+    pub below: SimulatedRotor,
+    /// The rotor 1.25 times the threshold mass.
+    pub above: SimulatedRotor,
+    /// Whether the lighter rotor's disturbance decays and the heavier one's grows.
+    pub agrees: bool,
+}
+
+/// One simulated rotor: the orbit from its equilibrium displaced by 10⁻³(1 − ε)C.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct SimulatedRotor {
+    /// Rotor mass on this bearing, kg.
+    pub mass_kg: f64,
+    /// The growth rate of the least damped mode of the linearised system, 1/s.
+    pub linear_growth_rate_per_s: f64,
+    /// The growth rate measured on the simulated orbit (peaks of the distance from
+    /// equilibrium, fitted), 1/s.
+    pub simulated_growth_rate_per_s: f64,
+    /// The time simulated, s.
+    pub simulated_time_s: f64,
+}
+
+impl From<whirl_confirm::Simulated> for SimulatedRotor {
+    fn from(s: whirl_confirm::Simulated) -> Self {
+        SimulatedRotor {
+            mass_kg: s.mass_kg,
+            linear_growth_rate_per_s: s.linear_growth_rate_per_s,
+            simulated_growth_rate_per_s: s.simulated_growth_rate_per_s,
+            simulated_time_s: s.simulated_time_s,
+        }
     }
 }
 

@@ -155,3 +155,42 @@ fn underdetermined_and_closed_form_finite_are_refused() {
     closed["fidelity"] = "closed_form".into();
     assert_eq!(testing::invalid_pointers::<Whirl>(&closed), ["/fidelity"]);
 }
+
+/// `confirm`: Ex 8.6's bearing on the short π film, given a speed (around the threshold mass
+/// there) and given only a mass (around it, at the threshold speed): the lighter rotor settles,
+/// the heavier whirls, and the simulated growth rates are the eigenvalues' within 0.1 %. The
+/// full and finite films have nothing to simulate and are refused at `/confirm`.
+#[test]
+fn confirm_simulates_both_sides_of_the_threshold() {
+    let (_, mut whirl) = ex_8_6();
+    whirl["film_model"] = "short_pi_film".into();
+    whirl["confirm"] = true.into();
+    let mut mass_only = whirl.clone();
+    mass_only.as_object_mut().unwrap().remove("speed_rpm");
+    for request in [whirl.clone(), mass_only] {
+        let v = testing::ok::<Whirl>(&request);
+        let c = &v["result"]["confirmation"];
+        assert_eq!(c["agrees"], true, "{c}");
+        for side in ["below", "above"] {
+            let s = &c[side];
+            assert_rel(
+                s["simulated_growth_rate_per_s"].as_f64().unwrap(),
+                s["linear_growth_rate_per_s"].as_f64().unwrap(),
+                1e-3,
+                side,
+            );
+        }
+        let threshold = c["threshold_mass_kg"].as_f64().unwrap();
+        assert_rel(
+            c["below"]["mass_kg"].as_f64().unwrap(),
+            0.8 * threshold,
+            1e-12,
+            "mass",
+        );
+    }
+    for film in ["short_full", "finite"] {
+        let mut refused = whirl.clone();
+        refused["film_model"] = film.into();
+        assert_eq!(testing::invalid_pointers::<Whirl>(&refused), ["/confirm"]);
+    }
+}
