@@ -6,7 +6,7 @@
 //! converged quadrature. Writes `docs/accuracy.md`.
 //!
 //! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` or
-//! `STRIBECK_ACCURACY_SECTION=ehl-point` before it regenerates only that section.
+//! `STRIBECK_ACCURACY_SECTION=ehl-point` (or `orbit`) before it regenerates only that section.
 
 use std::fmt::Write;
 use std::time::Instant;
@@ -365,6 +365,7 @@ fn main() {
     match std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() {
         Ok("gas") => return regenerate(GAS_HEADING, gas_bearings),
         Ok("ehl-point") => return regenerate(EHL_POINT_HEADING, ehl_point),
+        Ok("orbit") => return regenerate(ORBIT_HEADING, journal_orbits),
         _ => {}
     }
     let text = std::fs::read_to_string(concat!(
@@ -511,6 +512,7 @@ fn main() {
     thrust_pads(&mut out);
     squeeze_journal(&mut out);
     gas_bearings(&mut out);
+    journal_orbits(&mut out);
     let path = concat!(env!("CARGO_MANIFEST_DIR"), "/docs/accuracy.md");
     std::fs::create_dir_all(concat!(env!("CARGO_MANIFEST_DIR"), "/docs")).unwrap();
     std::fs::write(path, &out).unwrap();
@@ -886,4 +888,129 @@ fn gas_bearings(out: &mut String) {
             }
         }
     }
+}
+
+const ORBIT_HEADING: &str = "\n## Dynamically loaded journal: the steady orbit";
+
+/// A `/v1/journal-bearings/dynamic` body on the README's bearing (D = 0.1 m, L = 0.04 m,
+/// C = 0.1 mm, μ = 0.02 Pa·s, 3000 rpm; F_s = μRωL³/C² = 2010.6 N) under
+/// F̄ = F_s(steady + amplitude sin(ratio·τ)) downward, with the mass m̄ (m = m̄ F_s/(C ω²)).
+fn orbit_request(
+    mass: f64,
+    steady: f64,
+    amplitude: f64,
+    ratio: f64,
+    film: &str,
+    fidelity: &str,
+) -> String {
+    let omega = 3000.0 * std::f64::consts::PI / 30.0;
+    let force_scale = 0.02 * 0.05 * omega * 0.04f64.powi(3) / 1e-8;
+    format!(
+        r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}}, "lubricant": {{"viscosity_pa_s": 0.02}}, "speed_rpm": 3000, "journal_mass_kg": {}, "load": {{"kind": "sinusoidal", "static_n": {}, "amplitude_n": {}, "frequency_ratio": {ratio}, "direction_deg": -90}}, "film_model": "{film}", "fidelity": {fidelity}}}"#,
+        mass * force_scale / (1e-4 * omega * omega),
+        steady * force_scale,
+        amplitude * force_scale,
+    )
+}
+
+/// The dynamically loaded journal: per case and step tolerance, the error in ε_max and in the
+/// minimum film against the same request at 1e-12, the periods to the steady orbit, the steps
+/// and the median time per request.
+fn journal_orbits(out: &mut String) {
+    let started = Instant::now();
+    let entry = stribeck::calc::find("/v1/journal-bearings/dynamic").expect("registered");
+    let run = |body: &str| -> (Value, f64) {
+        let far = Instant::now() + std::time::Duration::from_secs(600);
+        let t = Instant::now();
+        let done = (entry.execute)(body.as_bytes(), far, Default::default()).expect("solves");
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        (serde_json::from_slice(&done.body).unwrap(), ms)
+    };
+    // (label, m̄, F̄ steady, amplitude, frequency ratio, film model)
+    let cases = [
+        (
+            "(a) README: m̄ = 0.0998, F̄ = 4.97 + 2.49 sin τ, π film",
+            0.0998,
+            4.9735,
+            2.4868,
+            1.0,
+            "short_pi_film",
+        ),
+        (
+            "(b) the same, massless (mobility)",
+            0.0,
+            4.9735,
+            2.4868,
+            1.0,
+            "short_pi_film",
+        ),
+        (
+            "(c) Harnoy Fig 18-9: m̄ = 50, F̄ = 100 + 100 sin 2τ, fixed arc",
+            50.0,
+            100.0,
+            100.0,
+            2.0,
+            "short_fixed_arc",
+        ),
+        (
+            "(d) Harnoy Fig 18-11: m̄ = 100, F̄ = 800 + 800 sin 2τ, fixed arc",
+            100.0,
+            800.0,
+            800.0,
+            2.0,
+            "short_fixed_arc",
+        ),
+    ];
+    let levels = [
+        "{\"tolerance\": 1e-4}",
+        "{\"tolerance\": 1e-5}",
+        "{\"tolerance\": 1e-6}",
+        "{\"tolerance\": 1e-7}",
+        "\"fast\"",
+        "\"standard\"",
+        "\"high\"",
+    ];
+    out.push_str(ORBIT_HEADING);
+    out.push_str("\n\n`/v1/journal-bearings/dynamic` driven with JSON bodies on the README's bearing (D = 0.1 m, L = 0.04 m, C = 0.1 mm,\n");
+    out.push_str("μ = 0.02 Pa·s, 3000 rpm), each run from the static equilibrium to the steady orbit. The loads and masses are\n");
+    out.push_str("given in the text's units (F̄ = F C²/(μRωL³), m̄ = m C³ω/(μRL³)); (c) and (d) are the spec's derived loci of\n");
+    out.push_str("Harnoy Figs 18-9 and 18-11 (regular bearing: ε_max 0.9604 and 0.9962), (d) the heavy case 0.4 % of the\n");
+    out.push_str("clearance from the wall. Reference: the same request at step tolerance 1e-12. Error: |Δε_max| and the\n");
+    out.push_str("relative error in `min_film_m`; periods: `periods_to_settle`; steps: `solver.iterations` (rejected in brackets);\n");
+    out.push_str("time: median of 5 whole requests, release build, one thread.\n\n");
+    out.push_str("| case | fidelity | step tolerance | Δε_max | min film error | periods | steps | median time |\n");
+    out.push_str("|---|---|---|---|---|---|---|---|\n");
+    for (label, mass, steady, amplitude, ratio, film) in cases {
+        let body = |f: &str| orbit_request(mass, steady, amplitude, ratio, film, f);
+        let (reference, _) = run(&body("{\"tolerance\": 1e-12}"));
+        let r = &reference["result"];
+        let (e_ref, h_ref) = (
+            r["max_eccentricity_ratio"].as_f64().unwrap(),
+            r["min_film_m"].as_f64().unwrap(),
+        );
+        let _ = writeln!(out, "| {label} | 1e-12 (reference) | 1e-12 | ε_max = {e_ref:.6} | h_min = {:.3} µm | {} | {} | — |", h_ref * 1e6, r["periods_to_settle"], reference["solver"]["iterations"]);
+        for level in levels {
+            let (v, _) = run(&body(level));
+            let mut times: Vec<f64> = (0..5).map(|_| run(&body(level)).1).collect();
+            times.sort_by(f64::total_cmp);
+            let r = &v["result"];
+            let solver = &v["solver"];
+            let tolerance = solver["time_integration"]["relative_tolerance"]
+                .as_f64()
+                .unwrap();
+            let de = (r["max_eccentricity_ratio"].as_f64().unwrap() - e_ref).abs();
+            let dh = (r["min_film_m"].as_f64().unwrap() / h_ref - 1.0).abs();
+            let _ = writeln!(
+                out,
+                "| {label} | {} | {tolerance:.0e} | {de:.1e} | {:.4} % | {} | {} ({}) | {:.2} ms |",
+                level.replace('"', "`"),
+                100.0 * dh,
+                r["periods_to_settle"],
+                solver["iterations"],
+                solver["time_integration"]["rejected_steps"],
+                times[2]
+            );
+        }
+    }
+    eprintln!("orbit section: {:.1} s", started.elapsed().as_secs_f64());
 }
