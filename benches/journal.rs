@@ -3,7 +3,9 @@
 //! - equilibrium from load: under 10 ms;
 //! - a closed form: under 20 µs;
 //! - the README's request (thermal, dynamics and the whirl threshold): fast ≤ 1 ms, standard
-//!   ≤ 5 ms, high ≤ 40 ms.
+//!   ≤ 5 ms, high ≤ 40 ms;
+//! - a steady orbit of the short-bearing models (the README's `/dynamic` request): under 50 ms;
+//! - a whirl threshold (the README's `/whirl` request on the short film): under 5 ms.
 //!
 //! `cargo bench --bench journal`.
 
@@ -82,6 +84,41 @@ fn journal(c: &mut Criterion) {
                 b.iter(|| {
                     let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
                     (entry.execute)(black_box(request.as_bytes()), far, Default::default()).unwrap()
+                })
+            },
+        );
+    }
+    let dynamic = stribeck::calc::find("/v1/journal-bearings/dynamic").unwrap();
+    for (film, mass) in [
+        ("short_pi_film", 20),
+        ("short_pi_film", 0),
+        ("short_fixed_arc", 20),
+    ] {
+        let request = format!(
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}}, "lubricant": {{"viscosity_pa_s": 0.02}}, "speed_rpm": 3000, "journal_mass_kg": {mass}, "load": {{"kind": "sinusoidal", "static_n": 10000, "amplitude_n": 5000, "frequency_ratio": 1, "direction_deg": -90}}, "film_model": "{film}", "fidelity": "standard"}}"#
+        );
+        c.bench_function(
+            &format!("README /dynamic request, {film}, {mass} kg, standard: steady orbit"),
+            |b| {
+                b.iter(|| {
+                    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                    (dynamic.execute)(black_box(request.as_bytes()), far, Default::default())
+                        .unwrap()
+                })
+            },
+        );
+    }
+    let whirl = stribeck::calc::find("/v1/journal-bearings/whirl").unwrap();
+    for (film, fidelity) in [("short_pi_film", "standard"), ("finite", "fast")] {
+        let request = format!(
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.05, "radial_clearance_m": 0.0001}}, "lubricant": {{"iso_vg": 32}}, "temperature_c": 50, "load_n": 2000, "speed_rpm": 6000, "journal_mass_kg": 150, "film_model": "{film}", "fidelity": "{fidelity}"}}"#
+        );
+        c.bench_function(
+            &format!("README /whirl request, {film} at {fidelity}: threshold mass, speed, verdict"),
+            |b| {
+                b.iter(|| {
+                    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                    (whirl.execute)(black_box(request.as_bytes()), far, Default::default()).unwrap()
                 })
             },
         );
