@@ -7,10 +7,15 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use std::sync::Arc;
+
+use super::film::Mesh;
+use super::finite_moving_film::{FiniteSqueezeFilm, ImpedanceTable, TableDensity};
 use super::load_law::{Engine, LoadLaw};
 use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
-use super::orbit::{self, OrbitError, Problem, Start, Until};
-use super::plain::GeometrySpec;
+use super::orbit::{self, OrbitError, OrbitFilm, Problem, Start, Until};
+use super::performance::Method;
+use super::plain::{grid_mesh, GeometrySpec};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::squeeze::lubricant::{self, Viscosity};
@@ -46,6 +51,10 @@ pub enum DynamicFilmModel {
     ShortFixedArc,
     /// The full 360° short film, negative pressures kept.
     ShortFull,
+    /// The finite bearing: the journal room's Reynolds solver with cavitation (p ≥ 0) on its
+    /// grid at the request's fidelity, tabulated once per request as the squeeze film's
+    /// impedance and interpolated at every step.
+    Finite,
 }
 
 /// One point of a tabulated load period.
@@ -213,7 +222,7 @@ pub struct DynamicJournalInput {
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e6, example = 10.0)]
     pub journal_mass_kg: Option<NonNegative>,
     pub load: DynamicLoadSpec,
-    /// `short_pi_film` (default), `short_fixed_arc` or `short_full`.
+    /// `short_pi_film` (default), `short_fixed_arc`, `short_full` or `finite`.
     #[serde(default)]
     pub film_model: DynamicFilmModel,
     /// `"centre"`, `"equilibrium"` (default) or `{"x_m", "y_m", "velocity_x_m_s",
@@ -221,8 +230,10 @@ pub struct DynamicJournalInput {
     pub initial_state: Option<InitialState>,
     /// `"steady_orbit"` (default), `{"time_s": t}` or `{"eccentricity_ratio": e}`.
     pub until: Option<UntilSpec>,
-    /// `fast`, `standard` (default), `high` (step tolerance 1e-8, 1e-9, 1e-10) or
-    /// `{"tolerance": 1e-12…1e-8}`.
+    /// `fast`, `standard` (default), `high` (step tolerance 1e-8, 1e-9, 1e-10; for `finite`
+    /// also the film's grid 48 × 6, 96 × 12, 192 × 24 and its table's density) or
+    /// `{"tolerance": 1e-12…1e-8}` (with `finite` also `"grid": [circumferential 16…1024 (even),
+    /// half-length axial 2…256]`).
     #[serde(default)]
     pub fidelity: FidelityRequest,
     /// Include 181 samples of the orbit over the result's window.
@@ -242,13 +253,39 @@ pub struct DynamicJournalCase {
     mass: f64,
     load: LoadLaw,
     engine: bool,
-    arc: ShortArc,
+    film: FilmChoice,
     initial: InitialStart,
     until: UntilRun,
     tolerance: f64,
     level: Level,
     include_orbit: bool,
 }
+
+/// The film model and, for the finite film, its grid and table.
+#[derive(Debug, Clone, Copy, PartialEq)]
+enum FilmChoice {
+    Short(ShortArc),
+    Finite { mesh: Mesh, density: TableDensity },
+}
+
+/// The impedance table's density at a fidelity level (see `dynamic.md`: the interpolation error
+/// measured against direct film solves stays below the grid's discretisation error).
+fn table_density(level: Level) -> TableDensity {
+    let (step, columns) = match level {
+        Level::Fast => (0.12, 36),
+        // A denser table on the finest grid would take longer than the deadline allows.
+        Level::High => (0.1, 40),
+        _ => (0.08, 48),
+    };
+    TableDensity {
+        step,
+        columns,
+        top: FINITE_TOP,
+    }
+}
+
+/// The largest ε the finite film's table reaches (h_min = 0.005 C).
+const FINITE_TOP: f64 = 0.995;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum InitialStart {
@@ -535,7 +572,7 @@ impl Validate for DynamicJournalInput {
             FidelityRequest::Level(Level::Standard) => (1e-9, Level::Standard),
             FidelityRequest::Level(Level::High) => (1e-10, Level::High),
             FidelityRequest::Custom(custom) => {
-                if custom.grid.is_some() {
+                if custom.grid.is_some() && self.film_model != DynamicFilmModel::Finite {
                     errors.push(FieldError::new(
                         "/fidelity/grid",
                         "the short film models have no grid; give a tolerance only",
@@ -551,6 +588,44 @@ impl Validate for DynamicJournalInput {
                 (t, Level::Standard)
             }
         };
+        if let (DynamicFilmModel::Finite, UntilRun::Eccentricity(e)) = (self.film_model, until) {
+            if e > FINITE_TOP {
+                errors.push(FieldError::new(
+                    "/until/eccentricity_ratio",
+                    format!("the finite film is tabulated to ε = {FINITE_TOP}: must be within (0, {FINITE_TOP}], got {e}"),
+                ));
+            }
+        }
+        if let (DynamicFilmModel::Finite, InitialStart::Given(r, _)) = (self.film_model, initial) {
+            let e = r[0].hypot(r[1]);
+            if e > FINITE_TOP {
+                errors.push(FieldError::new(
+                    "/initial_state",
+                    format!("the finite film is tabulated to ε = {FINITE_TOP}: the position must lie within {FINITE_TOP} of the clearance (ε = {e:.4})"),
+                ));
+            }
+        }
+        let film = match self.film_model {
+            DynamicFilmModel::ShortPiFilm => FilmChoice::Short(ShortArc::PiFilm),
+            DynamicFilmModel::ShortFixedArc => FilmChoice::Short(ShortArc::FixedArc),
+            DynamicFilmModel::ShortFull => FilmChoice::Short(ShortArc::Full),
+            DynamicFilmModel::Finite => {
+                let given = match self.fidelity {
+                    FidelityRequest::Custom(custom) => grid_mesh(custom.grid, &mut errors),
+                    FidelityRequest::Level(_) => None,
+                };
+                let mesh = Method::numerical(level, given, None)
+                    .mesh()
+                    .unwrap_or(Mesh {
+                        circumferential: 96,
+                        axial_half: 12,
+                    });
+                FilmChoice::Finite {
+                    mesh,
+                    density: table_density(level),
+                }
+            }
+        };
         match (errors.is_empty(), viscosity) {
             (true, Some(viscosity)) => Ok(DynamicJournalCase {
                 radius: 0.5 * d,
@@ -561,11 +636,7 @@ impl Validate for DynamicJournalInput {
                 mass,
                 load,
                 engine,
-                arc: match self.film_model {
-                    DynamicFilmModel::ShortPiFilm => ShortArc::PiFilm,
-                    DynamicFilmModel::ShortFixedArc => ShortArc::FixedArc,
-                    DynamicFilmModel::ShortFull => ShortArc::Full,
-                },
+                film,
                 initial,
                 until,
                 tolerance,
@@ -647,35 +718,31 @@ pub struct DynamicJournalOutput {
     pub orbit: Option<Vec<DynamicOrbitPoint>>,
 }
 
-/// Static equilibrium of the short film under F̄ (direction θ_F): the eccentricity along the
-/// load turned ahead by the film's attitude (Ocvirk's for the half films, 90° for the full),
-/// its ratio the root of |F̄_film| = |F̄|. None when the film cannot carry it short of contact.
-fn equilibrium(film: ShortFilm, load: [f64; 2]) -> Option<[f64; 2]> {
+/// Static equilibrium of the film under F̄: the journal at rest at the ε where the steady
+/// film's force |F̄_film(ε)| (the journal turning, w̄ = −½Ω̄ k × r̄) equals |F̄| (Brent), turned
+/// so that the film's force opposes the load (the film is axisymmetric: its force turns with
+/// the line of centres). None when the film cannot carry it within its reach.
+fn equilibrium(film: &OrbitFilm, load: [f64; 2]) -> Option<[f64; 2]> {
     let magnitude = load[0].hypot(load[1]);
     if magnitude == 0.0 {
         return Some([0.0, 0.0]);
     }
-    let direction = load[1].atan2(load[0]);
-    let attitude = |e: f64| match film.arc {
-        ShortArc::Full => 0.5 * PI,
-        _ => (PI * (1.0 - e * e).sqrt() / (4.0 * e.max(1e-300))).atan(),
+    // The steady force with the line of centres along +x.
+    let steady = |e: f64| {
+        let r = [e, 0.0];
+        film.force(r, squeeze_vector(r, [0.0, 0.0], film.speed_sum()))
     };
-    let at = |e: f64| {
-        let a = direction + attitude(e);
-        [e * a.cos(), e * a.sin()]
-    };
-    let carried = |e: f64| {
-        let r = at(e);
-        film.force(r, squeeze_vector(r, [0.0, 0.0], film.speed_sum))
-            .map_or(f64::INFINITY, |f| f[0].hypot(f[1]))
-            - magnitude
-    };
+    let carried = |e: f64| steady(e).map_or(f64::INFINITY, |f| f[0].hypot(f[1])) - magnitude;
     let stop = Stopping {
         x_tolerance: 1e-14,
         max_iterations: 200,
     };
-    let e = brent(carried, 1e-12, 1.0 - 1e-8, stop).ok()?.x;
-    Some(at(e))
+    let reach = film.reach().min(1.0 - 1e-8);
+    let e = brent(carried, 1e-12, reach, stop).ok()?.x;
+    let f = steady(e)?;
+    // The line of centres lies the load's direction less the angle of −F̄_film from it.
+    let a = load[1].atan2(load[0]) - (-f[1]).atan2(-f[0]);
+    Some([e * a.cos(), e * a.sin()])
 }
 
 fn degrees_within(a: f64, period: f64) -> f64 {
@@ -700,7 +767,7 @@ impl Calculation for DynamicJournal {
         let (r, l, c, w) = (case.radius, case.length, case.clearance, case.omega);
         let mu = case.viscosity.pa_s;
         let l_over_d = l / (2.0 * r);
-        if l_over_d > 0.5 {
+        if l_over_d > 0.5 && matches!(case.film, FilmChoice::Short(_)) {
             ctx.warn(
                 "short_bearing_beyond_validity",
                 format!("L/D = {l_over_d:.3}: the short-bearing film overestimates the load capacity above L/D ≈ 0.5 (Ocvirk); the orbit's ε is then too small"),
@@ -708,12 +775,37 @@ impl Calculation for DynamicJournal {
         }
         let force_scale = mu * r * w * l.powi(3) / (c * c);
         let mass = case.mass * c * w * w / force_scale;
-        let film = ShortFilm {
-            arc: case.arc,
-            speed_sum: 1.0,
+        let started = std::time::Instant::now();
+        let budget = ctx.budget();
+        let film = match case.film {
+            FilmChoice::Short(arc) => OrbitFilm::Short(ShortFilm {
+                arc,
+                speed_sum: 1.0,
+            }),
+            FilmChoice::Finite { mesh, density } => {
+                let film = FiniteSqueezeFilm { l_over_d, mesh };
+                let table = ImpedanceTable::build(film, density, &budget)?;
+                if table.cut_pressure > 1e-3 {
+                    ctx.warn(
+                        "finite_film_cut_holds_pressure",
+                        format!("L/D = {l_over_d:.3}: the squeeze film is cut where it opens fastest, and there it still carried {:.2} % of its peak pressure in some states (a long bearing near the centre keeps pressure round the circle); the force is then somewhat low", 100.0 * table.cut_pressure),
+                    );
+                }
+                OrbitFilm::Finite {
+                    table: Arc::new(table),
+                    speed_sum: 1.0,
+                }
+            }
+        };
+        let reach = match case.film {
+            FilmChoice::Short(_) => "short of contact".to_owned(),
+            FilmChoice::Finite { .. } => format!(
+                "within the finite film's table (ε ≤ {FINITE_TOP}, h_min ≥ {:.3e} m)",
+                c * (1.0 - FINITE_TOP)
+            ),
         };
         let problem = Problem {
-            film,
+            film: film.clone(),
             mass,
             load: case.load.clone(),
             force_scale,
@@ -722,10 +814,10 @@ impl Calculation for DynamicJournal {
             InitialStart::Centre => [0.0, 0.0],
             InitialStart::Equilibrium => {
                 let f = case.load.force(0.0);
-                equilibrium(film, [f[0] / force_scale, f[1] / force_scale]).ok_or_else(|| {
+                equilibrium(&film, [f[0] / force_scale, f[1] / force_scale]).ok_or_else(|| {
                     CalcError::impossible(
                         "/load",
-                        "the film cannot carry the load at time 0 short of contact (no static equilibrium to start from): lower the load, raise the speed or viscosity, or start from \"centre\"",
+                        format!("the film cannot carry the load at time 0 {reach} (no static equilibrium to start from): lower the load, raise the speed or viscosity, or start from \"centre\""),
                     )
                 })?
             }
@@ -746,7 +838,6 @@ impl Calculation for DynamicJournal {
             UntilRun::Eccentricity(e) => Until::Eccentricity { target: e, horizon },
         };
         let samples = if case.include_orbit { ORBIT_POINTS } else { 0 };
-        let started = std::time::Instant::now();
         let orbit = orbit::run(
             &problem,
             Start {
@@ -756,19 +847,32 @@ impl Calculation for DynamicJournal {
             until,
             case.tolerance,
             samples,
-            &ctx.budget(),
+            &budget,
         )
         .map_err(|e| match e {
             OrbitError::Contact { time, eccentricity } => CalcError::impossible(
                 "/load",
-                format!(
-                    "the journal reaches the bearing wall at t = {:.6e} s (ε = {eccentricity:.6}): the film cannot carry this load cycle — lower the load, raise the speed, viscosity or length",
-                    time / w
-                ),
+                match case.film {
+                    FilmChoice::Short(_) => format!(
+                        "the journal reaches the bearing wall at t = {:.6e} s (ε = {eccentricity:.6}): the film cannot carry this load cycle — lower the load, raise the speed, viscosity or length",
+                        time / w
+                    ),
+                    FilmChoice::Finite { .. } => format!(
+                        "the journal leaves the finite film's table at t = {:.6e} s (ε = {eccentricity:.6}; the table reaches ε = {FINITE_TOP}): the film cannot carry this load cycle with h_min above {:.3e} m — lower the load, raise the speed, viscosity or length",
+                        time / w,
+                        c * (1.0 - FINITE_TOP)
+                    ),
+                },
             ),
             OrbitError::Stopped(report) => CalcError::Stopped(Box::new(report)),
         })?;
         let mut report = orbit.report.clone().at(case.level);
+        if let FilmChoice::Finite { mesh, .. } = case.film {
+            report = report
+                .named("sdirk4_l_stable_on_finite_volume_active_set_impedance_table")
+                .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
+                .with_film_solves(budget.field_solves());
+        }
         report.elapsed_ms = started.elapsed().as_secs_f64() * 1e3;
         ctx.report(report);
         let window = &orbit.window;

@@ -21,6 +21,7 @@ pub mod eccentricity;
 pub mod feed;
 pub mod feed_spec;
 pub mod film;
+pub mod finite_moving_film;
 pub mod load_law;
 pub mod moving_film;
 pub mod operating;
