@@ -700,6 +700,101 @@ mod tests {
         assert!((a.min_eccentricity - b.min_eccentricity).abs() < 1e-3);
     }
 
+    /// The finite film at L/D = 0.5 on the fast mesh and table, as an orbit's film.
+    fn finite_problem(mass: f64, load: LoadLaw) -> Problem {
+        use crate::calc::journal::film::Mesh;
+        use crate::calc::journal::finite_moving_film::{
+            FiniteSqueezeFilm, ImpedanceTable, TableDensity,
+        };
+        let film = FiniteSqueezeFilm {
+            l_over_d: 0.5,
+            mesh: Mesh {
+                circumferential: 48,
+                axial_half: 6,
+            },
+        };
+        let density = TableDensity {
+            step: 0.12,
+            columns: 36,
+            top: 0.995,
+        };
+        let table = ImpedanceTable::build(film, density, &Budget::unlimited()).unwrap();
+        Problem {
+            film: OrbitFilm::Finite {
+                table: Arc::new(table),
+                speed_sum: 1.0,
+            },
+            mass,
+            load,
+            force_scale: 1.0,
+        }
+    }
+
+    #[test]
+    fn the_finite_film_turns_a_rotating_load_into_the_steady_films_circle() {
+        // Massless journal, load turning at s·ω: in the load's frame the film is the steady
+        // bearing at the effective speed (1 − 2s) (spec B.1.3; the squeeze vector is
+        // −½(1 − 2s) k × r̄), so the circle's radius is the root of |1 − 2s|·W̄(ε) = F̄ with
+        // W̄ the same film's steady force (mirrored when 1 − 2s < 0: the film is symmetric).
+        let p = finite_problem(0.0, LoadLaw::Constant { force: [0.0, 0.0] });
+        let steady = |e: f64| {
+            let r = [e, 0.0];
+            let f = p.film.force(r, squeeze_vector(r, [0.0, 0.0], 1.0)).unwrap();
+            f[0].hypot(f[1])
+        };
+        for s in [1.0, 0.25] {
+            let f = 2.0;
+            let want = crate::numerics::roots::brent(
+                |e| (1.0f64 - 2.0 * s).abs() * steady(e) - f,
+                1e-9,
+                0.99,
+                crate::numerics::roots::Stopping {
+                    x_tolerance: 1e-14,
+                    max_iterations: 200,
+                },
+            )
+            .unwrap()
+            .x;
+            let load = LoadLaw::Rotating {
+                magnitude: f,
+                speed_ratio: s,
+                start: -0.5 * PI,
+            };
+            let orbit = steady_orbit(&Problem { load, ..p.clone() }, [0.0, 0.0], 1e-9);
+            let w = &orbit.window;
+            assert!(orbit.steady, "s = {s}");
+            assert!(
+                (w.max_eccentricity - want).abs() < 1e-6 && (w.min_eccentricity - want).abs() < 1e-6,
+                "s = {s}: {} {} vs {want}",
+                w.max_eccentricity,
+                w.min_eccentricity
+            );
+        }
+    }
+
+    #[test]
+    fn a_light_journal_on_the_finite_film_follows_its_mobility_solution() {
+        // m̄ → 0: the journal with mass follows the massless (mobility) orbit on the same film.
+        let load = LoadLaw::Sinusoidal {
+            steady: 10.0,
+            amplitude: 5.0,
+            frequency_ratio: 1.0,
+            direction: -0.5 * PI,
+        };
+        let massless = steady_orbit(&finite_problem(0.0, load.clone()), [0.0, -0.5], 1e-9);
+        let light = steady_orbit(&finite_problem(1e-4, load), [0.0, -0.5], 1e-9);
+        let (a, b) = (&massless.window, &light.window);
+        assert!(massless.steady && light.steady);
+        assert!(
+            (a.max_eccentricity - b.max_eccentricity).abs() < 1e-3,
+            "{} {}",
+            a.max_eccentricity,
+            b.max_eccentricity
+        );
+        assert!((a.min_eccentricity - b.min_eccentricity).abs() < 1e-3);
+        assert!(a.peak_pressure > 0.0 && (a.peak_pressure / b.peak_pressure - 1.0).abs() < 1e-2);
+    }
+
     #[test]
     fn harnoys_regular_bearing_locus_matches_the_specs_derived_values() {
         // Spec B-R3 (Fig 18-9, regular bearing, book mode): F̄ = 100 + 100 sin 2τ downward,
