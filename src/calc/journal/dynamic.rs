@@ -751,7 +751,7 @@ fn degrees_within(a: f64, period: f64) -> f64 {
 
 impl Calculation for DynamicJournal {
     const PATH: &'static str = "/v1/journal-bearings/dynamic";
-    const SUMMARY: &'static str = "Dynamically loaded journal bearing: the journal's orbit under a constant, rotating, sinusoidal, tabulated or engine load (short π-film, fixed-arc or full film; with mass or by mobility), ε_max, h_min and where, peak pressure, power";
+    const SUMMARY: &'static str = "Dynamically loaded journal bearing: the journal's orbit under a constant, rotating, sinusoidal, tabulated or engine load (short π-film, fixed-arc or full film, or the finite Reynolds film with cavitation; with mass or by mobility), ε_max, h_min and where, peak pressure, power";
     const DESCRIPTION: &'static str = include_str!("dynamic.md");
     const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
     const EFFECTS: &'static [&'static str] = &[];
@@ -1046,8 +1046,71 @@ mod tests {
     }
 
     #[test]
+    fn the_finite_films_constant_load_orbit_ends_at_the_journal_rooms_equilibrium() {
+        // A constant load from the centre: the orbit's end is the steady film's equilibrium,
+        // which the journal room's `/plain` model finds at the same Sommerfeld number
+        // S = μ N_s L D (R/C)²/W on the same (standard, 96 × 12) mesh (Khonsari & Booser
+        // §8.12): the same ε and attitude to the two discretisations' difference.
+        use crate::calc::journal::film::FilmModel;
+        use crate::calc::journal::performance::{equilibrium, Method};
+        for mass in [0.0, 20.0] {
+            let mut body = example();
+            body["film_model"] = json!("finite");
+            body["journal_mass_kg"] = json!(mass);
+            body["initial_state"] = json!("centre");
+            body["load"] = json!({"kind": "constant", "magnitude_n": 10000, "direction_deg": -90});
+            let v = ok::<DynamicJournal>(&body);
+            assert_eq!(v["result"]["steady_orbit"], json!(true));
+            let (mu, n_s, l, d, r_over_c) = (0.02, 50.0, 0.04, 0.1, 500.0);
+            let s = mu * n_s * l * d * r_over_c * r_over_c / 10000.0;
+            let (point, _) = equilibrium(
+                s,
+                l / d,
+                Method::numerical(Level::Standard, None, None),
+                FilmModel::REYNOLDS,
+                &crate::calc::Budget::unlimited(),
+            )
+            .unwrap();
+            let eps = result_field(&v, "final_eccentricity_ratio");
+            let want = point.eccentricity_ratio.get();
+            assert!((eps - want).abs() < 2e-3, "m = {mass}: {eps} vs {want}");
+            let attitude = result_field(&v, "final_attitude_angle_deg");
+            assert!(
+                (attitude - point.attitude_angle.to_degrees()).abs() < 0.5,
+                "{attitude} vs {}",
+                point.attitude_angle.to_degrees()
+            );
+            assert_eq!(v["solver"]["grid"], json!([96, 12]));
+            assert!(v["solver"]["film_solves"].as_u64().unwrap() > 900);
+        }
+    }
+
+    #[test]
+    fn the_finite_orbit_converges_with_the_grid_and_carries_less_than_the_short_film() {
+        // The fidelity ladder of the finite film (grid, table and step tolerance together):
+        // ε_max of the example at fast and standard against high (release runs: 0.85694,
+        // 0.85636, 0.85624). L/D = 0.4: the short π-film overestimates the capacity, so its
+        // ε_max (0.8195) lies below the finite film's.
+        let at = |level: &str, model: &str| {
+            let mut body = example();
+            body["fidelity"] = json!(level);
+            body["film_model"] = json!(model);
+            let v = ok::<DynamicJournal>(&body);
+            assert!(result_field(&v, "peak_film_pressure_pa") > 0.0);
+            assert!(result_field(&v, "mean_power_loss_w") > 0.0);
+            result_field(&v, "max_eccentricity_ratio")
+        };
+        let high = at("high", "finite");
+        let (fast, standard) = (at("fast", "finite"), at("standard", "finite"));
+        assert!((fast - high).abs() < 2e-3, "{fast} {high}");
+        assert!((standard - high).abs() < 5e-4, "{standard} {high}");
+        assert!((standard - high).abs() < (fast - high).abs());
+        assert!(at("standard", "short_pi_film") < high - 0.02);
+    }
+
+    #[test]
     fn invalid_requests_name_their_fields() {
-        let rows: [(Value, Value, &str); 9] = [
+        let rows: [(Value, Value, &str); 10] = [
             (json!("speed_rpm"), json!(5e-324), "/speed_rpm"),
             (
                 json!("load"),
@@ -1081,6 +1144,11 @@ mod tests {
                 "/initial_state",
             ),
             (json!("fidelity"), json!("closed_form"), "/fidelity"),
+            (
+                json!("fidelity"),
+                json!({"grid": [96, 12]}),
+                "/fidelity/grid",
+            ),
         ];
         for (field, value, pointer) in rows {
             let mut body = example();
@@ -1100,6 +1168,84 @@ mod tests {
         let v = ok::<DynamicJournal>(&body);
         assert!(result_field(&v, "min_film_m") < 1e-7);
         assert!(warning_codes(&v).contains(&"film_thinner_than_1_percent_of_clearance".to_owned()));
+    }
+
+    #[test]
+    fn finite_requests_name_their_fields() {
+        let rows: [(Value, Value, &str); 3] = [
+            (
+                json!("until"),
+                json!({"eccentricity_ratio": 0.998}),
+                "/until/eccentricity_ratio",
+            ),
+            (
+                json!("initial_state"),
+                json!({"x_m": 0, "y_m": -9.97e-5, "velocity_x_m_s": 0, "velocity_y_m_s": 0}),
+                "/initial_state",
+            ),
+            (
+                json!("fidelity"),
+                json!({"grid": [97, 12]}),
+                "/fidelity/grid",
+            ),
+        ];
+        for (field, value, pointer) in rows {
+            let mut body = example();
+            body["film_model"] = json!("finite");
+            body[field.as_str().unwrap()] = value;
+            assert_eq!(
+                invalid_pointers::<DynamicJournal>(&body),
+                vec![pointer.to_owned()]
+            );
+        }
+        // A load the finite film cannot carry within its table: a 422 that says so.
+        let mut body = example();
+        body["film_model"] = json!("finite");
+        body["fidelity"] = json!("fast");
+        body["load"] = json!({"kind": "constant", "magnitude_n": 1e9, "direction_deg": -90});
+        match post::<DynamicJournal>(&body) {
+            Err(Failure::Calc(CalcError::Impossible { message, .. })) => {
+                assert!(message.contains("table"), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(8))]
+        #[test]
+        fn every_finite_orbit_is_finite_and_inside_the_clearance_or_a_422(
+            load_exp in 1.0f64..5.5,
+            mass_exp in -2.0f64..3.0,
+            massless in any::<bool>(),
+            kind in 0usize..3,
+            ratio in 0.1f64..3.0,
+            l_over_d in 0.1f64..2.0,
+        ) {
+            let magnitude = 10f64.powf(load_exp);
+            let mut body = example();
+            body["film_model"] = json!("finite");
+            body["fidelity"] = json!("fast");
+            body["geometry"]["length_m"] = json!(0.1 * l_over_d);
+            body["journal_mass_kg"] = json!(if massless { 0.0 } else { 10f64.powf(mass_exp) });
+            body["until"] = json!({"time_s": 0.1});
+            body["load"] = match kind {
+                0 => json!({"kind": "constant", "magnitude_n": magnitude, "direction_deg": -90}),
+                1 => json!({"kind": "rotating", "magnitude_n": magnitude, "speed_ratio": ratio, "direction_at_start_deg": 0}),
+                _ => json!({"kind": "sinusoidal", "static_n": magnitude, "amplitude_n": magnitude, "frequency_ratio": ratio, "direction_deg": -90}),
+            };
+            match post::<DynamicJournal>(&body) {
+                Ok(v) => {
+                    let max = result_field(&v, "max_eccentricity_ratio");
+                    let min = result_field(&v, "min_eccentricity_ratio");
+                    prop_assert!(0.0 <= min && min <= max && max <= FINITE_TOP, "{v}");
+                    prop_assert!(result_field(&v, "mean_power_loss_w") > 0.0);
+                    prop_assert!(result_field(&v, "peak_film_pressure_pa").is_finite());
+                }
+                Err(Failure::Calc(CalcError::Impossible { .. })) => {}
+                Err(other) => prop_assert!(false, "{body}: {other:?}"),
+            }
+        }
     }
 
     proptest! {

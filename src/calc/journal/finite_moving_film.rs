@@ -93,7 +93,10 @@ impl FiniteSqueezeFilm {
         let mid = &solution.midplane;
         let at_cut = mid[1].1.max(mid[mid.len() - 2].1);
         Ok(UnitResponse {
-            force: [-scale * solution.load_radial, scale * solution.load_tangential],
+            force: [
+                -scale * solution.load_radial,
+                scale * solution.load_tangential,
+            ],
             peak_pressure: scale * solution.max_pressure_nd,
             cut_pressure: at_cut / solution.max_pressure_nd.max(f64::MIN_POSITIVE),
         })
@@ -161,7 +164,11 @@ impl ImpedanceTable {
         for j in 0..m {
             let (sin, cos) = (2.0 * PI * j as f64 / m as f64).sin_cos();
             let [ga, gb] = centred.force;
-            values[j] = [cos * ga - sin * gb, sin * ga + cos * gb, centred.peak_pressure];
+            values[j] = [
+                cos * ga - sin * gb,
+                sin * ga + cos * gb,
+                centred.peak_pressure,
+            ];
         }
         for i in 1..rows {
             let eps = (i as f64 * density.step).tanh();

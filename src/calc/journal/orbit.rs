@@ -433,16 +433,17 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             Err(Failure::Halted(h)) => {
                 tally.steps += h.stopped.report.iterations;
                 let e = eccentricity(&h.y);
-                return Err(if h.stopped.reason() == StopReason::Stalled
-                    && e > 0.99 * problem.film.reach()
-                {
-                    OrbitError::Contact {
-                        time: h.t,
-                        eccentricity: e,
-                    }
-                } else {
-                    OrbitError::Stopped(h.stopped.report)
-                });
+                return Err(
+                    if h.stopped.reason() == StopReason::Stalled && e > 0.99 * problem.film.reach()
+                    {
+                        OrbitError::Contact {
+                            time: h.t,
+                            eccentricity: e,
+                        }
+                    } else {
+                        OrbitError::Stopped(h.stopped.report)
+                    },
+                );
             }
             Err(Failure::Rate(())) => unreachable!("the orbit's rates do not fail"),
         };
@@ -764,7 +765,8 @@ mod tests {
             let w = &orbit.window;
             assert!(orbit.steady, "s = {s}");
             assert!(
-                (w.max_eccentricity - want).abs() < 1e-6 && (w.min_eccentricity - want).abs() < 1e-6,
+                (w.max_eccentricity - want).abs() < 1e-6
+                    && (w.min_eccentricity - want).abs() < 1e-6,
                 "s = {s}: {} {} vs {want}",
                 w.max_eccentricity,
                 w.min_eccentricity
