@@ -161,10 +161,10 @@ impl ImpedanceTable {
         let mut cut_pressure = 0.0f64;
         let centred = film.unit_response(0.0, 0.0, budget)?;
         solves += 1;
-        for j in 0..m {
+        for (j, value) in values.iter_mut().take(m).enumerate() {
             let (sin, cos) = (2.0 * PI * j as f64 / m as f64).sin_cos();
             let [ga, gb] = centred.force;
-            values[j] = [
+            *value = [
                 cos * ga - sin * gb,
                 sin * ga + cos * gb,
                 centred.peak_pressure,
