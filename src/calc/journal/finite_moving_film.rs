@@ -34,7 +34,7 @@
 use std::f64::consts::PI;
 
 use super::film::{self, Film, FilmModel, Mesh};
-use super::moving_film::mobility_squeeze;
+use super::moving_film::{line_of_centres, mobility_squeeze};
 use crate::calc::{Budget, CalcError};
 use crate::numerics::reynolds::Stopping;
 
@@ -282,14 +282,7 @@ impl ImpedanceTable {
     /// ε, |w̄|, cos φ and sin φ of the line of centres, and α (w̄'s angle from it).
     fn frame(position: [f64; 2], squeeze: [f64; 2]) -> Option<(f64, f64, f64, f64, f64)> {
         let eps = position[0].hypot(position[1]);
-        let phi = if eps > 0.0 {
-            position[1].atan2(position[0])
-        } else {
-            0.0
-        };
-        let (s, c) = phi.sin_cos();
-        let wa = squeeze[0] * c + squeeze[1] * s;
-        let wb = -squeeze[0] * s + squeeze[1] * c;
+        let (c, s, [wa, wb]) = line_of_centres(position, squeeze);
         let size = wa.hypot(wb);
         (eps.is_finite() && size.is_finite()).then(|| (eps, size, c, s, wb.atan2(wa)))
     }

@@ -99,15 +99,7 @@ impl ShortFilm {
         if eps.is_nan() || eps >= CONTACT || !squeeze.iter().all(|w| w.is_finite()) {
             return None;
         }
-        // Line-of-centres frame: a along r̄ (towards the minimum film), b = k × a.
-        let phi = if eps > 0.0 {
-            position[1].atan2(position[0])
-        } else {
-            0.0
-        };
-        let (s, c) = phi.sin_cos();
-        let wa = squeeze[0] * c + squeeze[1] * s;
-        let wb = -squeeze[0] * s + squeeze[1] * c;
+        let (c, s, [wa, wb]) = line_of_centres(position, squeeze);
         if wa == 0.0 && wb == 0.0 && self.arc != ShortArc::Full {
             return Some([0.0, 0.0]);
         }
@@ -200,6 +192,26 @@ impl ShortFilm {
         let peak = (-minus_peak).max(value);
         peak.max(0.0)
     }
+}
+
+/// The line-of-centres frame of r̄: a along r̄ (towards the minimum film; +x at the centre),
+/// b = k × a. Returns cos φ, sin φ of a's direction and w̄'s components (w_a, w_b).
+#[must_use]
+pub fn line_of_centres(position: [f64; 2], squeeze: [f64; 2]) -> (f64, f64, [f64; 2]) {
+    let phi = if position[0] != 0.0 || position[1] != 0.0 {
+        position[1].atan2(position[0])
+    } else {
+        0.0
+    };
+    let (s, c) = phi.sin_cos();
+    (
+        c,
+        s,
+        [
+            squeeze[0] * c + squeeze[1] * s,
+            -squeeze[0] * s + squeeze[1] * c,
+        ],
+    )
 }
 
 /// Booker's mobility for a film whose force is positively homogeneous of degree 1 in the
