@@ -8,7 +8,8 @@
 //! - `closed_form`: infinitely short and long bearings;
 //! - `eccentricity`: the eccentricity ratio ε, checked once;
 //! - `dynamics`: stiffness, damping and the whirl threshold;
-//! - `moving_film`: the short film's force on a moving journal; `load_law`: dynamic loads;
+//! - `moving_film`: the short film's force on a moving journal; `finite_moving_film`: the finite
+//!   film's (the Reynolds film squeezed, as an impedance table); `load_law`: dynamic loads;
 //!   `orbit`: the journal's orbit under them (stiff time integration);
 //! - `threshold`: the whirl threshold along the equilibrium locus (the `/whirl` room's model);
 //! - `whirl`: the `/v1/journal-bearings/whirl` room (request, response); `whirl_confirm`: its
@@ -22,6 +23,7 @@ pub mod eccentricity;
 pub mod feed;
 pub mod feed_spec;
 pub mod film;
+pub mod finite_moving_film;
 pub mod load_law;
 pub mod moving_film;
 pub mod operating;

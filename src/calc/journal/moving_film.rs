@@ -99,15 +99,7 @@ impl ShortFilm {
         if eps.is_nan() || eps >= CONTACT || !squeeze.iter().all(|w| w.is_finite()) {
             return None;
         }
-        // Line-of-centres frame: a along r̄ (towards the minimum film), b = k × a.
-        let phi = if eps > 0.0 {
-            position[1].atan2(position[0])
-        } else {
-            0.0
-        };
-        let (s, c) = phi.sin_cos();
-        let wa = squeeze[0] * c + squeeze[1] * s;
-        let wb = -squeeze[0] * s + squeeze[1] * c;
+        let (c, s, [wa, wb]) = line_of_centres(position, squeeze);
         if wa == 0.0 && wb == 0.0 && self.arc != ShortArc::Full {
             return Some([0.0, 0.0]);
         }
@@ -147,36 +139,16 @@ impl ShortFilm {
             let f = self.force(position, [psi.cos(), psi.sin()])?;
             Some([-f[0], -f[1]])
         };
-        let direction = if self.arc == ShortArc::PiFilm {
-            let target = load[1].atan2(load[0]);
-            // Continuous angle of the response, unwrapped about ψ (it lies within ±π/2).
-            let miss = |psi: f64| match response(psi) {
-                Some(r) => {
-                    let turn = (r[1].atan2(r[0]) - psi + PI).rem_euclid(2.0 * PI) - PI;
-                    psi + turn - target
-                }
-                None => f64::NAN,
-            };
-            let stop = Stopping {
-                x_tolerance: 1e-13,
-                max_iterations: 100,
-            };
-            brent(miss, target - 0.5 * PI, target + 0.5 * PI, stop)
-                .ok()?
-                .x
-        } else {
-            // Linear: solve M w̄ = F̄ from the responses to the two unit squeezes.
-            let (rx, ry) = (response(0.0)?, response(0.5 * PI)?);
-            let det = rx[0] * ry[1] - ry[0] * rx[1];
-            let w = [
-                (load[0] * ry[1] - ry[0] * load[1]) / det,
-                (rx[0] * load[1] - load[0] * rx[1]) / det,
-            ];
-            return w.iter().all(|v| v.is_finite()).then_some(w);
-        };
-        let unit = response(direction)?;
-        let scale = magnitude / unit[0].hypot(unit[1]);
-        let w = [scale * direction.cos(), scale * direction.sin()];
+        if self.arc == ShortArc::PiFilm {
+            return mobility_squeeze(response, load);
+        }
+        // Linear: solve M w̄ = F̄ from the responses to the two unit squeezes.
+        let (rx, ry) = (response(0.0)?, response(0.5 * PI)?);
+        let det = rx[0] * ry[1] - ry[0] * rx[1];
+        let w = [
+            (load[0] * ry[1] - ry[0] * load[1]) / det,
+            (rx[0] * load[1] - load[0] * rx[1]) / det,
+        ];
         w.iter().all(|v| v.is_finite()).then_some(w)
     }
 
@@ -220,6 +192,59 @@ impl ShortFilm {
         let peak = (-minus_peak).max(value);
         peak.max(0.0)
     }
+}
+
+/// The line-of-centres frame of r̄: a along r̄ (towards the minimum film; +x at the centre),
+/// b = k × a. Returns cos φ, sin φ of a's direction and w̄'s components (w_a, w_b).
+#[must_use]
+pub fn line_of_centres(position: [f64; 2], squeeze: [f64; 2]) -> (f64, f64, [f64; 2]) {
+    let phi = if position[0] != 0.0 || position[1] != 0.0 {
+        position[1].atan2(position[0])
+    } else {
+        0.0
+    };
+    let (s, c) = phi.sin_cos();
+    (
+        c,
+        s,
+        [
+            squeeze[0] * c + squeeze[1] * s,
+            -squeeze[0] * s + squeeze[1] * c,
+        ],
+    )
+}
+
+/// Booker's mobility for a film whose force is positively homogeneous of degree 1 in the
+/// squeeze vector and dissipative (−F̄·w̄ > 0, so the response to a unit squeeze stays within
+/// 90° of it): `response(ψ)` is −F̄_film for the unit squeeze along ψ, and the squeeze that
+/// carries `load` (non-zero) points along the root ψ of the angle between the response and the
+/// load, bracketed within ±π/2 of the load, scaled by |load|/|response(ψ)|. None when the
+/// response is refused (contact) or the root is not found.
+#[must_use]
+pub fn mobility_squeeze(
+    response: impl Fn(f64) -> Option<[f64; 2]>,
+    load: [f64; 2],
+) -> Option<[f64; 2]> {
+    let target = load[1].atan2(load[0]);
+    // Continuous angle of the response, unwrapped about ψ (it lies within ±π/2).
+    let miss = |psi: f64| match response(psi) {
+        Some(r) => {
+            let turn = (r[1].atan2(r[0]) - psi + PI).rem_euclid(2.0 * PI) - PI;
+            psi + turn - target
+        }
+        None => f64::NAN,
+    };
+    let stop = Stopping {
+        x_tolerance: 1e-13,
+        max_iterations: 100,
+    };
+    let direction = brent(miss, target - 0.5 * PI, target + 0.5 * PI, stop)
+        .ok()?
+        .x;
+    let unit = response(direction)?;
+    let scale = load[0].hypot(load[1]) / unit[0].hypot(unit[1]);
+    let w = [scale * direction.cos(), scale * direction.sin()];
+    w.iter().all(|v| v.is_finite()).then_some(w)
 }
 
 #[cfg(test)]

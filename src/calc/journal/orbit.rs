@@ -1,5 +1,6 @@
 //! The journal's orbit under a dynamic load: Newton's law for the journal centre with the short
-//! film's force (`moving_film`), integrated by the stiff SDIRK integrator (`numerics::ode`)
+//! film's force (`moving_film`) or the finite film's (`finite_moving_film`, an impedance table
+//! from the Reynolds solver), integrated by the stiff SDIRK integrator (`numerics::ode`)
 //! until the orbit repeats itself over a load period, for a set time, or until an eccentricity
 //! is reached (Harnoy §18.5, Eqs 18-29 to 18-34 in Cartesian form, spec B.1.3–B.1.5).
 //!
@@ -13,8 +14,9 @@
 //! - Massless (m̄ = 0): the state (x̄, ȳ) and the velocity from Booker's mobility, the squeeze
 //!   vector at which the film carries the load.
 //!
-//! A state at or beyond contact (ε ≥ 1 − 10⁻⁹) is outside the film model: the integrator retries
-//! smaller, and a journal that still reaches the wall halts there (the caller reports contact).
+//! A state at or beyond contact (ε ≥ 1 − 10⁻⁹; for the finite film beyond its table's top) is
+//! outside the film model: the integrator retries smaller, and a journal that still reaches it
+//! halts there (the caller reports contact).
 //!
 //! The steady orbit: the run goes period by period (each period one integration that lands on
 //! its end) until the journal's position at the period's end differs from the last by less than
@@ -22,8 +24,11 @@
 
 use std::f64::consts::PI;
 
+use std::sync::Arc;
+
 use nalgebra::{SVector, Vector2, Vector4};
 
+use super::finite_moving_film::ImpedanceTable;
 use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortFilm};
 use crate::calc::Budget;
@@ -31,10 +36,63 @@ use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
 use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Settings, Step};
 use crate::numerics::optimise::brent_minimise;
 
+/// The film an orbit runs on: the short film's closed forms, or the finite film's impedance
+/// table (built once per request from the Reynolds solver) with Ω̄ = (ω_j + ω_b)/ω_j.
+#[derive(Debug, Clone, PartialEq)]
+pub enum OrbitFilm {
+    Short(ShortFilm),
+    Finite {
+        table: Arc<ImpedanceTable>,
+        speed_sum: f64,
+    },
+}
+
+impl OrbitFilm {
+    /// Ω̄, which turns the velocity into the squeeze vector.
+    pub fn speed_sum(&self) -> f64 {
+        match self {
+            OrbitFilm::Short(f) => f.speed_sum,
+            OrbitFilm::Finite { speed_sum, .. } => *speed_sum,
+        }
+    }
+
+    /// F̄ at r̄ with squeeze vector w̄; None outside the model (contact, or beyond the table).
+    pub fn force(&self, position: [f64; 2], squeeze: [f64; 2]) -> Option<[f64; 2]> {
+        match self {
+            OrbitFilm::Short(f) => f.force(position, squeeze),
+            OrbitFilm::Finite { table, .. } => table.force(position, squeeze),
+        }
+    }
+
+    /// The mobility: the squeeze vector at which the film carries `load`.
+    pub fn squeeze_for(&self, position: [f64; 2], load: [f64; 2]) -> Option<[f64; 2]> {
+        match self {
+            OrbitFilm::Short(f) => f.squeeze_for(position, load),
+            OrbitFilm::Finite { table, .. } => table.squeeze_for(position, load),
+        }
+    }
+
+    /// The peak film pressure p̄.
+    pub fn peak_pressure(&self, position: [f64; 2], squeeze: [f64; 2]) -> f64 {
+        match self {
+            OrbitFilm::Short(f) => f.peak_pressure(position, squeeze),
+            OrbitFilm::Finite { table, .. } => table.peak_pressure(position, squeeze),
+        }
+    }
+
+    /// The largest ε the film answers for.
+    pub fn reach(&self) -> f64 {
+        match self {
+            OrbitFilm::Short(_) => super::moving_film::CONTACT,
+            OrbitFilm::Finite { table, .. } => table.top(),
+        }
+    }
+}
+
 /// The problem in the integrator's units.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Problem {
-    pub film: ShortFilm,
+    pub film: OrbitFilm,
     /// m̄; 0 for the massless (mobility) journal.
     pub mass: f64,
     pub load: LoadLaw,
@@ -128,7 +186,7 @@ impl Rate<4> for WithMass<'_> {
     fn rate(&mut self, t: f64, y: &Vector4<f64>) -> Result<Vector4<f64>, RateError<()>> {
         let p = self.0;
         let r = [y[0], y[1]];
-        let w = squeeze_vector(r, [y[2], y[3]], p.film.speed_sum);
+        let w = squeeze_vector(r, [y[2], y[3]], p.film.speed_sum());
         let film = p.film.force(r, w).ok_or(RateError::Outside)?;
         let load = p.load.force(t);
         let m = p.mass;
@@ -152,7 +210,7 @@ impl Massless<'_> {
             .film
             .squeeze_for(r, [load[0] / p.force_scale, load[1] / p.force_scale])?;
         // v̄ = w̄ + ½Ω̄ k × r̄.
-        let half = 0.5 * p.film.speed_sum;
+        let half = 0.5 * p.film.speed_sum();
         Some([w[0] - half * r[1], w[1] + half * r[0]])
     }
 }
@@ -224,18 +282,18 @@ struct Leg<const N: usize> {
 }
 
 /// Running statistics of one window.
-struct Tracker {
+struct Tracker<'a> {
     window: Window,
     couette_integral: f64,
-    film: ShortFilm,
+    film: &'a OrbitFilm,
 }
 
 fn eccentricity<const N: usize>(y: &SVector<f64, N>) -> f64 {
     y[0].hypot(y[1])
 }
 
-impl Tracker {
-    fn new(from: f64, film: ShortFilm) -> Self {
+impl<'a> Tracker<'a> {
+    fn new(from: f64, film: &'a OrbitFilm) -> Self {
         Tracker {
             window: Window {
                 from,
@@ -297,7 +355,7 @@ impl Tracker {
         let r = [step.y1[0], step.y1[1]];
         let p = self
             .film
-            .peak_pressure(r, squeeze_vector(r, velocity, self.film.speed_sum));
+            .peak_pressure(r, squeeze_vector(r, velocity, self.film.speed_sum()));
         w.peak_pressure = w.peak_pressure.max(p);
         w.to = t1;
     }
@@ -341,7 +399,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
                    tally: &mut Tally,
                    peak: &mut (f64, f64)|
      -> Result<Leg<N>, OrbitError> {
-        let mut tracker = Tracker::new(t, problem.film);
+        let mut tracker = Tracker::new(t, &problem.film);
         let mut kept: Vec<Step<N>> = Vec::new();
         let mut reached = false;
         let observe = |step: &Step<N>| {
@@ -375,14 +433,17 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             Err(Failure::Halted(h)) => {
                 tally.steps += h.stopped.report.iterations;
                 let e = eccentricity(&h.y);
-                return Err(if h.stopped.reason() == StopReason::Stalled && e > 0.99 {
-                    OrbitError::Contact {
-                        time: h.t,
-                        eccentricity: e,
-                    }
-                } else {
-                    OrbitError::Stopped(h.stopped.report)
-                });
+                return Err(
+                    if h.stopped.reason() == StopReason::Stalled && e > 0.99 * problem.film.reach()
+                    {
+                        OrbitError::Contact {
+                            time: h.t,
+                            eccentricity: e,
+                        }
+                    } else {
+                        OrbitError::Stopped(h.stopped.report)
+                    },
+                );
             }
             Err(Failure::Rate(())) => unreachable!("the orbit's rates do not fail"),
         };
@@ -518,10 +579,10 @@ mod tests {
 
     fn problem(arc: ShortArc, mass: f64, load: LoadLaw) -> Problem {
         Problem {
-            film: ShortFilm {
+            film: OrbitFilm::Short(ShortFilm {
                 arc,
                 speed_sum: 1.0,
-            },
+            }),
             mass,
             load,
             force_scale: 1.0,
@@ -630,7 +691,13 @@ mod tests {
             1e-9,
         );
         let light = steady_orbit(&problem(ShortArc::PiFilm, 1e-4, load), [0.0, -0.5], 1e-9);
+        assert_same_orbit(&massless, &light);
+    }
+
+    /// Two steady orbits' ε extremes agree within 10⁻³ and their peak pressures within 1 %.
+    fn assert_same_orbit(massless: &Orbit, light: &Orbit) {
         let (a, b) = (&massless.window, &light.window);
+        assert!(massless.steady && light.steady);
         assert!(
             (a.max_eccentricity - b.max_eccentricity).abs() < 1e-3,
             "{} {}",
@@ -638,6 +705,94 @@ mod tests {
             b.max_eccentricity
         );
         assert!((a.min_eccentricity - b.min_eccentricity).abs() < 1e-3);
+        assert!(a.peak_pressure > 0.0 && (a.peak_pressure / b.peak_pressure - 1.0).abs() < 1e-2);
+    }
+
+    /// The finite film at L/D = 0.5 on the fast mesh and table, as an orbit's film.
+    fn finite_problem(mass: f64, load: LoadLaw) -> Problem {
+        use crate::calc::journal::film::Mesh;
+        use crate::calc::journal::finite_moving_film::{
+            FiniteSqueezeFilm, ImpedanceTable, TableDensity,
+        };
+        let film = FiniteSqueezeFilm {
+            l_over_d: 0.5,
+            mesh: Mesh {
+                circumferential: 48,
+                axial_half: 6,
+            },
+        };
+        let density = TableDensity {
+            step: 0.12,
+            columns: 36,
+            top: 0.995,
+        };
+        let table = ImpedanceTable::build(film, density, &Budget::unlimited()).unwrap();
+        Problem {
+            film: OrbitFilm::Finite {
+                table: Arc::new(table),
+                speed_sum: 1.0,
+            },
+            mass,
+            load,
+            force_scale: 1.0,
+        }
+    }
+
+    #[test]
+    fn the_finite_film_turns_a_rotating_load_into_the_steady_films_circle() {
+        // Massless journal, load turning at s·ω: in the load's frame the film is the steady
+        // bearing at the effective speed (1 − 2s) (spec B.1.3; the squeeze vector is
+        // −½(1 − 2s) k × r̄), so the circle's radius is the root of |1 − 2s|·W̄(ε) = F̄ with
+        // W̄ the same film's steady force (mirrored when 1 − 2s < 0: the film is symmetric).
+        let p = finite_problem(0.0, LoadLaw::Constant { force: [0.0, 0.0] });
+        let steady = |e: f64| {
+            let r = [e, 0.0];
+            let f = p.film.force(r, squeeze_vector(r, [0.0, 0.0], 1.0)).unwrap();
+            f[0].hypot(f[1])
+        };
+        for s in [1.0, 0.25] {
+            let f = 2.0;
+            let want = crate::numerics::roots::brent(
+                |e| (1.0f64 - 2.0 * s).abs() * steady(e) - f,
+                1e-9,
+                0.99,
+                crate::numerics::roots::Stopping {
+                    x_tolerance: 1e-14,
+                    max_iterations: 200,
+                },
+            )
+            .unwrap()
+            .x;
+            let load = LoadLaw::Rotating {
+                magnitude: f,
+                speed_ratio: s,
+                start: -0.5 * PI,
+            };
+            let orbit = steady_orbit(&Problem { load, ..p.clone() }, [0.0, 0.0], 1e-9);
+            let w = &orbit.window;
+            assert!(orbit.steady, "s = {s}");
+            assert!(
+                (w.max_eccentricity - want).abs() < 1e-6
+                    && (w.min_eccentricity - want).abs() < 1e-6,
+                "s = {s}: {} {} vs {want}",
+                w.max_eccentricity,
+                w.min_eccentricity
+            );
+        }
+    }
+
+    #[test]
+    fn a_light_journal_on_the_finite_film_follows_its_mobility_solution() {
+        // m̄ → 0: the journal with mass follows the massless (mobility) orbit on the same film.
+        let load = LoadLaw::Sinusoidal {
+            steady: 10.0,
+            amplitude: 5.0,
+            frequency_ratio: 1.0,
+            direction: -0.5 * PI,
+        };
+        let massless = steady_orbit(&finite_problem(0.0, load.clone()), [0.0, -0.5], 1e-9);
+        let light = steady_orbit(&finite_problem(1e-4, load), [0.0, -0.5], 1e-9);
+        assert_same_orbit(&massless, &light);
     }
 
     #[test]

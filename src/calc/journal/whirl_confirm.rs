@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 
 use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
-use super::orbit::{self, OrbitError, Problem, Start, Until};
+use super::orbit::{self, OrbitError, OrbitFilm, Problem, Start, Until};
 use super::threshold::{FilmState, Rotor};
 use crate::calc::{Budget, CalcError};
 
@@ -72,11 +72,12 @@ fn simulate(
     let period = 2.0 * PI / linear.frequency_ratio.max(0.05);
     let g = linear.growth_rate_per_s / omega;
     let span = (3.0 / g.abs().max(1e-12)).clamp(20.0 * period, 200.0 * period);
+    let film = ShortFilm {
+        arc,
+        speed_sum: 1.0,
+    };
     let problem = Problem {
-        film: ShortFilm {
-            arc,
-            speed_sum: 1.0,
-        },
+        film: OrbitFilm::Short(film),
         mass: mass_kg * c * omega * omega / force_scale,
         load: LoadLaw::Constant {
             force: [0.0, -rotor.load_n],
@@ -84,7 +85,7 @@ fn simulate(
         force_scale,
     };
     let eps = state.eccentricity_ratio;
-    let equilibrium = equilibrium(problem.film, eps).ok_or_else(|| {
+    let equilibrium = equilibrium(film, eps).ok_or_else(|| {
         CalcError::Internal(format!("whirl confirmation: no film force at ε = {eps}"))
     })?;
     let delta = 1e-3 * (1.0 - eps);
