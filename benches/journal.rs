@@ -5,6 +5,7 @@
 //! - the README's request (thermal, dynamics and the whirl threshold): fast ≤ 1 ms, standard
 //!   ≤ 5 ms, high ≤ 40 ms;
 //! - a steady orbit of the short-bearing models (the README's `/dynamic` request): under 50 ms;
+//!   of the finite film at `fast`: under 2 s;
 //! - a whirl threshold (the README's `/whirl` request on the short film): under 5 ms.
 //!
 //! `cargo bench --bench journal`.
@@ -89,16 +90,17 @@ fn journal(c: &mut Criterion) {
         );
     }
     let dynamic = stribeck::calc::find("/v1/journal-bearings/dynamic").unwrap();
-    for (film, mass) in [
-        ("short_pi_film", 20),
-        ("short_pi_film", 0),
-        ("short_fixed_arc", 20),
+    for (film, mass, fidelity) in [
+        ("short_pi_film", 20, "standard"),
+        ("short_pi_film", 0, "standard"),
+        ("short_fixed_arc", 20, "standard"),
+        ("finite", 20, "fast"),
     ] {
         let request = format!(
-            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}}, "lubricant": {{"viscosity_pa_s": 0.02}}, "speed_rpm": 3000, "journal_mass_kg": {mass}, "load": {{"kind": "sinusoidal", "static_n": 10000, "amplitude_n": 5000, "frequency_ratio": 1, "direction_deg": -90}}, "film_model": "{film}", "fidelity": "standard"}}"#
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}}, "lubricant": {{"viscosity_pa_s": 0.02}}, "speed_rpm": 3000, "journal_mass_kg": {mass}, "load": {{"kind": "sinusoidal", "static_n": 10000, "amplitude_n": 5000, "frequency_ratio": 1, "direction_deg": -90}}, "film_model": "{film}", "fidelity": "{fidelity}"}}"#
         );
         c.bench_function(
-            &format!("README /dynamic request, {film}, {mass} kg, standard: steady orbit"),
+            &format!("README /dynamic request, {film}, {mass} kg, {fidelity}: steady orbit"),
             |b| {
                 b.iter(|| {
                     let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
