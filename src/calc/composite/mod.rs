@@ -9,6 +9,7 @@
 //!   rolling phase, break-away and the sleeve's run-down to its steady speed).
 
 pub mod film;
+pub mod locus;
 pub mod sleeve;
 pub mod speed_split;
 pub mod split;
