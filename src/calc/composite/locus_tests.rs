@@ -117,3 +117,115 @@ fn harnoys_composite_loci_match_the_specs_derived_table() {
         }
     }
 }
+
+/// A dimensional bearing for the checks below: R 50 mm, L 50 mm, C 50 µm, μ 0.03 Pa·s.
+const FILM: SleeveFilm = SleeveFilm {
+    radius: 0.05,
+    length: 0.05,
+    clearance: 5e-5,
+    viscosity: 0.03,
+};
+
+#[test]
+fn the_dimensionless_sleeve_law_is_the_speed_split_rooms_torque_balance() {
+    // I_eq dω_b/dt = M_h − M_f − M_r with the speed-split room's M_h (Eq. 18-3) and restraint,
+    // over I_eq ω_j²: the text's Eq. 18-16 with I_eq restored; and its steady ξ is the split's.
+    let wj = 3000.0 * PI / 30.0;
+    let inertia = 0.002;
+    for rolling_torque in [0.0, 0.5] {
+        let restraint = Restraint {
+            coefficient: 0.01,
+            rolling_torque,
+        };
+        let groups = SleeveGroups::of(&FILM, &restraint, inertia, wj);
+        for eps in [0.0, 0.5, 0.95] {
+            for xi in [0.05, 0.4, 0.9] {
+                let wb = xi * wj;
+                let torque =
+                    FILM.torque(eps, wj, wb) - restraint.pin_torque(wb) - restraint.rolling_torque;
+                let ours = groups.acceleration(eps, xi) * inertia * wj * wj;
+                assert!((ours / torque - 1.0).abs() < 1e-12, "ε {eps} ξ {xi}: {ours} {torque}");
+            }
+            let split = restraint.steady_speed_ratio(FILM.petroff_coefficient(eps), wj);
+            assert!((groups.steady_speed_ratio(eps) - split).abs() < 1e-14);
+            assert!(groups.acceleration(eps, split).abs() < 1e-12 * groups.drive);
+        }
+    }
+}
+
+#[test]
+fn a_constant_load_settles_at_the_speed_splits_steady_state_from_the_centre() {
+    // The steady split (speed-split room, closed form in ξ, one root in ε) is the composite
+    // orbit's fixed point under a constant load: from the centre with the sleeve at rest the
+    // locus settles on it, with mass or by mobility, with or without rolling friction.
+    let wj = 3000.0 * PI / 30.0;
+    let (load, inertia) = (5000.0, 0.002);
+    let force_scale = FILM.viscosity * FILM.radius * wj * FILM.length.powi(3) / FILM.clearance.powi(2);
+    for rolling_torque in [0.0, 0.5] {
+        let restraint = Restraint {
+            coefficient: 0.01,
+            rolling_torque,
+        };
+        let want = split(&FILM, &restraint, wj, Operating::Load(load))
+            .unwrap()
+            .composite;
+        for mass_kg in [0.0, 5.0] {
+            let p = Problem {
+                arc: ShortArc::PiFilm,
+                mass: mass_kg * FILM.clearance * wj * wj / force_scale,
+                load: LoadLaw::Constant {
+                    force: [0.0, -load],
+                },
+                force_scale,
+                sleeve: SleeveGroups::of(&FILM, &restraint, inertia, wj),
+            };
+            let centre = Equilibrium {
+                position: [0.0, 0.0],
+                speed_ratio: 0.0,
+            };
+            let locus = steady_locus(&p, centre);
+            let w = &locus.window;
+            let case = format!("M_r {rolling_torque}, m {mass_kg}");
+            assert!((w.max_eccentricity - want.eccentricity).abs() < 1e-6, "{case}: {} {}", w.max_eccentricity, want.eccentricity);
+            assert!((w.min_eccentricity - want.eccentricity).abs() < 1e-6, "{case}");
+            assert!((w.mean_speed_ratio - want.speed_ratio).abs() < 1e-6, "{case}: {} {}", w.mean_speed_ratio, want.speed_ratio);
+            // The joint static start is the same state.
+            let start = p.equilibrium(false).unwrap();
+            assert!((start.position[0].hypot(start.position[1]) - want.eccentricity).abs() < 1e-10);
+            assert!((start.speed_ratio - want.speed_ratio).abs() < 1e-10);
+        }
+    }
+}
+
+#[test]
+fn an_undriven_sleeve_is_the_journal_rooms_orbit() {
+    // H₁ = 0 and ξ = 0 at the start: the sleeve stays held and the composite locus is the
+    // regular bearing's, computed by the journal room's orbit (mass and massless, both arcs),
+    // to the period map's tolerance (10⁻⁷ per period; the step sequences differ).
+    for (arc, mass) in [(ShortArc::FixedArc, 50.0), (ShortArc::PiFilm, 0.0)] {
+        let mut p = book_case(20.0, 2.0, mass, 1.0);
+        p.arc = arc;
+        p.sleeve.drive = 0.0;
+        let start = p.equilibrium(true).unwrap();
+        let composite = steady_locus(&p, start).window;
+        let held = regular(&p).window;
+        assert!((composite.max_eccentricity - held.max_eccentricity).abs() < 1e-6, "{arc:?}");
+        assert!((composite.min_eccentricity - held.min_eccentricity).abs() < 1e-6, "{arc:?}");
+        assert_eq!((composite.min_speed_ratio, composite.max_speed_ratio), (0.0, 0.0));
+    }
+}
+
+#[test]
+fn a_light_composite_journal_follows_the_mobility_solution() {
+    let mut light = book_case(20.0, 2.0, 1e-4, 1.0);
+    light.arc = ShortArc::PiFilm;
+    let massless = Problem {
+        mass: 0.0,
+        ..light.clone()
+    };
+    let a = steady_locus(&massless, massless.equilibrium(false).unwrap()).window;
+    let b = steady_locus(&light, light.equilibrium(false).unwrap()).window;
+    assert!((a.max_eccentricity - b.max_eccentricity).abs() < 1e-3, "{} {}", a.max_eccentricity, b.max_eccentricity);
+    assert!((a.min_eccentricity - b.min_eccentricity).abs() < 1e-3);
+    assert!((a.max_speed_ratio - b.max_speed_ratio).abs() < 1e-3);
+}
