@@ -772,13 +772,19 @@ mod tests {
             f1: Vector2::new(t1.cos(), -t1.sin()),
         };
         let sine = step.extremes(|y| y[0]);
-        assert!((sine.max - 1.0).abs() < 1e-3 && (sine.time_of_max - std::f64::consts::FRAC_PI_2).abs() < 1e-2);
+        assert!(
+            (sine.max - 1.0).abs() < 1e-3
+                && (sine.time_of_max - std::f64::consts::FRAC_PI_2).abs() < 1e-2
+        );
         assert_eq!((sine.min, sine.time_of_min), (t1.sin(), t1));
         let cosine = step.extremes(|y| y[1]);
         assert_eq!((cosine.max, cosine.time_of_max), (t0.cos(), t0));
         assert_eq!((cosine.min, cosine.time_of_min), (t1.cos(), t1));
         // A trough inside the step: −sin.
         let trough = step.extremes(|y| -y[0]);
-        assert!((trough.min + 1.0).abs() < 1e-3 && (trough.time_of_min - std::f64::consts::FRAC_PI_2).abs() < 1e-2);
+        assert!(
+            (trough.min + 1.0).abs() < 1e-3
+                && (trough.time_of_min - std::f64::consts::FRAC_PI_2).abs() < 1e-2
+        );
     }
 }

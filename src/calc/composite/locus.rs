@@ -280,10 +280,26 @@ pub fn run(
     let xi = start.speed_ratio;
     let run = if problem.mass > 0.0 {
         let y0 = Vector5::new(x, y, 0.0, 0.0, xi);
-        march(&mut WithMass(problem), problem, y0, settling, relative, samples, budget)
+        march(
+            &mut WithMass(problem),
+            problem,
+            y0,
+            settling,
+            relative,
+            samples,
+            budget,
+        )
     } else {
         let y0 = Vector3::new(x, y, xi);
-        march(&mut Massless(problem), problem, y0, settling, relative, samples, budget)
+        march(
+            &mut Massless(problem),
+            problem,
+            y0,
+            settling,
+            relative,
+            samples,
+            budget,
+        )
     };
     run.map(|(window, steady, periods, period_residual, report)| Locus {
         start,

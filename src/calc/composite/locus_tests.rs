@@ -90,16 +90,44 @@ fn harnoys_composite_loci_match_the_specs_derived_table() {
         let start = p.equilibrium(false).unwrap();
         let e0 = start.position[0].hypot(start.position[1]);
         assert!((e0 - want[2]).abs() < 5e-4, "{steady}: ε_static {e0}");
-        assert!((start.speed_ratio - want[3]).abs() < 5e-4, "{steady}: ξ_static {}", start.speed_ratio);
+        assert!(
+            (start.speed_ratio - want[3]).abs() < 5e-4,
+            "{steady}: ξ_static {}",
+            start.speed_ratio
+        );
         let composite = steady_locus(&p, start).window;
         let held = regular(&p).window;
         let case = format!("F̄ {steady}(1 + sin {alpha}τ), m̄ {mass}, H₂ {h2}");
-        assert!(within(held.max_eccentricity, want[0], 5e-3), "{case}: regular ε_max {}", held.max_eccentricity);
-        assert!(within(held.min_eccentricity, want[1], 5e-3), "{case}: regular ε_min {}", held.min_eccentricity);
-        assert!(within(composite.max_eccentricity, want[4], 5e-3), "{case}: ε_max {}", composite.max_eccentricity);
-        assert!(within(composite.min_eccentricity, want[5], 5e-3), "{case}: ε_min {}", composite.min_eccentricity);
-        assert!((composite.min_speed_ratio - want[6]).abs() < 5e-3, "{case}: ξ_min {}", composite.min_speed_ratio);
-        assert!((composite.max_speed_ratio - want[7]).abs() < 5e-3, "{case}: ξ_max {}", composite.max_speed_ratio);
+        assert!(
+            within(held.max_eccentricity, want[0], 5e-3),
+            "{case}: regular ε_max {}",
+            held.max_eccentricity
+        );
+        assert!(
+            within(held.min_eccentricity, want[1], 5e-3),
+            "{case}: regular ε_min {}",
+            held.min_eccentricity
+        );
+        assert!(
+            within(composite.max_eccentricity, want[4], 5e-3),
+            "{case}: ε_max {}",
+            composite.max_eccentricity
+        );
+        assert!(
+            within(composite.min_eccentricity, want[5], 5e-3),
+            "{case}: ε_min {}",
+            composite.min_eccentricity
+        );
+        assert!(
+            (composite.min_speed_ratio - want[6]).abs() < 5e-3,
+            "{case}: ξ_min {}",
+            composite.min_speed_ratio
+        );
+        assert!(
+            (composite.max_speed_ratio - want[7]).abs() < 5e-3,
+            "{case}: ξ_max {}",
+            composite.max_speed_ratio
+        );
         assert!(composite.max_eccentricity < held.max_eccentricity, "{case}");
         eprintln!(
             "{case}: regular {:.5}/{:.5}, composite {:.5}/{:.5}, ξ {:.4}–{:.4}, h ratio {:.3}",
@@ -144,7 +172,10 @@ fn the_dimensionless_sleeve_law_is_the_speed_split_rooms_torque_balance() {
                 let torque =
                     FILM.torque(eps, wj, wb) - restraint.pin_torque(wb) - restraint.rolling_torque;
                 let ours = groups.acceleration(eps, xi) * inertia * wj * wj;
-                assert!((ours / torque - 1.0).abs() < 1e-12, "ε {eps} ξ {xi}: {ours} {torque}");
+                assert!(
+                    (ours / torque - 1.0).abs() < 1e-12,
+                    "ε {eps} ξ {xi}: {ours} {torque}"
+                );
             }
             let split = restraint.steady_speed_ratio(FILM.petroff_coefficient(eps), wj);
             assert!((groups.steady_speed_ratio(eps) - split).abs() < 1e-14);
@@ -160,7 +191,8 @@ fn a_constant_load_settles_at_the_speed_splits_steady_state_from_the_centre() {
     // locus settles on it, with mass or by mobility, with or without rolling friction.
     let wj = 3000.0 * PI / 30.0;
     let (load, inertia) = (5000.0, 0.002);
-    let force_scale = FILM.viscosity * FILM.radius * wj * FILM.length.powi(3) / FILM.clearance.powi(2);
+    let force_scale =
+        FILM.viscosity * FILM.radius * wj * FILM.length.powi(3) / FILM.clearance.powi(2);
     for rolling_torque in [0.0, 0.5] {
         let restraint = Restraint {
             coefficient: 0.01,
@@ -186,9 +218,22 @@ fn a_constant_load_settles_at_the_speed_splits_steady_state_from_the_centre() {
             let locus = steady_locus(&p, centre);
             let w = &locus.window;
             let case = format!("M_r {rolling_torque}, m {mass_kg}");
-            assert!((w.max_eccentricity - want.eccentricity).abs() < 1e-6, "{case}: {} {}", w.max_eccentricity, want.eccentricity);
-            assert!((w.min_eccentricity - want.eccentricity).abs() < 1e-6, "{case}");
-            assert!((w.mean_speed_ratio - want.speed_ratio).abs() < 1e-6, "{case}: {} {}", w.mean_speed_ratio, want.speed_ratio);
+            assert!(
+                (w.max_eccentricity - want.eccentricity).abs() < 1e-6,
+                "{case}: {} {}",
+                w.max_eccentricity,
+                want.eccentricity
+            );
+            assert!(
+                (w.min_eccentricity - want.eccentricity).abs() < 1e-6,
+                "{case}"
+            );
+            assert!(
+                (w.mean_speed_ratio - want.speed_ratio).abs() < 1e-6,
+                "{case}: {} {}",
+                w.mean_speed_ratio,
+                want.speed_ratio
+            );
             // The joint static start is the same state.
             let start = p.equilibrium(false).unwrap();
             assert!((start.position[0].hypot(start.position[1]) - want.eccentricity).abs() < 1e-10);
@@ -209,9 +254,18 @@ fn an_undriven_sleeve_is_the_journal_rooms_orbit() {
         let start = p.equilibrium(true).unwrap();
         let composite = steady_locus(&p, start).window;
         let held = regular(&p).window;
-        assert!((composite.max_eccentricity - held.max_eccentricity).abs() < 1e-6, "{arc:?}");
-        assert!((composite.min_eccentricity - held.min_eccentricity).abs() < 1e-6, "{arc:?}");
-        assert_eq!((composite.min_speed_ratio, composite.max_speed_ratio), (0.0, 0.0));
+        assert!(
+            (composite.max_eccentricity - held.max_eccentricity).abs() < 1e-6,
+            "{arc:?}"
+        );
+        assert!(
+            (composite.min_eccentricity - held.min_eccentricity).abs() < 1e-6,
+            "{arc:?}"
+        );
+        assert_eq!(
+            (composite.min_speed_ratio, composite.max_speed_ratio),
+            (0.0, 0.0)
+        );
     }
 }
 
@@ -225,7 +279,70 @@ fn a_light_composite_journal_follows_the_mobility_solution() {
     };
     let a = steady_locus(&massless, massless.equilibrium(false).unwrap()).window;
     let b = steady_locus(&light, light.equilibrium(false).unwrap()).window;
-    assert!((a.max_eccentricity - b.max_eccentricity).abs() < 1e-3, "{} {}", a.max_eccentricity, b.max_eccentricity);
+    assert!(
+        (a.max_eccentricity - b.max_eccentricity).abs() < 1e-3,
+        "{} {}",
+        a.max_eccentricity,
+        b.max_eccentricity
+    );
     assert!((a.min_eccentricity - b.min_eccentricity).abs() < 1e-3);
     assert!((a.max_speed_ratio - b.max_speed_ratio).abs() < 1e-3);
+}
+
+#[test]
+fn rotating_loads_give_the_closed_form_circles_with_the_sleeve_in_the_speed_sum() {
+    // Massless journal, π-film, a load of F̄ turning at s·ω_j: in the load's frame the film is
+    // the steady bearing at the effective speed 1 + ξ − 2s (spec B.1.2), and on a circle ε and
+    // hence ξ are constant, ξ the steady split's, so |1 + ξ(ε) − 2s| W̄_Ocvirk(ε) = F̄. At
+    // s = ½ a plain bearing has no effective speed left (half-frequency whirl); the turning
+    // sleeve keeps ξ of it.
+    for s in [1.0, 0.5, 0.25] {
+        let f = 3.0;
+        let p = Problem {
+            arc: ShortArc::PiFilm,
+            mass: 0.0,
+            load: LoadLaw::Rotating {
+                magnitude: f,
+                speed_ratio: s,
+                start: -0.5 * PI,
+            },
+            force_scale: 1.0,
+            sleeve: SleeveGroups {
+                drive: 0.1,
+                restraint: 1.0,
+                rolling: 0.0,
+            },
+        };
+        let want = crate::numerics::roots::brent(
+            |e| {
+                (1.0 + p.sleeve.steady_speed_ratio(e) - 2.0 * s).abs()
+                    * SleeveFilm::load_coefficient(e)
+                    - f
+            },
+            1e-9,
+            1.0 - 1e-9,
+            crate::numerics::roots::Stopping {
+                x_tolerance: 1e-14,
+                max_iterations: 200,
+            },
+        )
+        .unwrap()
+        .x;
+        let centre = Equilibrium {
+            position: [0.0, 0.0],
+            speed_ratio: 0.0,
+        };
+        let w = steady_locus(&p, centre).window;
+        assert!(
+            (w.max_eccentricity - want).abs() < 1e-6,
+            "s = {s}: {} vs {want}",
+            w.max_eccentricity
+        );
+        assert!(
+            (w.min_eccentricity - want).abs() < 1e-6,
+            "s = {s}: a circle"
+        );
+        let xi = p.sleeve.steady_speed_ratio(want);
+        assert!((w.min_speed_ratio - xi).abs() < 1e-6 && (w.max_speed_ratio - xi).abs() < 1e-6);
+    }
 }

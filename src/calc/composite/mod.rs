@@ -10,6 +10,7 @@
 
 pub mod film;
 pub mod locus;
+pub mod orbit;
 pub mod sleeve;
 pub mod speed_split;
 pub mod split;
