@@ -11,7 +11,7 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::film::{LoadError, SleeveFilm, MAX_ECCENTRICITY};
+use super::film::{LoadError, SleeveFilm};
 use super::locus::{self, Equilibrium, Locus, LocusError, Problem, Settling, SleeveGroups};
 use super::speed_split::{
     parse_bearing, parse_thermal, peclet_number, rpm, Bearing, BearingFields, LOW_SLEEVE_RPM,
@@ -265,11 +265,13 @@ pub struct CompositeOrbitPoint {
 /// The same bearing with its sleeve held (ξ = 0): a plain short journal bearing.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct CompositeOrbitRegular {
-    /// Largest ε over the last load period (with `film_collapse_time_s`: over the run until
-    /// the film fell to C/1000), dimensionless.
+    /// Largest ε over the last load period (with `contact_time_s`: where the journal reached
+    /// the wall), dimensionless.
     pub max_eccentricity_ratio: f64,
-    /// Smallest ε over the same window, dimensionless.
-    pub min_eccentricity_ratio: f64,
+    /// Smallest ε over the last load period, dimensionless; absent when the journal reaches
+    /// the wall (no orbit).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_eccentricity_ratio: Option<f64>,
     /// h_min = C(1 − ε_max), m.
     pub min_film_m: f64,
     /// Journal rotation since the start of the load period (the crank angle for engine loads)
@@ -283,13 +285,13 @@ pub struct CompositeOrbitRegular {
     pub steady_orbit: bool,
     /// Load periods integrated.
     pub periods_to_settle: u32,
-    /// When the held-sleeve journal's film fell to a thousandth of the clearance (ε = 0.999) on
-    /// its way to the wall, s; absent when it carries the load cycle.
+    /// When the held-sleeve journal reached the wall, s; absent when it carries the load
+    /// cycle.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub film_collapse_time_s: Option<f64>,
+    pub contact_time_s: Option<f64>,
     /// What happened, in words.
     pub verdict: String,
-    /// The locus's samples, with `include_orbit`.
+    /// The locus's samples, with `include_orbit` (none when the journal reaches the wall).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub orbit: Option<Vec<CompositeOrbitPoint>>,
 }
@@ -341,7 +343,7 @@ pub struct CompositeOrbitOutput {
     /// The composite bearing.
     pub composite: CompositeOrbitSleeve,
     /// The composite's h_min over the regular's, dimensionless (> 1: the composite's film is
-    /// thicker); absent when the regular bearing's film collapses.
+    /// thicker); absent when the regular bearing's journal reaches the wall.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub min_film_ratio: Option<f64>,
     /// Modified Péclet number ω_b R_b b/α_b of the sleeve at its slowest over the cycle
@@ -368,16 +370,11 @@ pub struct CompositeOrbitOutput {
     pub viscosity_pa_s: f64,
 }
 
-/// The regular bearing's run: a steady (or capped) orbit, or the run until its film collapsed.
-enum Regular {
-    Orbit {
-        start: [f64; 2],
-        orbit: Orbit,
-    },
-    Collapse {
-        start: Option<[f64; 2]>,
-        orbit: Orbit,
-    },
+/// The regular bearing's run: from its static equilibrium (`None`: it has none; from the
+/// centre) to a steady or capped orbit, or to the wall at (τ, ε).
+struct Regular {
+    start: Option<[f64; 2]>,
+    outcome: Result<Orbit, (f64, f64)>,
 }
 
 fn degrees_within(a: f64, period: f64) -> f64 {
@@ -395,9 +392,8 @@ struct Run<'a> {
 }
 
 impl Run<'_> {
-    /// The held sleeve's orbit by the journal room's code, from its static equilibrium; where
-    /// it touches the wall (or has no equilibrium), the run again, from there (or the centre),
-    /// until its film falls to C/1000.
+    /// The held sleeve's orbit by the journal room's code, from its static equilibrium (or the
+    /// centre, where it has none).
     fn regular(&self, problem: &Problem) -> Result<Regular, CalcError> {
         let held = orbit::Problem {
             film: ShortFilm {
@@ -408,41 +404,81 @@ impl Run<'_> {
             load: problem.load.clone(),
             force_scale: problem.force_scale,
         };
-        let at = |position: [f64; 2]| Start {
-            position,
+        let start = problem.equilibrium(true).ok().map(|e| e.position);
+        let until = Until::SteadyOrbit {
+            tolerance: self.settling.tolerance,
+            max_periods: self.settling.max_periods,
+        };
+        let from = Start {
+            position: start.unwrap_or([0.0, 0.0]),
             velocity: [0.0, 0.0],
         };
-        let start = problem.equilibrium(true).ok().map(|e| e.position);
-        if let Some(s) = start {
-            let until = Until::SteadyOrbit {
-                tolerance: self.settling.tolerance,
-                max_periods: self.settling.max_periods,
-            };
-            match orbit::run(
-                &held,
-                at(s),
-                until,
-                self.tolerance,
-                self.samples,
-                self.budget,
-            ) {
-                Ok(orbit) => return Ok(Regular::Orbit { start: s, orbit }),
-                Err(OrbitError::Stopped(report)) => return Err(stopped(report)),
-                Err(OrbitError::Contact { .. }) => {}
-            }
-        }
-        let until = Until::Eccentricity {
-            target: MAX_ECCENTRICITY,
-            horizon: MAX_REVOLUTIONS * 2.0 * PI,
+        let outcome = match orbit::run(
+            &held,
+            from,
+            until,
+            self.tolerance,
+            self.samples,
+            self.budget,
+        ) {
+            Ok(orbit) => Ok(orbit),
+            Err(OrbitError::Contact { time, eccentricity }) => Err((time, eccentricity)),
+            Err(OrbitError::Stopped(report)) => return Err(stopped(report)),
         };
-        let from = at(start.unwrap_or([0.0, 0.0]));
-        match orbit::run(&held, from, until, self.tolerance, self.samples, self.budget) {
-            Ok(orbit) if orbit.time_to_target.is_some() => Ok(Regular::Collapse { start, orbit }),
-            Ok(_) | Err(OrbitError::Contact { .. }) => Err(CalcError::impossible(
-                "/load",
-                "the held-sleeve comparison touched the wall without its film passing C/1000 (a stalled integration near contact): lower the load or raise the speed",
-            )),
-            Err(OrbitError::Stopped(report)) => Err(stopped(report)),
+        Ok(Regular { start, outcome })
+    }
+
+    /// The regular block: its steady (or capped) orbit, or its run to the wall.
+    fn regular_block(
+        &self,
+        regular: &Regular,
+        c: f64,
+        period: f64,
+        include_orbit: bool,
+    ) -> CompositeOrbitRegular {
+        let static_eccentricity_ratio = regular.start.map(|p| p[0].hypot(p[1]));
+        match &regular.outcome {
+            Ok(orbit) => {
+                let w = &orbit.window;
+                CompositeOrbitRegular {
+                    max_eccentricity_ratio: w.max_eccentricity,
+                    min_eccentricity_ratio: Some(w.min_eccentricity),
+                    min_film_m: c * (1.0 - w.max_eccentricity),
+                    load_cycle_angle_at_min_film_deg: degrees_within(w.time_of_max, period),
+                    static_eccentricity_ratio,
+                    steady_orbit: orbit.steady,
+                    periods_to_settle: orbit.periods,
+                    contact_time_s: None,
+                    verdict: steady_verdict(
+                        orbit.steady,
+                        orbit.periods,
+                        orbit.period_residual.unwrap_or(0.0),
+                    ),
+                    orbit: include_orbit.then(|| {
+                        self.points(
+                            w.samples.iter().map(|&(t, x, y)| (t, [x, y], 0.0)),
+                            period,
+                            c,
+                        )
+                    }),
+                }
+            }
+            Err((time, eccentricity)) => CompositeOrbitRegular {
+                max_eccentricity_ratio: *eccentricity,
+                min_eccentricity_ratio: None,
+                min_film_m: c * (1.0 - eccentricity),
+                load_cycle_angle_at_min_film_deg: degrees_within(*time, period),
+                static_eccentricity_ratio,
+                steady_orbit: false,
+                periods_to_settle: (time / period).ceil().max(1.0) as u32,
+                contact_time_s: Some(time / self.omega),
+                verdict: format!(
+                    "with the sleeve held the journal cannot carry this load cycle: it reaches the wall at t = {:.6e} s (ε = {eccentricity:.6}){}",
+                    time / self.omega,
+                    if regular.start.is_none() { ", from the centre: the held film has no static equilibrium under the load at time 0" } else { "" }
+                ),
+                orbit: None,
+            },
         }
     }
 
@@ -577,29 +613,17 @@ impl Calculation for CompositeOrbit {
                 LocusError::Stopped(report) => stopped(report),
             })?;
         let regular = run.regular(&problem)?;
-        let (regular_orbit, regular_start, collapse) = match &regular {
-            Regular::Orbit { start, orbit } => (orbit, Some(*start), None),
-            Regular::Collapse { start, orbit } => (orbit, *start, orbit.time_to_target),
-        };
-        let mut report = combined(composite.report.clone(), &regular_orbit.report).at(case.level);
+        let mut report = composite.report.clone();
+        if let Ok(orbit) = &regular.outcome {
+            report = combined(report, &orbit.report);
+        }
+        let mut report = report.at(case.level);
         report.elapsed_ms = started.elapsed().as_secs_f64() * 1e3;
         ctx.report(report);
+        let regular = run.regular_block(&regular, c, period, case.include_orbit);
 
         let cw = &composite.window;
-        let rw = &regular_orbit.window;
         let composite_film = c * (1.0 - cw.max_eccentricity);
-        let regular_film = c * (1.0 - rw.max_eccentricity);
-        let regular_verdict = match collapse {
-            None => steady_verdict(
-                regular_orbit.steady,
-                regular_orbit.periods,
-                regular_orbit.period_residual.unwrap_or(0.0),
-            ),
-            Some(t) => format!(
-                "with the sleeve held the journal cannot carry this load cycle: its film falls to C/1000 at t = {:.6e} s on its way to the wall (the values describe the run until then)",
-                t / w
-            ),
-        };
         let composite_verdict = steady_verdict(
             composite.steady,
             composite.periods,
@@ -617,8 +641,8 @@ impl Calculation for CompositeOrbit {
         if !composite.steady {
             ctx.warn("no_steady_orbit", composite_verdict.clone());
         }
-        if collapse.is_some() {
-            ctx.warn("regular_bearing_film_collapses", regular_verdict.clone());
+        if regular.contact_time_s.is_some() {
+            ctx.warn("regular_bearing_touches", regular.verdict.clone());
         }
         if cw.min_speed_ratio < 0.0 {
             ctx.warn(
@@ -645,26 +669,12 @@ impl Calculation for CompositeOrbit {
                 c,
             )
         });
-        let regular_points = case.include_orbit.then(|| {
-            run.points(
-                rw.samples.iter().map(|&(t, x, y)| (t, [x, y], 0.0)),
-                period,
-                c,
-            )
-        });
         let output = CompositeOrbitOutput {
-            regular: CompositeOrbitRegular {
-                max_eccentricity_ratio: rw.max_eccentricity,
-                min_eccentricity_ratio: rw.min_eccentricity,
-                min_film_m: regular_film,
-                load_cycle_angle_at_min_film_deg: degrees_within(rw.time_of_max, period),
-                static_eccentricity_ratio: regular_start.map(|p| p[0].hypot(p[1])),
-                steady_orbit: regular_orbit.steady,
-                periods_to_settle: regular_orbit.periods,
-                film_collapse_time_s: collapse.map(|t| t / w),
-                verdict: regular_verdict,
-                orbit: regular_points,
-            },
+            min_film_ratio: regular
+                .contact_time_s
+                .is_none()
+                .then(|| composite_film / regular.min_film_m),
+            regular,
             composite: CompositeOrbitSleeve {
                 max_eccentricity_ratio: cw.max_eccentricity,
                 min_eccentricity_ratio: cw.min_eccentricity,
@@ -682,7 +692,6 @@ impl Calculation for CompositeOrbit {
                 verdict: composite_verdict,
                 orbit: composite_points,
             },
-            min_film_ratio: collapse.is_none().then(|| composite_film / regular_film),
             sleeve_peclet_number: case
                 .thermal
                 .map(|thermal| peclet_number(&film, thermal, slowest * w)),
