@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, spawn_app};
+use crate::helpers::{assert_all_finite, spawn_app, TestApp};
 
 const SPLIT: &str = "/v1/composite-bearings/speed-split";
 const START: &str = "/v1/composite-bearings/start-up";
@@ -41,6 +41,22 @@ fn split(extra: Value) -> Value {
     body
 }
 
+/// Each body answered 422 with an error at its pointer whose message says why.
+async fn refused<const N: usize>(app: &TestApp, path: &str, rows: [(Value, &str, &str); N]) {
+    for (body, pointer, why) in rows {
+        let reply = app.post_json(path, &body).await;
+        let problem = reply.problem(422);
+        let errors = problem["errors"].as_array().unwrap();
+        assert!(
+            errors
+                .iter()
+                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
+            "{body}: want {pointer} ({why}), got {}",
+            reply.text
+        );
+    }
+}
+
 #[tokio::test]
 async fn the_composite_orbit_refuses_what_it_cannot_integrate_and_names_the_field() {
     let app = spawn_app().await;
@@ -71,18 +87,7 @@ async fn the_composite_orbit_refuses_what_it_cannot_integrate_and_names_the_fiel
             "massless",
         ),
     ];
-    for (body, pointer, why) in rows {
-        let reply = app.post_json(ORBIT, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
+    refused(&app, ORBIT, rows).await;
     // 1 GN at 1e-6 rpm on a 2 mm sleeve: no film short of h_min = 1e-9 C carries it at time 0.
     let mut body = orbit("journal_speed_rpm", json!(1e-6));
     body["sleeve_length_m"] = json!(0.002);
@@ -184,18 +189,7 @@ async fn bad_composite_input_is_a_422_with_its_reason() {
             "unknown field",
         ),
     ];
-    for (body, pointer, why) in rows {
-        let reply = app.post_json(SPLIT, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
+    refused(&app, SPLIT, rows).await;
     // A load the film cannot carry below ε = 0.999 names the load and says how much it can.
     let reply = app
         .post_json(

@@ -36,9 +36,10 @@ use super::film::{LoadError, SleeveFilm, COMPARISON_MAX_ECCENTRICITY};
 use super::sleeve::Restraint;
 use crate::calc::journal::load_law::LoadLaw;
 use crate::calc::journal::moving_film::{squeeze_vector, ShortArc, ShortFilm};
+use crate::calc::journal::orbit;
 use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
 use crate::numerics::driver::Budget;
-use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Settings, Step};
+use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Step};
 
 /// Half-width of the band of ξ over which the rolling bearing's Coulomb torque is regularised.
 const STICK: f64 = 1e-6;
@@ -254,17 +255,6 @@ pub enum LocusError {
     Stopped(SolverReport),
 }
 
-/// The integrator's settings for a relative tolerance: as the journal's orbit (r̄ and ξ are of
-/// order one; steps at most a fiftieth of a revolution).
-fn settings(relative: f64) -> Settings {
-    Settings {
-        relative,
-        absolute: relative,
-        max_step: 2.0 * PI / 50.0,
-        max_steps: 2_000_000,
-    }
-}
-
 /// The composite locus from `start` (at rest; [`Problem::equilibrium`] for the text's start) to
 /// a steady orbit (or `max_periods`), at relative tolerance `relative`, with `samples` samples
 /// of the last period (0: none).
@@ -380,7 +370,8 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     samples: usize,
     budget: &Budget,
 ) -> Result<Marched, LocusError> {
-    let settings = settings(relative);
+    // The journal's orbit's settings: r̄ and ξ are both of order one.
+    let settings = orbit::settings(relative);
     let period = problem.load.period();
     let (mut t, mut y) = (0.0, y0);
     let (mut steps, mut rejected, mut evaluations) = (0, 0, 0);

@@ -129,16 +129,6 @@ fn harnoys_composite_loci_match_the_specs_derived_table() {
             composite.max_speed_ratio
         );
         assert!(composite.max_eccentricity < held.max_eccentricity, "{case}");
-        eprintln!(
-            "{case}: regular {:.5}/{:.5}, composite {:.5}/{:.5}, ξ {:.4}–{:.4}, h ratio {:.3}",
-            held.max_eccentricity,
-            held.min_eccentricity,
-            composite.max_eccentricity,
-            composite.min_eccentricity,
-            composite.min_speed_ratio,
-            composite.max_speed_ratio,
-            (1.0 - composite.max_eccentricity) / (1.0 - held.max_eccentricity)
-        );
         if h2 == 100.0 {
             let ratio = (1.0 - composite.max_eccentricity) / (1.0 - held.max_eccentricity);
             assert!(within(ratio, 2.16, 0.03), "h_min ratio {ratio}");
