@@ -37,7 +37,7 @@ use super::sleeve::Restraint;
 use crate::calc::journal::load_law::LoadLaw;
 use crate::calc::journal::moving_film::{squeeze_vector, ShortArc, ShortFilm};
 use crate::calc::journal::orbit;
-use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
+use crate::fidelity::{SolverReport, StopReason, TimeIntegration};
 use crate::numerics::driver::Budget;
 use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Step};
 
@@ -413,22 +413,16 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
         if steady || periods >= settling.max_periods {
             let mut window = tracker.finish();
             window.samples = sample(&kept, &window, samples);
+            // The last integration's report, with the whole run's work.
             let report = SolverReport {
-                method: "sdirk4_l_stable".to_owned(),
-                fidelity: crate::fidelity::Level::Standard,
-                grid: None,
                 iterations: steps,
-                iterations_unit: IterationUnit::TimeSteps,
                 evaluations: Some(evaluations),
-                stop_reason: StopReason::Converged,
                 residual: Some(change),
-                error_estimate: None,
-                film_solves: None,
                 time_integration: Some(Box::new(TimeIntegration {
                     rejected_steps: rejected,
                     relative_tolerance: relative,
                 })),
-                elapsed_ms: 0.0,
+                ..done.report
             };
             return Ok((window, steady, periods, change, report));
         }
