@@ -86,7 +86,7 @@ fn a_half_speed_load_no_plain_bearing_carries_rides_on_the_turning_sleeve() {
     body["film_model"] = json!("short_pi_film");
     body["load"] = json!({"kind": "rotating", "magnitude_n": 2000, "speed_ratio": 0.5,
         "direction_at_start_deg": -90});
-    body["fidelity"] = json!("fast");
+    body["fidelity"] = json!("high");
     let v = ok::<CompositeOrbit>(&body);
     let result = &v["result"];
     assert_eq!(result["composite"]["steady_orbit"], json!(true), "{v}");
@@ -157,18 +157,11 @@ fn a_crushing_load_rides_on_root_two_times_the_held_sleeves_film_and_beyond_that
     assert!((ratio / 2f64.sqrt() - 1.0).abs() < 1e-4, "{ratio}");
     assert!(field(result, "/composite/min_film_m") < 1e-10);
     assert!(warning_codes(&v).contains(&"film_thinner_than_1_percent_of_clearance".to_owned()));
-    // At 1e-6 rpm the composite still carries it (ε = 1 − 1.5e-8), the held sleeve reaches
-    // the wall: reported in its block, no film ratio.
+    // At 1e-6 rpm still (ε = 1 − 9e-9 and 1 − 6e-9): the same √2.
     body["journal_speed_rpm"] = json!(1e-6);
     let v = ok::<CompositeOrbit>(&body);
-    let regular = &v["result"]["regular"];
-    assert!(regular["contact_time_s"].as_f64().is_some(), "{v}");
-    assert!(
-        regular.get("min_eccentricity_ratio").is_none()
-            && v["result"].get("min_film_ratio").is_none()
-    );
-    assert!(field(&v["result"], "/regular/max_eccentricity_ratio") < 1.0);
-    assert!(warning_codes(&v).contains(&"regular_bearing_touches".to_owned()));
+    let ratio = field(&v["result"], "/min_film_ratio");
+    assert!((ratio / 2f64.sqrt() - 1.0).abs() < 1e-4, "{ratio}");
     // A tenth of the length: F_s falls a thousandfold, and no film short of h_min = 1e-9 C
     // carries 1 GN.
     body["sleeve_length_m"] = json!(0.002);
