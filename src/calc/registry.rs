@@ -51,6 +51,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<hydrostatic::design::HydrostaticDesign>(),
     Entry::of::<composite::speed_split::SpeedSplit>(),
     Entry::of::<composite::start_up::StartUpRoom>().numerical(),
+    Entry::of::<composite::orbit::CompositeOrbit>().numerical(),
 ];
 
 /// The calculation registered at `path`.
@@ -536,7 +537,8 @@ mod tests {
                 | "/v1/thrust-bearings/bearing"
                 | "/v1/gas-bearings/journal"
                 | "/v1/gas-bearings/slider"
-                | "/v1/composite-bearings/start-up" => Cost::Heavy,
+                | "/v1/composite-bearings/start-up"
+                | "/v1/composite-bearings/orbit" => Cost::Heavy,
                 _ => Cost::Light,
             };
             assert_eq!(e.cost(e.example.as_bytes()), want, "{}", e.path);

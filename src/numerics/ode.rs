@@ -22,6 +22,7 @@
 use nalgebra::{DMatrix, DVector, Dyn, SMatrix, SVector, LU};
 
 use super::driver::{Budget, Driver, Stopped, Verdict};
+use super::optimise::brent_minimise;
 use crate::fidelity::{IterationUnit, SolverReport, TimeIntegration};
 
 /// γ, the stages' common diagonal.
@@ -113,6 +114,47 @@ impl<const N: usize> Step<N> {
         let h11 = s3 - s2;
         self.y0 * h00 + self.f0 * (h * h10) + self.y1 * h01 + self.f1 * (h * h11)
     }
+
+    /// The largest and smallest value of a scalar g(y) over the step, on the dense output: the
+    /// ends, or an interior extremum found by Brent's minimisation where the midpoint lies
+    /// beyond both ends (steps are short against the motion, so one of each kind at most).
+    pub fn extremes(&self, g: impl Fn(&SVector<f64, N>) -> f64) -> Extremes {
+        let at = |t: f64| g(&self.at(t));
+        let (t0, t1) = (self.t0, self.t1);
+        let mid = 0.5 * (t0 + t1);
+        let (g0, gm, g1) = (at(t0), at(mid), at(t1));
+        let tolerance = 1e-10 * (t1 - t0).max(1e-300);
+        let (time_of_max, max) = if gm > g0.max(g1) {
+            let (t, m) = brent_minimise(|t| -at(t), t0, t1, tolerance);
+            (t, -m)
+        } else if g1 >= g0 {
+            (t1, g1)
+        } else {
+            (t0, g0)
+        };
+        let (time_of_min, min) = if gm < g0.min(g1) {
+            brent_minimise(at, t0, t1, tolerance)
+        } else if g1 <= g0 {
+            (t1, g1)
+        } else {
+            (t0, g0)
+        };
+        Extremes {
+            max,
+            time_of_max,
+            min,
+            time_of_min,
+        }
+    }
+}
+
+/// A scalar's extremes over one step, with their times.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Extremes {
+    pub max: f64,
+    pub time_of_max: f64,
+    pub min: f64,
+    pub time_of_min: f64,
 }
 
 /// What the observer wants after a step.
@@ -714,5 +756,35 @@ mod tests {
         )
         .unwrap_err();
         assert_eq!(failure, Failure::Rate("film"));
+    }
+
+    #[test]
+    fn a_steps_extremes_are_found_inside_it_on_the_dense_output() {
+        // y = (sin t, cos t) over [1.4, 1.8]: sin peaks at π/2 inside the step, cos falls
+        // throughout (its extremes at the ends); the Hermite cubic is O(h⁴) accurate.
+        let (t0, t1) = (1.4f64, 1.8f64);
+        let step = Step {
+            t0,
+            t1,
+            y0: Vector2::new(t0.sin(), t0.cos()),
+            y1: Vector2::new(t1.sin(), t1.cos()),
+            f0: Vector2::new(t0.cos(), -t0.sin()),
+            f1: Vector2::new(t1.cos(), -t1.sin()),
+        };
+        let sine = step.extremes(|y| y[0]);
+        assert!(
+            (sine.max - 1.0).abs() < 1e-3
+                && (sine.time_of_max - std::f64::consts::FRAC_PI_2).abs() < 1e-2
+        );
+        assert_eq!((sine.min, sine.time_of_min), (t1.sin(), t1));
+        let cosine = step.extremes(|y| y[1]);
+        assert_eq!((cosine.max, cosine.time_of_max), (t0.cos(), t0));
+        assert_eq!((cosine.min, cosine.time_of_min), (t1.cos(), t1));
+        // A trough inside the step: −sin.
+        let trough = step.extremes(|y| -y[0]);
+        assert!(
+            (trough.min + 1.0).abs() < 1e-3
+                && (trough.time_of_min - std::f64::consts::FRAC_PI_2).abs() < 1e-2
+        );
     }
 }

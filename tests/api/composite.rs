@@ -1,5 +1,5 @@
 //! Composite bearings over HTTP: the 422s with their reasons (a missing or over-determined
-//! restraint, ε ≥ 0.999, a load the film cannot carry), and the speed split over its range
+//! restraint, ε ≥ 0.999, a load the film cannot carry; the orbit's), and the speed split over its range
 //! (finite; the sleeve speed rising with the journal's, the speed ratio falling with the
 //! restraint, the composite's film never thinner than the held sleeve's, the powers adding up).
 
@@ -7,10 +7,11 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, spawn_app};
+use crate::helpers::{assert_all_finite, spawn_app, TestApp};
 
 const SPLIT: &str = "/v1/composite-bearings/speed-split";
 const START: &str = "/v1/composite-bearings/start-up";
+const ORBIT: &str = "/v1/composite-bearings/orbit";
 
 fn start(extra: Value) -> Value {
     let mut body: Value = serde_json::from_str(find(START).unwrap().example).unwrap();
@@ -38,6 +39,68 @@ fn split(extra: Value) -> Value {
         }
     }
     body
+}
+
+/// Each body answered 422 with an error at its pointer whose message says why.
+async fn refused<const N: usize>(app: &TestApp, path: &str, rows: [(Value, &str, &str); N]) {
+    for (body, pointer, why) in rows {
+        let reply = app.post_json(path, &body).await;
+        let problem = reply.problem(422);
+        let errors = problem["errors"].as_array().unwrap();
+        assert!(
+            errors
+                .iter()
+                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
+            "{body}: want {pointer} ({why}), got {}",
+            reply.text
+        );
+    }
+}
+
+#[tokio::test]
+async fn the_composite_orbit_refuses_what_it_cannot_integrate_and_names_the_field() {
+    let app = spawn_app().await;
+    let orbit = |name: &str, value: Value| {
+        let mut body: Value = serde_json::from_str(find(ORBIT).unwrap().example).unwrap();
+        body[name] = value;
+        body
+    };
+    let rows = [
+        (
+            orbit("sleeve_inertia_kg_m2", json!(1e-12)),
+            "/sleeve_inertia_kg_m2",
+            "within",
+        ),
+        (
+            orbit("film_model", json!("short_full")),
+            "/film_model",
+            "unknown variant",
+        ),
+        (
+            orbit("fidelity", json!("closed_form")),
+            "/fidelity",
+            "integrated in time",
+        ),
+        (
+            orbit("journal_mass_kg", json!(5e-324)),
+            "/journal_mass_kg",
+            "massless",
+        ),
+    ];
+    refused(&app, ORBIT, rows).await;
+    // 1 GN at 1e-6 rpm on a 2 mm sleeve: no film short of h_min = 1e-9 C carries it at time 0.
+    let mut body = orbit("journal_speed_rpm", json!(1e-6));
+    body["sleeve_length_m"] = json!(0.002);
+    body["load"] = json!({"kind": "constant", "magnitude_n": 1e9, "direction_deg": -90});
+    let reply = app.post_json(ORBIT, &body).await;
+    assert!(
+        reply.problem(422)["detail"]
+            .as_str()
+            .unwrap()
+            .contains("no static equilibrium"),
+        "{}",
+        reply.text
+    );
 }
 
 #[tokio::test]
@@ -126,18 +189,7 @@ async fn bad_composite_input_is_a_422_with_its_reason() {
             "unknown field",
         ),
     ];
-    for (body, pointer, why) in rows {
-        let reply = app.post_json(SPLIT, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
+    refused(&app, SPLIT, rows).await;
     // A load the film cannot carry below ε = 0.999 names the load and says how much it can.
     let reply = app
         .post_json(

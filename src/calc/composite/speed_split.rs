@@ -28,7 +28,7 @@ const MIN_CLEARANCE_M: f64 = 1e-7;
 const MAX_CLEARANCE_OVER_RADIUS: f64 = 0.1;
 /// Largest L/D: the short-bearing film overstates the load increasingly beyond 1/2.
 const MAX_L_OVER_D: f64 = 2.0;
-const SHORT_L_OVER_D: f64 = 0.5;
+pub(super) const SHORT_L_OVER_D: f64 = 0.5;
 /// Largest journal speed, rpm.
 pub(super) const MAX_SPEED_RPM: f64 = 1e6;
 /// Largest load, N.
@@ -43,7 +43,7 @@ const MAX_ROLLING_TORQUE_N_M: f64 = 1e6;
 const MAX_WALL_M: f64 = 1.0;
 const MAX_DIFFUSIVITY_M2_S: f64 = 1e-2;
 /// Below this sleeve speed the rolling bearing's EHL film is poor (Harnoy §18.6, Fig 18-4).
-const LOW_SLEEVE_RPM: f64 = 30.0;
+pub(super) const LOW_SLEEVE_RPM: f64 = 30.0;
 
 pub(super) fn rad_s(rpm: f64) -> f64 {
     rpm * PI / 30.0
@@ -279,6 +279,58 @@ pub(super) fn parse_bearing(f: BearingFields, errors: &mut Vec<FieldError>) -> O
     }
 }
 
+/// The sleeve's wall thickness b and thermal diffusivity α_b for the Péclet number, where both
+/// are given (one without the other is named).
+pub(super) fn parse_thermal(
+    wall: Option<Positive>,
+    diffusivity: Option<Positive>,
+    errors: &mut Vec<FieldError>,
+) -> Option<(f64, f64)> {
+    match (wall, diffusivity) {
+        (None, None) => None,
+        (Some(b), Some(a)) => {
+            if b.get() > MAX_WALL_M {
+                errors.push(FieldError::new(
+                    "/sleeve_wall_thickness_m",
+                    format!("must be at most {MAX_WALL_M} m"),
+                ));
+            }
+            if a.get() > MAX_DIFFUSIVITY_M2_S {
+                errors.push(FieldError::new(
+                    "/sleeve_thermal_diffusivity_m2_s",
+                    format!("must be at most {MAX_DIFFUSIVITY_M2_S:e} m²/s"),
+                ));
+            }
+            Some((b.get(), a.get()))
+        }
+        (Some(_), None) => {
+            errors.push(FieldError::new(
+                "/sleeve_thermal_diffusivity_m2_s",
+                "required with sleeve_wall_thickness_m (the Péclet number takes both)",
+            ));
+            None
+        }
+        (None, Some(_)) => {
+            errors.push(FieldError::new(
+                "/sleeve_wall_thickness_m",
+                "required with sleeve_thermal_diffusivity_m2_s (the Péclet number takes both)",
+            ));
+            None
+        }
+    }
+}
+
+/// The sleeve's modified Péclet number ω_b R_b b/α_b (Eq. 18-40) at sleeve speed ω_b (rad/s),
+/// R_b = R + C + b/2 the wall's mean radius, from `(b, α_b)`.
+pub(super) fn peclet_number(
+    film: &SleeveFilm,
+    (wall, diffusivity): (f64, f64),
+    sleeve_speed: f64,
+) -> f64 {
+    let mean_radius = film.radius + film.clearance + 0.5 * wall;
+    sleeve_speed * mean_radius * wall / diffusivity
+}
+
 /// The parsed request.
 #[derive(Debug, Clone, PartialEq)]
 pub struct CompositeSpeedSplitCase {
@@ -317,41 +369,11 @@ impl Validate for CompositeSpeedSplitInput {
                 None
             }
         };
-        let thermal = match (
+        let thermal = parse_thermal(
             self.sleeve_wall_thickness_m,
             self.sleeve_thermal_diffusivity_m2_s,
-        ) {
-            (None, None) => None,
-            (Some(b), Some(a)) => {
-                if b.get() > MAX_WALL_M {
-                    errors.push(FieldError::new(
-                        "/sleeve_wall_thickness_m",
-                        format!("must be at most {MAX_WALL_M} m"),
-                    ));
-                }
-                if a.get() > MAX_DIFFUSIVITY_M2_S {
-                    errors.push(FieldError::new(
-                        "/sleeve_thermal_diffusivity_m2_s",
-                        format!("must be at most {MAX_DIFFUSIVITY_M2_S:e} m²/s"),
-                    ));
-                }
-                Some((b.get(), a.get()))
-            }
-            (Some(_), None) => {
-                errors.push(FieldError::new(
-                    "/sleeve_thermal_diffusivity_m2_s",
-                    "required with sleeve_wall_thickness_m (the Péclet number takes both)",
-                ));
-                None
-            }
-            (None, Some(_)) => {
-                errors.push(FieldError::new(
-                    "/sleeve_wall_thickness_m",
-                    "required with sleeve_thermal_diffusivity_m2_s (the Péclet number takes both)",
-                ));
-                None
-            }
-        };
+            &mut errors,
+        );
         let bearing = parse_bearing(
             BearingFields {
                 journal_radius_m: self.journal_radius_m,
@@ -531,10 +553,9 @@ impl Calculation for SpeedSplit {
         }
         let min_film = film.clearance * (1.0 - c.eccentricity);
         let fixed_film = film.clearance * (1.0 - s.fixed.eccentricity);
-        let peclet = case.thermal.map(|(b, alpha)| {
-            let mean_radius = film.radius + film.clearance + 0.5 * b;
-            wb * mean_radius * b / alpha
-        });
+        let peclet = case
+            .thermal
+            .map(|thermal| peclet_number(&film, thermal, wb));
         let output = CompositeSpeedSplitOutput {
             sleeve_speed_rpm: rpm(wb),
             speed_ratio: c.speed_ratio,

@@ -333,7 +333,9 @@ fn ascending_angles(
     angles.iter().map(|a| a.to_radians()).collect()
 }
 
-fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<FieldError>) -> LoadLaw {
+/// The load law of a request's `load`, its invalid fields pushed onto `errors` (also the
+/// composite orbit's).
+pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<FieldError>) -> LoadLaw {
     let force = |errors: &mut Vec<FieldError>, field: &str, v: f64| {
         finite_within(
             errors,

@@ -169,7 +169,7 @@ pub enum OrbitError {
 
 /// The integrator's tolerance for a fidelity's relative tolerance: absolute as relative on r̄
 /// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen.
-fn settings(relative: f64) -> Settings {
+pub(crate) fn settings(relative: f64) -> Settings {
     Settings {
         relative,
         absolute: relative,
