@@ -55,7 +55,7 @@ fn regular(p: &Problem) -> orbit::Orbit {
     let held = p.equilibrium(true).unwrap();
     orbit::run(
         &orbit::Problem {
-            film: p.film(0.0),
+            film: crate::calc::journal::orbit::OrbitFilm::Short(p.film(0.0)),
             mass: p.mass,
             load: p.load.clone(),
             force_scale: p.force_scale,

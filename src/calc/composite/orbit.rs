@@ -20,7 +20,7 @@ use super::speed_split::{
 use crate::calc::journal::dynamic::{load_law, DynamicLoadSpec};
 use crate::calc::journal::load_law::LoadLaw;
 use crate::calc::journal::moving_film::{ShortArc, ShortFilm};
-use crate::calc::journal::orbit::{self, Orbit, OrbitError, Start, Until};
+use crate::calc::journal::orbit::{self, Orbit, OrbitError, OrbitFilm, Start, Until};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -397,10 +397,10 @@ impl Run<'_> {
     /// centre, where it has none).
     fn regular(&self, problem: &Problem) -> Result<Regular, CalcError> {
         let held = orbit::Problem {
-            film: ShortFilm {
+            film: OrbitFilm::Short(ShortFilm {
                 arc: problem.arc,
                 speed_sum: 1.0,
-            },
+            }),
             mass: problem.mass,
             load: problem.load.clone(),
             force_scale: problem.force_scale,
