@@ -24,8 +24,8 @@ use crate::calc::journal::orbit::{self, Orbit, OrbitError, OrbitFilm, Start, Unt
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
-use crate::fidelity::{FidelityRequest, Level, SolverReport, StopReason};
-use crate::numerics::driver::Budget;
+use crate::fidelity::{FidelityRequest, Level, SolverReport};
+use crate::numerics::driver::{Budget, Stopped};
 
 pub struct CompositeOrbit;
 
@@ -502,12 +502,10 @@ impl Run<'_> {
     }
 }
 
-/// An integration that stopped short: past the deadline a 504, otherwise a 422 with its report.
+/// An integration that stopped short: the one mapping of a driver stop (past the deadline a
+/// 504, otherwise a 422 with its report).
 fn stopped(report: SolverReport) -> CalcError {
-    match report.stop_reason {
-        StopReason::Deadline => CalcError::DeadlineExceeded,
-        _ => CalcError::Stopped(Box::new(report)),
-    }
+    Stopped { report }.into()
 }
 
 /// Add the regular run's work to the composite's report.

@@ -1,6 +1,7 @@
 use super::*;
 use crate::calc::testing::{invalid_pointers, ok, post, warning_codes};
 use crate::calc::Failure;
+use crate::fidelity::StopReason;
 use proptest::prelude::*;
 use serde_json::{json, Value};
 

@@ -21,6 +21,7 @@ use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::squeeze::lubricant::{self, Viscosity};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
+use crate::numerics::driver::Stopped;
 use crate::numerics::roots::{brent, Stopping};
 
 pub struct DynamicJournal;
@@ -865,7 +866,7 @@ impl Calculation for DynamicJournal {
                     ),
                 },
             ),
-            OrbitError::Stopped(report) => CalcError::Stopped(Box::new(report)),
+            OrbitError::Stopped(report) => Stopped { report }.into(),
         })?;
         let mut report = orbit.report.clone().at(case.level);
         if let FilmChoice::Finite { mesh, .. } = case.film {
@@ -969,6 +970,17 @@ mod tests {
 
     fn example() -> Value {
         serde_json::from_str(DynamicJournal::EXAMPLE).unwrap()
+    }
+
+    /// An orbit past its deadline is a 504 (the driver's one mapping), not a 422 with a report.
+    #[test]
+    fn a_run_past_its_deadline_is_a_504() {
+        let body = serde_json::to_vec(&example()).unwrap();
+        let deadline = std::time::Instant::now() + std::time::Duration::from_micros(200);
+        match crate::calc::execute::<DynamicJournal>(&body, deadline, Default::default()) {
+            Err(Failure::Calc(CalcError::DeadlineExceeded)) => {}
+            other => panic!("expected the deadline, got {:?}", other.map(|_| ())),
+        }
     }
 
     #[test]

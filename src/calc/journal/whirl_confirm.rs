@@ -24,6 +24,7 @@ use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
 use super::orbit::{self, OrbitError, OrbitFilm, Problem, Start, Until};
 use super::threshold::{FilmState, Rotor};
 use crate::calc::{Budget, CalcError};
+use crate::numerics::driver::Stopped;
 
 /// Mass factors around the threshold mass: just below and just above.
 pub const BELOW: f64 = 0.8;
@@ -105,7 +106,7 @@ fn simulate(
         OrbitError::Contact { eccentricity, .. } => CalcError::Internal(format!(
             "whirl confirmation: the disturbed rotor reached ε = {eccentricity:.4}"
         )),
-        OrbitError::Stopped(report) => CalcError::Stopped(Box::new(report)),
+        OrbitError::Stopped(report) => Stopped { report }.into(),
     })?;
     // The distance moved between samples: the speed's scale, blind to where the equilibrium
     // is (the equilibrium solve's own tolerance would leave a floor under a distance from it).
