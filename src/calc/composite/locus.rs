@@ -35,9 +35,9 @@ use nalgebra::{SVector, Vector3, Vector5};
 use super::film::{LoadError, SleeveFilm, COMPARISON_MAX_ECCENTRICITY};
 use super::sleeve::Restraint;
 use crate::calc::journal::load_law::LoadLaw;
-use crate::calc::journal::moving_film::{squeeze_vector, ShortArc, ShortFilm};
-use crate::calc::journal::orbit;
-use crate::fidelity::{SolverReport, StopReason, TimeIntegration};
+use crate::calc::journal::moving_film::{squeeze_vector, ShortArc, ShortFilm, CONTACT};
+use crate::calc::journal::orbit::{self, OrbitError};
+use crate::fidelity::{SolverReport, TimeIntegration};
 use crate::numerics::driver::Budget;
 use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Step};
 
@@ -246,15 +246,6 @@ pub struct Locus {
     pub report: SolverReport,
 }
 
-/// Why no locus.
-#[derive(Debug, Clone, PartialEq)]
-pub enum LocusError {
-    /// The journal reached the wall at τ.
-    Contact { time: f64, eccentricity: f64 },
-    /// The integrator was capped or ran out of time.
-    Stopped(SolverReport),
-}
-
 /// The composite locus from `start` (at rest; [`Problem::equilibrium`] for the text's start) to
 /// a steady orbit (or `max_periods`), at relative tolerance `relative`, with `samples` samples
 /// of the last period (0: none).
@@ -265,7 +256,7 @@ pub fn run(
     relative: f64,
     samples: usize,
     budget: &Budget,
-) -> Result<Locus, LocusError> {
+) -> Result<Locus, OrbitError> {
     let [x, y] = start.position;
     let xi = start.speed_ratio;
     let run = if problem.mass > 0.0 {
@@ -369,7 +360,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     relative: f64,
     samples: usize,
     budget: &Budget,
-) -> Result<Marched, LocusError> {
+) -> Result<Marched, OrbitError> {
     // The journal's orbit's settings: r̄ and ξ are both of order one.
     let settings = orbit::settings(relative);
     let period = problem.load.period();
@@ -388,17 +379,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
         };
         let done = match ode::integrate(rate, t, y, t + period, &settings, observe, budget) {
             Ok(done) => done,
-            Err(Failure::Halted(h)) => {
-                let e = eccentricity(&h.y);
-                return Err(if h.stopped.reason() == StopReason::Stalled && e > 0.99 {
-                    LocusError::Contact {
-                        time: h.t,
-                        eccentricity: e,
-                    }
-                } else {
-                    LocusError::Stopped(h.stopped.report)
-                });
-            }
+            Err(Failure::Halted(h)) => return Err(OrbitError::halted(*h, CONTACT)),
             Err(Failure::Rate(())) => unreachable!("the locus's rates do not fail"),
         };
         steps += done.report.iterations;

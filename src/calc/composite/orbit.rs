@@ -12,7 +12,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::film::{LoadError, SleeveFilm};
-use super::locus::{self, Equilibrium, Locus, LocusError, Problem, Settling, SleeveGroups};
+use super::locus::{self, Equilibrium, Locus, Problem, Settling, SleeveGroups};
 use super::speed_split::{
     parse_bearing, parse_thermal, peclet_number, rpm, Bearing, BearingFields, LOW_SLEEVE_RPM,
     SHORT_L_OVER_D,
@@ -602,14 +602,14 @@ impl Calculation for CompositeOrbit {
         })?;
         let composite: Locus = locus::run(&problem, start, run.settling, run.tolerance, run.samples, run.budget)
             .map_err(|e| match e {
-                LocusError::Contact { time, eccentricity } => CalcError::impossible(
+                OrbitError::Contact { time, eccentricity } => CalcError::impossible(
                     "/load",
                     format!(
                         "the composite bearing's journal reaches the wall at t = {:.6e} s (ε = {eccentricity:.6}): its film cannot carry this load cycle — lower the load, raise the speed, viscosity or length",
                         time / w
                     ),
                 ),
-                LocusError::Stopped(report) => stopped(report),
+                OrbitError::Stopped(report) => stopped(report),
             })?;
         let regular = run.regular(&problem)?;
         let mut report = composite.report.clone();

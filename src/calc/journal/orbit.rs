@@ -33,7 +33,7 @@ use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortFilm};
 use crate::calc::Budget;
 use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
-use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Settings, Step};
+use crate::numerics::ode::{self, Failure, Flow, Halted, Rate, RateError, Settings, Step};
 use crate::numerics::optimise::brent_minimise;
 
 /// The film an orbit runs on: the short film's closed forms, or the finite film's impedance
@@ -165,6 +165,22 @@ pub enum OrbitError {
     Contact { time: f64, eccentricity: f64 },
     /// The integrator was capped or ran out of time.
     Stopped(SolverReport),
+}
+
+impl OrbitError {
+    /// A halted integration: contact when it stalled within 1 % of the film's reach in ε (the
+    /// wall stopped it), else the integrator's report.
+    pub(crate) fn halted<const N: usize>(h: Halted<N>, reach: f64) -> Self {
+        let e = h.y[0].hypot(h.y[1]);
+        if h.stopped.reason() == StopReason::Stalled && e > 0.99 * reach {
+            OrbitError::Contact {
+                time: h.t,
+                eccentricity: e,
+            }
+        } else {
+            OrbitError::Stopped(h.stopped.report)
+        }
+    }
 }
 
 /// The integrator's tolerance for a fidelity's relative tolerance: absolute as relative on r̄
@@ -321,30 +337,17 @@ impl<'a> Tracker<'a> {
             w.max_eccentricity = e0;
             w.direction_of_max = step.y0[1].atan2(step.y0[0]);
         }
-        let e = |t: f64| eccentricity(&step.at(t));
-        let (t0, t1) = (step.t0, step.t1);
-        let mid = 0.5 * (t0 + t1);
-        let (e0, em, e1) = (e(t0), e(mid), e(t1));
-        let (tmax, emax) = if em > e0.max(e1) {
-            let (t, m) = brent_minimise(|t| -e(t), t0, t1, 1e-10 * (t1 - t0).max(1e-300));
-            (t, -m)
-        } else if e1 >= e0 {
-            (t1, e1)
-        } else {
-            (t0, e0)
-        };
-        if emax > w.max_eccentricity {
-            let y = step.at(tmax);
-            w.max_eccentricity = emax;
-            w.time_of_max = tmax;
+        let extremes = step.extremes(eccentricity);
+        if extremes.max > w.max_eccentricity {
+            let y = step.at(extremes.time_of_max);
+            w.max_eccentricity = extremes.max;
+            w.time_of_max = extremes.time_of_max;
             w.direction_of_max = y[1].atan2(y[0]);
         }
-        let emin = if em < e0.min(e1) {
-            brent_minimise(e, t0, t1, 1e-10 * (t1 - t0).max(1e-300)).1
-        } else {
-            e0.min(e1)
-        };
-        w.min_eccentricity = w.min_eccentricity.min(emin);
+        w.min_eccentricity = w.min_eccentricity.min(extremes.min);
+        let e = |t: f64| eccentricity(&step.at(t));
+        let (t0, t1) = (step.t0, step.t1);
+        let (e0, em, e1) = (e(t0), e(0.5 * (t0 + t1)), e(t1));
         let factor = |e: f64| 1.0 / (1.0 - (e * e).min(1.0 - 1e-18)).sqrt();
         self.couette_integral += (t1 - t0) / 6.0 * (factor(e0) + 4.0 * factor(em) + factor(e1));
         let velocity = if N == 4 {
@@ -432,18 +435,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             Ok(d) => d,
             Err(Failure::Halted(h)) => {
                 tally.steps += h.stopped.report.iterations;
-                let e = eccentricity(&h.y);
-                return Err(
-                    if h.stopped.reason() == StopReason::Stalled && e > 0.99 * problem.film.reach()
-                    {
-                        OrbitError::Contact {
-                            time: h.t,
-                            eccentricity: e,
-                        }
-                    } else {
-                        OrbitError::Stopped(h.stopped.report)
-                    },
-                );
+                return Err(OrbitError::halted(*h, problem.film.reach()));
             }
             Err(Failure::Rate(())) => unreachable!("the orbit's rates do not fail"),
         };
