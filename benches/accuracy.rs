@@ -647,21 +647,25 @@ fn squeeze_request(l_over_d: f64, film: &str, e1: f64, e2: f64, fidelity: &str) 
     )
 }
 
+/// One whole request (parse, solve, envelope) to the room at `path`: its envelope and its wall
+/// time, ms.
+fn timed_request(path: &str, body: &str) -> (Value, f64) {
+    let entry = stribeck::calc::find(path).expect("registered");
+    let far = Instant::now() + std::time::Duration::from_secs(600);
+    let t = Instant::now();
+    let done = (entry.execute)(body.as_bytes(), far, Default::default()).expect("solves");
+    let ms = t.elapsed().as_secs_f64() * 1e3;
+    (serde_json::from_slice(&done.body).unwrap(), ms)
+}
+
 /// The squeezed journal: per case and fidelity, the error in `time_s` against the room's own
 /// converged answer (384 × 48 and 192 × 24 cells at quadrature tolerance 1e-9, Richardson-
 /// extrapolated; the 96 × 12 run gives the reference's uncertainty and the observed order), the
 /// reported estimate and whether it bounds the error, the film solves and the time per request.
 fn squeeze_journal(out: &mut String) {
     let started = Instant::now();
-    let entry = stribeck::calc::find("/v1/squeeze-films/journal").expect("registered");
     // The response and its wall time, ms.
-    let run = |body: &str| -> (Value, f64) {
-        let far = Instant::now() + std::time::Duration::from_secs(600);
-        let t = Instant::now();
-        let done = (entry.execute)(body.as_bytes(), far, Default::default()).expect("solves");
-        let ms = t.elapsed().as_secs_f64() * 1e3;
-        (serde_json::from_slice(&done.body).unwrap(), ms)
-    };
+    let run = |body: &str| timed_request("/v1/squeeze-films/journal", body);
     let time_s = |v: &Value| v["result"]["time_s"].as_f64().unwrap();
     // (label, L/D, film, ε₁, ε₂)
     let cases = [
@@ -918,14 +922,8 @@ fn orbit_request(
 /// and the median time per request.
 fn journal_orbits(out: &mut String) {
     let started = Instant::now();
-    let entry = stribeck::calc::find("/v1/journal-bearings/dynamic").expect("registered");
-    let run = |body: &str| -> (Value, f64) {
-        let far = Instant::now() + std::time::Duration::from_secs(600);
-        let t = Instant::now();
-        let done = (entry.execute)(body.as_bytes(), far, Default::default()).expect("solves");
-        let ms = t.elapsed().as_secs_f64() * 1e3;
-        (serde_json::from_slice(&done.body).unwrap(), ms)
-    };
+    // The response and its wall time, ms.
+    let run = |body: &str| timed_request("/v1/journal-bearings/dynamic", body);
     // (label, m̄, F̄ steady, amplitude, frequency ratio, film model)
     let cases = [
         (
