@@ -18,6 +18,7 @@
 
 use std::f64::consts::PI;
 
+use crate::calc::journal::orbit::Scales;
 use crate::numerics::roots::{brent_bracketed, RootError, Stopping};
 
 /// Where an eccentricity search stops: ε of a film that cannot carry more has
@@ -93,7 +94,14 @@ impl SleeveFilm {
 
     /// W, N, at ε with the surfaces turning at ω_j + ω_b = `speed_sum`, rad/s.
     pub fn load(&self, eps: f64, speed_sum: f64) -> f64 {
-        self.viscosity * self.radius * speed_sum * self.length.powi(3) / self.clearance.powi(2)
+        Scales::of(
+            self.viscosity,
+            self.radius,
+            self.length,
+            self.clearance,
+            speed_sum,
+        )
+        .force
             * Self::load_coefficient(eps)
     }
 

@@ -20,7 +20,7 @@ use super::speed_split::{
 use crate::calc::journal::dynamic::{load_law, DynamicLoadSpec};
 use crate::calc::journal::load_law::LoadLaw;
 use crate::calc::journal::moving_film::{ShortArc, ShortFilm};
-use crate::calc::journal::orbit::{self, Orbit, OrbitError, OrbitFilm, Start, Until};
+use crate::calc::journal::orbit::{self, Orbit, OrbitError, OrbitFilm, Scales, Start, Until};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -564,11 +564,12 @@ impl Calculation for CompositeOrbit {
                 format!("L/D = {l_over_d:.3}: the short-bearing film overestimates the load capacity above L/D ≈ 0.5 (Ocvirk); both loci's ε are then too small"),
             );
         }
-        let force_scale = mu * r * w * l.powi(3) / (c * c);
+        let scales = Scales::of(mu, r, l, c, w);
+        let force_scale = scales.force;
         let sleeve = SleeveGroups::of(&film, &restraint, case.inertia, w);
         let problem = Problem {
             arc: case.arc,
-            mass: case.mass * c * w * w / force_scale,
+            mass: scales.mass(case.mass),
             load: case.load.clone(),
             force_scale,
             sleeve,

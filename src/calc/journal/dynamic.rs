@@ -13,7 +13,7 @@ use super::film::Mesh;
 use super::finite_moving_film::{FiniteSqueezeFilm, ImpedanceTable, TableDensity};
 use super::load_law::{Engine, LoadLaw};
 use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
-use super::orbit::{self, OrbitError, OrbitFilm, Problem, Start, Until};
+use super::orbit::{self, OrbitError, OrbitFilm, Problem, Scales, Start, Until};
 use super::performance::Method;
 use super::plain::{grid_mesh, GeometrySpec};
 use crate::calc::lubricant::LubricantSpec;
@@ -775,8 +775,8 @@ impl Calculation for DynamicJournal {
                 format!("L/D = {l_over_d:.3}: the short-bearing film overestimates the load capacity above L/D ≈ 0.5 (Ocvirk); the orbit's ε is then too small"),
             );
         }
-        let force_scale = mu * r * w * l.powi(3) / (c * c);
-        let mass = case.mass * c * w * w / force_scale;
+        let scales = Scales::of(mu, r, l, c, w);
+        let (force_scale, mass) = (scales.force, scales.mass(case.mass));
         let started = std::time::Instant::now();
         let budget = ctx.budget();
         let film = match case.film {

@@ -100,6 +100,31 @@ pub struct Problem {
     pub force_scale: f64,
 }
 
+/// The scales of the integrator's units for a journal of radius R, length L and clearance C
+/// turning at ω in oil of viscosity μ: forces over F_s = μ R ω L³/C² (N), masses as
+/// m̄ = m C ω²/F_s (the short bearing's groups, Booker's mobility units).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Scales {
+    /// F_s, N.
+    pub force: f64,
+    /// C ω², m/s²: m̄ = m C ω²/F_s.
+    acceleration: f64,
+}
+
+impl Scales {
+    pub fn of(viscosity: f64, radius: f64, length: f64, clearance: f64, omega: f64) -> Self {
+        Scales {
+            force: viscosity * radius * omega * length.powi(3) / (clearance * clearance),
+            acceleration: clearance * omega * omega,
+        }
+    }
+
+    /// m̄ of a mass in kg (0 stays 0: the massless journal).
+    pub fn mass(&self, kg: f64) -> f64 {
+        kg * self.acceleration / self.force
+    }
+}
+
 /// When the run ends.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Until {

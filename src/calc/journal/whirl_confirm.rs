@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 
 use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
-use super::orbit::{self, OrbitError, OrbitFilm, Problem, Start, Until};
+use super::orbit::{self, OrbitError, OrbitFilm, Problem, Scales, Start, Until};
 use super::threshold::{FilmState, Rotor};
 use crate::calc::{Budget, CalcError};
 use crate::numerics::driver::Stopped;
@@ -68,7 +68,7 @@ fn simulate(
 ) -> Result<Simulated, CalcError> {
     let omega = 2.0 * PI * state.speed_rpm / 60.0;
     let (radius, c) = (0.5 * rotor.diameter_m, rotor.radial_clearance_m);
-    let force_scale = rotor.viscosity_pa_s * radius * omega * rotor.length_m.powi(3) / (c * c);
+    let scales = Scales::of(rotor.viscosity_pa_s, radius, rotor.length_m, c, omega);
     let linear = rotor.verdict(state, mass_kg);
     let period = 2.0 * PI / linear.frequency_ratio.max(0.05);
     let g = linear.growth_rate_per_s / omega;
@@ -79,11 +79,11 @@ fn simulate(
     };
     let problem = Problem {
         film: OrbitFilm::Short(film),
-        mass: mass_kg * c * omega * omega / force_scale,
+        mass: scales.mass(mass_kg),
         load: LoadLaw::Constant {
             force: [0.0, -rotor.load_n],
         },
-        force_scale,
+        force_scale: scales.force,
     };
     let eps = state.eccentricity_ratio;
     let equilibrium = equilibrium(film, eps).ok_or_else(|| {
