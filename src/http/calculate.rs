@@ -57,7 +57,10 @@ pub async fn run(
     };
     // The deadline runs from arrival: time spent waiting for a solver permit counts against it.
     let arrived = Instant::now();
-    let deadline = arrived + deadline_for(&state, &headers);
+    let deadline = match deadline_for(&state, &headers) {
+        Ok(d) => arrived + d,
+        Err(problem) => return problem.into_response(),
+    };
     let cost = entry.cost(&body);
     let ticket = match state.admission.admit(cost, deadline).await {
         Ok(ticket) => ticket,
@@ -132,15 +135,29 @@ fn is_json(headers: &HeaderMap) -> bool {
         .unwrap_or(false)
 }
 
-/// The server's deadline, or the client's if it asked for less.
-fn deadline_for(state: &AppState, headers: &HeaderMap) -> Duration {
-    let asked = headers
-        .get(DEADLINE_HEADER)
-        .and_then(|v| v.to_str().ok())
+/// The server's deadline, or the client's if it asked for less; a header that is not a whole
+/// number of milliseconds is a 400 (ignoring it would run the solve under a deadline the
+/// client did not ask for).
+fn deadline_for(state: &AppState, headers: &HeaderMap) -> Result<Duration, Problem> {
+    let Some(value) = headers.get(DEADLINE_HEADER) else {
+        return Ok(state.config.deadline);
+    };
+    let asked = value
+        .to_str()
+        .ok()
         .and_then(|v| v.trim().parse::<u64>().ok())
-        .map(|ms| Duration::from_millis(ms.max(1)));
-    match asked {
-        Some(d) if d < state.config.deadline => d,
-        _ => state.config.deadline,
-    }
+        .map(|ms| Duration::from_millis(ms.max(1)))
+        .ok_or_else(|| {
+            Problem::new(
+                StatusCode::BAD_REQUEST,
+                "invalid-header",
+                "Invalid header",
+                format!(
+                    "{DEADLINE_HEADER} must be a whole number of milliseconds (the server's own deadline, {} ms, caps it); got {:?}",
+                    state.config.deadline.as_millis(),
+                    String::from_utf8_lossy(value.as_bytes())
+                ),
+            )
+        })?;
+    Ok(asked.min(state.config.deadline))
 }

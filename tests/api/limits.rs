@@ -57,6 +57,49 @@ async fn a_calculation_past_its_deadline_is_504_and_the_server_keeps_serving() {
     );
 }
 
+/// A deadline header that is not a whole number of milliseconds is a 400 naming the header
+/// (issue 12, item 8: it was ignored and the solve ran under the server's deadline).
+#[tokio::test]
+async fn a_malformed_deadline_header_is_a_400_that_names_it() {
+    let app = spawn_app().await;
+    let body = serde_json::to_vec(
+        &json!({"lubricant": {"viscosity_pa_s": 0.03}, "temperatures_c": [40.0]}),
+    )
+    .unwrap();
+    for bad in ["abc", "-5", "1.5", "", "1e3"] {
+        let r = app
+            .post_raw(
+                PATH,
+                body.clone(),
+                Some("application/json"),
+                &[("x-stribeck-deadline-ms", bad)],
+            )
+            .await;
+        let problem = r.problem(400);
+        let detail = problem["detail"].as_str().unwrap();
+        assert!(
+            detail.contains("x-stribeck-deadline-ms") && detail.contains("milliseconds"),
+            "{bad:?}: {detail}"
+        );
+    }
+    for good in ["250", " 250 ", "0", "99999999999"] {
+        let r = app
+            .post_raw(
+                PATH,
+                body.clone(),
+                Some("application/json"),
+                &[("x-stribeck-deadline-ms", good)],
+            )
+            .await;
+        assert!(
+            r.status == 200 || (good == "0" && r.status == 504),
+            "{good:?}: {} {}",
+            r.status,
+            r.text
+        );
+    }
+}
+
 #[tokio::test]
 async fn a_flood_past_the_light_limit_is_shed_with_503() {
     let app = spawn_with(
