@@ -59,7 +59,15 @@ pub async fn run(
     let arrived = Instant::now();
     let deadline = match deadline_for(&state, &headers) {
         Ok(d) => arrived + d,
-        Err(problem) => return problem.into_response(),
+        Err(detail) => {
+            return Problem::new(
+                StatusCode::BAD_REQUEST,
+                "invalid-header",
+                "Invalid header",
+                detail,
+            )
+            .into_response()
+        }
     };
     let cost = entry.cost(&body);
     let ticket = match state.admission.admit(cost, deadline).await {
@@ -137,8 +145,8 @@ fn is_json(headers: &HeaderMap) -> bool {
 
 /// The server's deadline, or the client's if it asked for less; a header that is not a whole
 /// number of milliseconds is a 400 (ignoring it would run the solve under a deadline the
-/// client did not ask for).
-fn deadline_for(state: &AppState, headers: &HeaderMap) -> Result<Duration, Problem> {
+/// client did not ask for); the error is the 400's detail.
+fn deadline_for(state: &AppState, headers: &HeaderMap) -> Result<Duration, String> {
     let Some(value) = headers.get(DEADLINE_HEADER) else {
         return Ok(state.config.deadline);
     };
@@ -148,15 +156,10 @@ fn deadline_for(state: &AppState, headers: &HeaderMap) -> Result<Duration, Probl
         .and_then(|v| v.trim().parse::<u64>().ok())
         .map(|ms| Duration::from_millis(ms.max(1)))
         .ok_or_else(|| {
-            Problem::new(
-                StatusCode::BAD_REQUEST,
-                "invalid-header",
-                "Invalid header",
-                format!(
-                    "{DEADLINE_HEADER} must be a whole number of milliseconds (the server's own deadline, {} ms, caps it); got {:?}",
-                    state.config.deadline.as_millis(),
-                    String::from_utf8_lossy(value.as_bytes())
-                ),
+            format!(
+                "{DEADLINE_HEADER} must be a whole number of milliseconds (the server's own deadline, {} ms, caps it); got {:?}",
+                state.config.deadline.as_millis(),
+                String::from_utf8_lossy(value.as_bytes())
             )
         })?;
     Ok(asked.min(state.config.deadline))
