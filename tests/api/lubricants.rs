@@ -185,3 +185,109 @@ fn piezoviscosity_is_decided_and_reported() {
     let (d, mu) = decision(&with_law, 1e8, "off");
     assert_eq!((d["applied"].clone(), mu), (json!(false), 0.03));
 }
+
+/// Every room that takes its oil at a temperature says when that oil runs hotter than oils
+/// last (issue 12, item 5: a journal at 1000 °C inlet answered without a word): above 150 °C
+/// the mineral oils' limit, above 230 °C the synthetics' (Khonsari & Booser Table 14.7). Each
+/// registered example gets its temperature fields (or `temperature_c` where the room takes
+/// one) set hot; a room answers with the warning, or refuses the temperature itself.
+#[test]
+fn every_room_warns_of_oil_above_its_temperature_limit() {
+    let mut warned = Vec::new();
+    // Grease life is a grease's: Eq. 15.34 has its own fitted range (75–175 °C), which it warns of.
+    for entry in stribeck::calc::REGISTRY
+        .iter()
+        .filter(|e| e.path != "/v1/rolling-bearings/grease-life")
+    {
+        let example: Value = serde_json::from_str(entry.example).unwrap();
+        let fields: Vec<&str> = ["temperature_c", "inlet_temperature_c", "temperatures_c"]
+            .into_iter()
+            .filter(|k| example.get(*k).is_some())
+            .collect();
+        let fields = if fields.is_empty() {
+            vec!["temperature_c"]
+        } else {
+            fields
+        };
+        for (t, code) in [
+            (160.0, "temperature_above_mineral_oil_limit"),
+            (400.0, "temperature_above_oil_limit"),
+        ] {
+            let mut body = example.clone();
+            for k in &fields {
+                body[*k] = if *k == "temperatures_c" {
+                    json!([40.0, t])
+                } else {
+                    json!(t)
+                };
+            }
+            match run(entry.path, &body) {
+                Ok(v) => {
+                    let codes: Vec<&str> = v["warnings"]
+                        .as_array()
+                        .unwrap()
+                        .iter()
+                        .map(|w| w["code"].as_str().unwrap())
+                        .collect();
+                    assert!(codes.contains(&code), "{} at {t} °C: {codes:?}", entry.path);
+                    warned.push((entry.path, t));
+                }
+                // A room without a temperature, or with its own narrower range.
+                Err(Failure::Invalid(errors)) => assert!(
+                    errors
+                        .iter()
+                        .any(|e| fields.iter().any(|k| e.pointer == format!("/{k}"))),
+                    "{}: {errors:?}",
+                    entry.path
+                ),
+                Err(other) => panic!("{} at {t} °C: {other:?}", entry.path),
+            }
+        }
+    }
+    // The lubricant, journal, thrust, EHL, rolling-analysis, squeeze, hydrostatic, dynamic,
+    // whirl and composite rooms.
+    assert!(warned.len() >= 2 * 18, "{warned:?}");
+}
+
+/// Roelands' law at 5 GPa gives 1.35e20 Pa·s: an extrapolation past the 0.5–3 GPa of EHL
+/// contacts (issue 12, item 5), which the viscosity room now says; at 1 GPa it does not.
+#[test]
+fn a_pressure_beyond_the_piezoviscous_range_warns() {
+    let body = |p: f64| {
+        json!({"lubricant": {"kinematic_viscosity_40c_mm2_s": 31.0, "kinematic_viscosity_100c_mm2_s": 5.4, "roelands_pressure_viscosity_index": 0.68},
+               "temperatures_c": [40.0], "pressures_pa": [0.0, p]})
+    };
+    let codes = |v: Value| -> Vec<String> {
+        v["warnings"]
+            .as_array()
+            .unwrap()
+            .iter()
+            .map(|w| w["code"].as_str().unwrap().to_owned())
+            .collect()
+    };
+    let hot = run("/v1/lubricants/viscosity", &body(5e9)).unwrap();
+    assert!(codes(hot).contains(&"pressure_beyond_piezoviscous_range".to_owned()));
+    let fine = run("/v1/lubricants/viscosity", &body(1e9)).unwrap();
+    assert!(!codes(fine).contains(&"pressure_beyond_piezoviscous_range".to_owned()));
+}
+
+/// An EHL film with a constant viscosity needs no temperature (issue 12, item 10); a
+/// temperature law still does, and says so at /temperature_c.
+#[test]
+fn ehl_rooms_take_a_constant_viscosity_without_a_temperature() {
+    for path in ["/v1/contacts/ehl-film", "/v1/contacts/ehl"] {
+        let mut body: Value = serde_json::from_str(find(path).unwrap().example).unwrap();
+        let with = run(path, &body).unwrap();
+        body.as_object_mut().unwrap().remove("temperature_c");
+        let without = run(path, &body).unwrap();
+        assert_eq!(with["result"], without["result"], "{path}");
+        body["lubricant"] = json!({"kinematic_viscosity_40c_mm2_s": 31.0, "kinematic_viscosity_100c_mm2_s": 5.4, "roelands_pressure_viscosity_index": 0.68});
+        match run(path, &body) {
+            Err(Failure::Invalid(errors)) => {
+                assert_eq!(errors[0].pointer, "/temperature_c", "{path}");
+                assert!(errors[0].message.contains("required"), "{path}");
+            }
+            other => panic!("{path}: {other:?}"),
+        }
+    }
+}

@@ -13,9 +13,9 @@ use utoipa::ToSchema;
 use super::film::{LoadError, SleeveFilm, MAX_ECCENTRICITY};
 use super::sleeve::Restraint;
 use super::split::{split, Operating};
+use crate::calc::lubricant::isoviscous::{self, Viscosity};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
-use crate::calc::squeeze::lubricant::{self, Viscosity};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{Level, SolverReport};
 
@@ -259,7 +259,7 @@ pub(super) fn parse_bearing(f: BearingFields, errors: &mut Vec<FieldError>) -> O
         ));
     }
     let k = parse_restraint(&f, errors);
-    let viscosity = lubricant::viscosity(f.lubricant, f.temperature_c, errors);
+    let viscosity = isoviscous::viscosity(f.lubricant, f.temperature_c, errors);
     match (errors.len() == before, k, viscosity) {
         (true, Some(k), Some(viscosity)) => Some(Bearing {
             film: SleeveFilm {

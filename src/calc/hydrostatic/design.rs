@@ -11,7 +11,7 @@ use utoipa::ToSchema;
 
 use super::lift::{self, Lift};
 use super::optimum::{DesignPoint, FilmChoice, Problem, RATIOS};
-use crate::calc::lubricant::{Lubricant, LubricantSpec};
+use crate::calc::lubricant::{validity, Lubricant, LubricantSpec};
 use crate::calc::quantity::{ratio_within, Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{Level, SolverReport};
@@ -138,9 +138,10 @@ fn lubricant_at(
     errors: &mut Vec<FieldError>,
 ) -> Option<(Lubricant, f64)> {
     match spec.parse("/lubricant") {
-        Ok(l) => {
+        Ok(mut l) => {
             let mu = l.viscosity_pa_s(t);
             if mu.is_finite() && mu > 0.0 {
+                l.assumptions.extend(validity::hot_oil("the oil", t));
                 Some((l, mu))
             } else {
                 errors.push(FieldError::new(

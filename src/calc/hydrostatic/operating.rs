@@ -12,6 +12,7 @@ use super::point::Point;
 use super::power::{self, Motion, Power};
 use super::restrictor::{self, Kind, Law};
 use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
+use crate::calc::lubricant::validity;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::numerics::roots::{brent, RootError, Stopping};
@@ -500,6 +501,9 @@ fn warn(case: &Case, op: &mut Operating) {
     // assumption is the pad's.
     for (code, message) in &case.lubricant.assumptions {
         notes.warn(code, message.clone());
+    }
+    if let Some((code, message)) = validity::hot_oil("the film's oil", op.film_temperature_c) {
+        notes.warn(code, message);
     }
     let r = &op.restrictor;
     match (r.kind, r.reynolds_number) {

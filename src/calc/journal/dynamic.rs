@@ -16,9 +16,9 @@ use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
 use super::orbit::{self, OrbitError, OrbitFilm, Problem, Scales, Start, Until};
 use super::performance::Method;
 use super::plain::{grid_mesh, GeometrySpec};
+use crate::calc::lubricant::isoviscous::{self, Viscosity};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
-use crate::calc::squeeze::lubricant::{self, Viscosity};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 use crate::numerics::driver::Stopped;
@@ -486,7 +486,7 @@ impl Validate for DynamicJournalInput {
     fn validate(self) -> Result<DynamicJournalCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let (d, l, c) = self.geometry.check(&mut errors);
-        let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
+        let viscosity = isoviscous::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let rpm = self.speed_rpm.get();
         if !(1e-6..=1e6).contains(&rpm) {
             errors.push(FieldError::new(

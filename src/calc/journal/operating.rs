@@ -19,6 +19,7 @@ use super::feed::{self, Feed, Flows};
 use super::film::{FeedLine, FilmModel, Misalignment, Port, Supply};
 use super::performance::{self, Method, Point};
 use crate::calc::lubricant::model::TemperatureLaw;
+use crate::calc::lubricant::validity;
 use crate::calc::lubricant::Lubricant;
 use crate::calc::{Budget, CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
@@ -402,6 +403,14 @@ pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
         None
     };
     let mut solution = outputs(case, &op, rise, thd, reynolds);
+    let hottest = solution
+        .bush_temperatures
+        .map_or(solution.effective_temperature_c, |t| {
+            t.max_c.max(solution.effective_temperature_c)
+        });
+    if let Some((code, message)) = validity::hot_oil("the film's hottest oil", hottest) {
+        notes.warn(code, message);
+    }
     solution.dynamics = dynamics
         .map(|(coefficients, stability)| dimensional_dynamics(case, &op, coefficients, stability));
     solution.notes = std::mem::take(notes);

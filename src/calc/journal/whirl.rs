@@ -12,7 +12,7 @@ use super::plain::{grid_mesh, DynamicCoefficients, GeometrySpec};
 use super::threshold::{Rotor, SpeedThreshold, WhirlFilm};
 use super::whirl_confirm;
 use crate::calc::lubricant::model::TemperatureLaw;
-use crate::calc::lubricant::LubricantSpec;
+use crate::calc::lubricant::{validity, LubricantSpec};
 use crate::calc::quantity::{Celsius, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
@@ -89,13 +89,15 @@ pub struct WhirlInput {
 }
 
 /// The validated request.
-#[derive(Debug, Clone, Copy)]
+#[derive(Debug, Clone)]
 pub struct WhirlCase {
     pub rotor: Rotor,
     pub speed_rpm: Option<f64>,
     pub mass_kg: Option<f64>,
     /// Simulate the orbit on this arc below and above the threshold.
     pub confirm: Option<ShortArc>,
+    /// The lubricant's parsing assumptions and validity warnings.
+    pub assumptions: Vec<(&'static str, String)>,
 }
 
 impl Validate for WhirlInput {
@@ -133,6 +135,7 @@ impl Validate for WhirlInput {
                 "give speed_rpm (for the threshold mass), journal_mass_kg (for the threshold speed), or both (for the verdict)",
             ));
         }
+        let mut assumptions = Vec::new();
         let viscosity = match self.lubricant.parse("/lubricant") {
             Ok(lubricant) => {
                 let t = self
@@ -150,6 +153,8 @@ impl Validate for WhirlInput {
                     ));
                     None
                 } else {
+                    assumptions.extend(lubricant.assumptions);
+                    assumptions.extend(validity::hot_oil("the oil", t));
                     Some(mu)
                 }
             }
@@ -216,6 +221,7 @@ impl Validate for WhirlInput {
                 speed_rpm: speed,
                 mass_kg: mass,
                 confirm,
+                assumptions,
             }),
             _ => Err(errors),
         }
@@ -313,6 +319,9 @@ impl Calculation for Whirl {
     type Output = WhirlOutput;
 
     fn run(case: WhirlCase, ctx: &mut Context) -> Result<WhirlOutput, CalcError> {
+        for (code, message) in &case.assumptions {
+            ctx.warn(code, message.clone());
+        }
         let budget = ctx.budget();
         let solves_before = budget.field_solves();
         let rotor = case.rotor;

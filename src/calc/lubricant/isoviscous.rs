@@ -1,12 +1,13 @@
-//! The squeeze rooms' viscosity: the shared `lubricant` object, parsed as every room parses it,
-//! taken at the request's `temperature_c` (which a constant viscosity does not need).
+//! The viscosity of an isoviscous room (squeeze films, dynamically loaded journals, the composite
+//! bearing): the shared `lubricant` object, parsed as every room parses it, taken at the
+//! request's `temperature_c` (which a constant viscosity does not need).
 
-use crate::calc::lubricant::model::TemperatureLaw;
-use crate::calc::lubricant::LubricantSpec;
+use super::validity;
+use super::LubricantSpec;
 use crate::calc::quantity::Celsius;
 use crate::calc::FieldError;
 
-/// The viscosity a squeeze film runs at (isoviscous: Khonsari & Booser §9.2), with the
+/// The viscosity an isoviscous film runs at (Khonsari & Booser §9.2), with the
 /// lubricant's parsing assumptions, reported as warnings.
 #[derive(Debug, Clone, PartialEq)]
 pub struct Viscosity {
@@ -29,29 +30,13 @@ pub fn viscosity(
             return None;
         }
     };
-    let t = match (&lubricant.temperature_law, temperature) {
-        (TemperatureLaw::Constant { .. }, t) => t.map_or(20.0, Celsius::get),
-        (_, Some(t)) => t.get(),
-        (_, None) => {
-            errors.push(FieldError::new(
-                "/temperature_c",
-                "required: the lubricant's viscosity depends on temperature",
-            ));
+    let t = match validity::operating_temperature(&lubricant, temperature) {
+        Ok(t) => t,
+        Err(e) => {
+            errors.push(e);
             return None;
         }
     };
-    if let TemperatureLaw::Vogel { c, .. } = lubricant.temperature_law {
-        if t <= c - 273.15 + 1.0 {
-            errors.push(FieldError::new(
-                "/temperature_c",
-                format!(
-                    "the Vogel law diverges at its c = {:.2} °C; the temperature must lie above it",
-                    c - 273.15
-                ),
-            ));
-            return None;
-        }
-    }
     let mu = lubricant.viscosity_pa_s(t);
     if !(mu.is_finite() && mu > 0.0) {
         errors.push(FieldError::new(
@@ -60,12 +45,13 @@ pub fn viscosity(
         ));
         return None;
     }
-    // A squeeze film needs only the viscosity: an assumed density is no assumption of its.
+    // An isoviscous film needs only the viscosity: an assumed density is no assumption of its.
     let mut assumptions: Vec<_> = lubricant
         .assumptions
         .into_iter()
         .filter(|(code, _)| *code != "density_assumed")
         .collect();
+    assumptions.extend(validity::hot_oil("the oil", t));
     if lubricant.pour_point_c.is_some_and(|pour| t < pour) {
         assumptions.push((
             "below_pour_point",

@@ -2,10 +2,11 @@
 //! `lubricant` object every family takes.
 
 pub mod astm_d2270;
+pub mod isoviscous;
 pub mod model;
 pub mod properties;
 pub mod spec;
-mod validity;
+pub mod validity;
 pub mod viscosity;
 pub mod viscosity_index;
 

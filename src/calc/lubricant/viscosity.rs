@@ -178,6 +178,12 @@ impl Calculation for Viscosity {
             );
         }
 
+        if pressure_law.is_some() && p_max > validity::PIEZOVISCOUS_LIMIT_PA {
+            ctx.warn(
+                "pressure_beyond_piezoviscous_range",
+                format!("{p_max:.3e} Pa is beyond the 3 GPa to which the pressure–viscosity laws were fitted (EHL contacts run at 0.5–3 GPa; Khonsari & Booser §2.5): there the oil is a glassy solid, its shear strength rather than its viscosity carries the load, and the viscosity given is an extrapolation"),
+            );
+        }
         let mut points = Vec::with_capacity(case.temperatures_c.len() * case.pressures_pa.len());
         for &t in &case.temperatures_c {
             let mu0 = lub.viscosity_pa_s(t);

@@ -21,6 +21,7 @@ use crate::calc::contact::ehl::closed_form::{self, FilmCase, FilmEffects};
 use crate::calc::contact::ehl::film::EhlFilmOutput;
 use crate::calc::contact::hertz::{Body, Contact, Field, Method, Shape};
 use crate::calc::lubricant::model::PressureLaw;
+use crate::calc::lubricant::validity;
 use crate::calc::lubricant::{Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive, RingSpeed};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -136,9 +137,8 @@ pub enum AnalysisLubricationMethod {
 const DN_GREASE_OR_BATH: f64 = 3.0e5;
 const DN_CIRCULATING_OIL: f64 = 5.0e5;
 /// 52100 through-hardened steel: dimensional stabilisation needed above about 125 °C
-/// (Khonsari & Booser §14.12); mineral oil's limit 150 °C (Table 14.7).
+/// (Khonsari & Booser §14.12, Table 14.7).
 const STABILISATION_C: f64 = 125.0;
-const MINERAL_OIL_LIMIT_C: f64 = 150.0;
 /// Misalignment limits, rad: deep-groove 12′ (Table 14.8: 12–16′), angular contact 2′ (Table 13.1).
 const MISALIGNMENT_DEEP_GROOVE_RAD: f64 = 12.0 / 60.0 * std::f64::consts::PI / 180.0;
 const MISALIGNMENT_ANGULAR_RAD: f64 = 2.0 / 60.0 * std::f64::consts::PI / 180.0;
@@ -699,12 +699,7 @@ fn limits(case: &AnalysisCase, pitch_m: f64, life: &LifeOutput, ctx: &mut Contex
         );
     }
     let t = case.temperature_c;
-    if t > MINERAL_OIL_LIMIT_C {
-        ctx.warn(
-            "temperature_above_mineral_oil_limit",
-            format!("{t} °C exceeds the 150 °C limit of mineral oils (and 110–150 °C of petroleum greases; Khonsari & Booser Table 14.7): a synthetic lubricant is needed"),
-        );
-    }
+    validity::warn_hot_oil(ctx, "the bearing", t);
     if t > STABILISATION_C {
         ctx.warn(
             "temperature_above_steel_stabilisation",

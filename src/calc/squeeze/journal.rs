@@ -12,8 +12,8 @@ use utoipa::ToSchema;
 
 use super::finite_journal::{self, Numerical};
 use super::long_journal::{self, FilmExtent};
-use super::lubricant::{self, Viscosity};
 use crate::calc::journal::plain::{grid_mesh, GeometrySpec};
+use crate::calc::lubricant::isoviscous::{self, Viscosity};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -113,7 +113,7 @@ impl Validate for SqueezeJournalInput {
         let mut errors = Vec::new();
         let (d, l, c) = self.geometry.check(&mut errors);
         let l_over_d = l / d;
-        let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
+        let viscosity = isoviscous::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let load = self.load_n.get();
         if !(MIN_LOAD_N..=MAX_LOAD_N).contains(&load) {
             errors.push(FieldError::new(

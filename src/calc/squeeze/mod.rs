@@ -4,12 +4,11 @@
 //!   sphere and a cylinder approaching a flat, closed forms;
 //! - `journal`: the `/v1/squeeze-films/journal` room (wire); its models `long_journal` (the
 //!   infinitely long bearing, closed forms) and `finite_journal` (the finite bearing: the
-//!   journal room's numerical film, squeezed, and the time by quadrature);
-//! - `lubricant`: the viscosity both rooms take from the shared `lubricant` object.
+//!   journal room's numerical film, squeezed, and the time by quadrature); both take their
+//!   viscosity from `calc::lubricant::isoviscous`.
 
 pub mod finite_journal;
 pub mod journal;
 pub mod long_journal;
-pub(crate) mod lubricant;
 pub mod plates;
 pub mod shapes;

@@ -8,8 +8,8 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::lubricant::{self, Viscosity};
 use super::shapes::Shape;
+use crate::calc::lubricant::isoviscous::{self, Viscosity};
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -267,7 +267,7 @@ impl Validate for PlatesInput {
     fn validate(self) -> Result<PlatesCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let shape = parse_shape(&self.shape, &mut errors);
-        let viscosity = lubricant::viscosity(self.lubricant, self.temperature_c, &mut errors);
+        let viscosity = isoviscous::viscosity(self.lubricant, self.temperature_c, &mut errors);
         let limit = shape.as_ref().map_or((MAX_FILM_M, "0.01 m"), film_limit);
         check_film("/film_m", self.film_m, limit, &mut errors);
         check_film("/initial_film_m", self.initial_film_m, limit, &mut errors);

@@ -9,7 +9,7 @@
 
 use super::performance::{Evaluated, Performance};
 use super::thd;
-use crate::calc::lubricant::Lubricant;
+use crate::calc::lubricant::{validity, Lubricant};
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::numerics::roots::{brent, Stopping};
@@ -228,6 +228,9 @@ pub fn operate(
             "above_babbitt_limit",
             format!("the estimated maximum film temperature {max_temperature:.0} °C exceeds the {BABBITT_LIMIT_C:.0} °C at which babbitt flows (§7.9)"),
         );
+    }
+    if let Some((code, message)) = validity::hot_oil("the film's hottest oil", max_temperature) {
+        notes.warn(code, message);
     }
     let inlet_film = ratio * h2;
     if inlet_film > 0.01 * b.min(l) {

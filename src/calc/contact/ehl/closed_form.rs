@@ -17,7 +17,7 @@ use super::formulas::{
 };
 use crate::calc::contact::hertz::{Contact, MajorAxis, Solution};
 use crate::calc::lubricant::model::{PressureLaw, TemperatureLaw};
-use crate::calc::lubricant::Lubricant;
+use crate::calc::lubricant::{validity, Lubricant};
 use crate::calc::surface::roughness::{
     composite_rms, film_parameter, LubricationRegime, FULL_FILM_LAMBDA,
 };
@@ -241,6 +241,9 @@ pub fn solve(case: &FilmCase) -> Result<FilmSolution, CalcError> {
         .warnings
         .extend(hertz.warnings_but_approach().cloned());
     let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
+    if let Some((code, message)) = validity::hot_oil("the inlet oil", case.temperature_c) {
+        notes.warn(code, message);
+    }
     let alpha = case.pressure_law.alpha_1_pa(eta0);
     if !(alpha.is_finite() && alpha > 0.0) {
         return Err(CalcError::impossible(

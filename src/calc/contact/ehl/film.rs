@@ -36,7 +36,7 @@ use super::formulas::Regime;
 use crate::calc::contact::hertz::{
     contact_of, method_of, BodySpec, ClosedFormFit, LineSpec, Method,
 };
-use crate::calc::lubricant::LubricantSpec;
+use crate::calc::lubricant::{validity, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::surface::roughness::LubricationRegime;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
@@ -105,9 +105,10 @@ pub struct EhlFilmInput {
     /// The lubricant; it must have a pressure–viscosity law (Barus α, or a Roelands Z from
     /// which α = Z·5.1e-9·(ln η₀ + 9.67), Khonsari eq. 2.13).
     pub lubricant: LubricantSpec,
-    /// Temperature of the oil entering the contact, °C: η₀ and α are taken here.
-    #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
-    pub temperature_c: Celsius,
+    /// Temperature of the oil entering the contact, °C: η₀ and α are taken here; required
+    /// unless the lubricant's viscosity is a constant.
+    #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 40.0)]
+    pub temperature_c: Option<Celsius>,
     /// Present for a line contact of cylinders with axes along y (as in the Hertz room).
     pub line: Option<LineSpec>,
     /// Surface roughness, for the film parameter Λ = h_min/√(σ₁² + σ₂²).
@@ -161,6 +162,11 @@ impl Validate for EhlFilmInput {
             .parse("/lubricant")
             .map_err(|mut e| errors.append(&mut e))
             .ok();
+        let temperature = lubricant.as_ref().and_then(|l| {
+            validity::operating_temperature(l, self.temperature_c)
+                .map_err(|e| errors.push(e))
+                .ok()
+        });
         let pressure_law = lubricant.as_ref().and_then(|l| l.pressure_law);
         if lubricant.is_some() && pressure_law.is_none() {
             errors.push(FieldError::new(
@@ -184,20 +190,28 @@ impl Validate for EhlFilmInput {
                 refusal.message(),
             ));
         }
-        match (errors.is_empty(), hertz, lubricant, pressure_law) {
-            (true, Some(hertz), Some(lubricant), Some(pressure_law)) => Ok(FilmCase {
-                contact: hertz,
-                load_n: self.load_n.get(),
-                line_length_m: self.line.map(|l| l.length_m.get()),
-                speed_m_s: speed,
-                lubricant,
-                pressure_law,
-                temperature_c: self.temperature_c.get(),
-                composite_roughness_m,
-                slide_roll_ratio,
-                meniscus_m,
-                effects,
-            }),
+        match (
+            errors.is_empty(),
+            hertz,
+            lubricant,
+            pressure_law,
+            temperature,
+        ) {
+            (true, Some(hertz), Some(lubricant), Some(pressure_law), Some(temperature_c)) => {
+                Ok(FilmCase {
+                    contact: hertz,
+                    load_n: self.load_n.get(),
+                    line_length_m: self.line.map(|l| l.length_m.get()),
+                    speed_m_s: speed,
+                    lubricant,
+                    pressure_law,
+                    temperature_c,
+                    composite_roughness_m,
+                    slide_roll_ratio,
+                    meniscus_m,
+                    effects,
+                })
+            }
             _ => Err(errors),
         }
     }

@@ -28,7 +28,7 @@ use crate::calc::contact::hertz::{
     contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
 };
 use crate::calc::lubricant::model::PressureLaw;
-use crate::calc::lubricant::{Lubricant, LubricantSpec};
+use crate::calc::lubricant::{validity, Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
@@ -135,9 +135,10 @@ pub struct NumericalEhlInput {
     /// The lubricant; it needs a pressure–viscosity law (Barus α or Roelands Z) unless
     /// `effects.piezoviscosity` is `off`.
     pub lubricant: LubricantSpec,
-    /// Temperature of the oil entering the contact, °C (isothermal solution: η₀ is taken here).
-    #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
-    pub temperature_c: Celsius,
+    /// Temperature of the oil entering the contact, °C (isothermal solution: η₀ is taken here);
+    /// required unless the lubricant's viscosity is a constant.
+    #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 40.0)]
+    pub temperature_c: Option<Celsius>,
     /// Slide-to-roll ratio s = |u₁ − u₂|/ū, 0 … 2 (default 0); the sliding speed is sū.
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 2.0, example = 0.05)]
     pub slide_roll_ratio: Option<NonNegative>,
@@ -210,6 +211,11 @@ impl Validate for NumericalEhlInput {
             .parse("/lubricant")
             .map_err(|mut e| errors.append(&mut e))
             .ok();
+        let temperature = lubricant.as_ref().and_then(|l| {
+            validity::operating_temperature(l, self.temperature_c)
+                .map_err(|e| errors.push(e))
+                .ok()
+        });
         if let Some(l) = &lubricant {
             if l.pressure_law.is_none() && self.effects.piezoviscosity != Mode::Off {
                 errors.push(FieldError::new(
@@ -250,20 +256,22 @@ impl Validate for NumericalEhlInput {
         } else {
             point_grids(self.fidelity, &mut errors)
         };
-        match (errors.is_empty(), hertz, lubricant, grids) {
-            (true, Some(hertz), Some(lubricant), Some(grids)) => Ok(NumericalEhlCase {
-                hertz,
-                load_n: self.load_n.get(),
-                length_m: self.line.map(|l| l.length_m.get()),
-                speed_m_s: speed,
-                lubricant,
-                temperature_c: self.temperature_c.get(),
-                slide_roll_ratio,
-                traction: self.traction,
-                grids,
-                include_field: self.include_field,
-                effects: self.effects,
-            }),
+        match (errors.is_empty(), hertz, lubricant, grids, temperature) {
+            (true, Some(hertz), Some(lubricant), Some(grids), Some(temperature_c)) => {
+                Ok(NumericalEhlCase {
+                    hertz,
+                    load_n: self.load_n.get(),
+                    length_m: self.line.map(|l| l.length_m.get()),
+                    speed_m_s: speed,
+                    lubricant,
+                    temperature_c,
+                    slide_roll_ratio,
+                    traction: self.traction,
+                    grids,
+                    include_field: self.include_field,
+                    effects: self.effects,
+                })
+            }
             _ => Err(errors),
         }
     }
@@ -488,6 +496,7 @@ impl Calculation for Ehl {
         }
         ctx.report(hertz.report.clone());
         let eta0 = inlet_viscosity(&case.lubricant, case.temperature_c)?;
+        validity::warn_hot_oil(ctx, "the inlet oil", case.temperature_c);
         let ph = hertz.max_pressure_pa;
         let law = pressure_law(&case, eta0, ph, ctx)?;
         if let Some(PressureLaw::Barus { alpha_1_pa }) = law {
