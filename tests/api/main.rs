@@ -16,6 +16,7 @@
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
 
 mod admission;
+mod bounds;
 mod composite;
 mod contract;
 mod gas;

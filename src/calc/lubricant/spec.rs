@@ -284,13 +284,20 @@ impl LubricantSpec {
                 self.kinematic_viscosity_40c_mm2_s,
                 self.kinematic_viscosity_100c_mm2_s,
             ) {
-                (Some(n40), Some(n100)) if n100.get() < n40.get() && n40.get() <= 1e6 => Some(
+                (Some(n40), _) if n40.get() > 1e6 => {
+                    errors.push(FieldError::new(
+                        p("kinematic_viscosity_40c_mm2_s"),
+                        "must be at most 1e6 mm²/s",
+                    ));
+                    None
+                }
+                (Some(n40), Some(n100)) if n100.get() < n40.get() => Some(
                     TemperatureLaw::walther_through(40.0, n40.get(), 100.0, n100.get()),
                 ),
                 (Some(_), Some(_)) => {
                     errors.push(FieldError::new(
                         p("kinematic_viscosity_100c_mm2_s"),
-                        "must be below kinematic_viscosity_40c_mm2_s (and that at most 1e6)",
+                        "must be below kinematic_viscosity_40c_mm2_s",
                     ));
                     None
                 }

@@ -58,6 +58,12 @@ impl Validate for ViscosityIndexInput {
                 ),
             )]);
         }
+        if self.kinematic_viscosity_40c_mm2_s.is_some() && nu40 > 1e6 {
+            return Err(vec![FieldError::new(
+                "/kinematic_viscosity_40c_mm2_s",
+                format!("must be at most 1e6 mm²/s, got {nu40}"),
+            )]);
+        }
         if nu40.is_nan() || nu40 <= nu100 || !nu40.is_finite() || nu40 > 1e6 || nu100 > 1e5 {
             return Err(vec![FieldError::new(
                 at,

@@ -30,6 +30,9 @@ use crate::fidelity::Level;
 
 pub struct Analysis;
 
+/// The largest R_q a rolling surface may be given, m (finished raceways and balls are 0.02–0.3 µm).
+const MAX_RACE_RMS_M: f64 = 1e-5;
+
 /// RMS roughness of the ball and the two raceways.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -239,6 +242,20 @@ impl Validate for AnalysisInput {
                 "/inner_ring_speed_rpm",
                 "the rings must turn relative to each other",
             ));
+        }
+        if let Some(r) = &self.roughness {
+            for (v, field) in [
+                (r.ball_rms_m, "ball_rms_m"),
+                (r.inner_race_rms_m, "inner_race_rms_m"),
+                (r.outer_race_rms_m, "outer_race_rms_m"),
+            ] {
+                if v.get() > MAX_RACE_RMS_M {
+                    errors.push(FieldError::new(
+                        format!("/roughness/{field}"),
+                        format!("must be at most {MAX_RACE_RMS_M} m"),
+                    ));
+                }
+            }
         }
         let roller = self.bearing.get("roller_diameter_m").is_some();
         let bearing = std::mem::take(&mut self.bearing);

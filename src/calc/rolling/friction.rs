@@ -16,6 +16,11 @@ use crate::fidelity::Level;
 
 pub struct Friction;
 
+/// The seal factors Table 15.3 lists: f1 from 10 (full-complement cylindrical 2LS) to 20
+/// (deep-groove 2RS1 and most others), f2 from 10 to 50 N·mm.
+const SEAL_F1: (f64, f64) = (10.0, 20.0);
+const SEAL_F2: (f64, f64) = (10.0, 50.0);
+
 /// Two rubbing seals' factors (Khonsari & Booser Table 15.3).
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -77,10 +82,12 @@ impl Validate for FrictionInput {
     fn validate(self) -> Result<FrictionCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let (d, outer) = (self.bore_diameter_m.get(), self.outside_diameter_m.get());
-        if outer <= d || outer > 20.0 || d > 10.0 {
+        if d > 10.0 {
+            errors.push(FieldError::new("/bore_diameter_m", "must be at most 10 m"));
+        } else if outer <= d || outer > 20.0 {
             errors.push(FieldError::new(
                 "/outside_diameter_m",
-                "must exceed the bore (bore ≤ 10 m, outside ≤ 20 m)",
+                "must exceed the bore and be at most 20 m",
             ));
         }
         if !(0.0..=0.1).contains(&self.friction_coefficient) {
@@ -112,11 +119,11 @@ impl Validate for FrictionInput {
             ));
         }
         if let Some(s) = self.seals {
-            if s.f1.get() > 1000.0 || s.f2.get() > 1e6 {
-                errors.push(FieldError::new(
-                    "/seals",
-                    "f1 must be at most 1000 and f2 at most 1e6 N·mm",
-                ));
+            if !(0.1..=1000.0).contains(&s.f1.get()) {
+                errors.push(FieldError::new("/seals/f1", "must be within [0.1, 1000]"));
+            }
+            if s.f2.get() > 1e6 {
+                errors.push(FieldError::new("/seals/f2", "must be at most 1e6 N·mm"));
             }
         }
         if !errors.is_empty() {
@@ -166,7 +173,15 @@ impl Calculation for Friction {
     type Input = FrictionInput;
     type Output = FrictionOutput;
 
-    fn run(c: FrictionCase, _ctx: &mut Context) -> Result<FrictionOutput, CalcError> {
+    fn run(c: FrictionCase, ctx: &mut Context) -> Result<FrictionOutput, CalcError> {
+        if let Some((f1, f2)) = c.seals {
+            if !(SEAL_F1.0..=SEAL_F1.1).contains(&f1) || !(SEAL_F2.0..=SEAL_F2.1).contains(&f2) {
+                ctx.warn(
+                    "seal_factors_outside_catalogue",
+                    format!("f1 = {f1}, f2 = {f2} N·mm lie outside Table 15.3's seal factors (f1 {}–{}, f2 {}–{} N·mm, Khonsari & Booser): the seal torque ((d + D)/f1)² + f2 is extrapolated", SEAL_F1.0, SEAL_F1.1, SEAL_F2.0, SEAL_F2.1),
+                );
+            }
+        }
         let d_m = 0.5 * (c.d_mm + c.outer_mm);
         let nu_n = c.nu * c.speed_rpm;
         let m_p = 0.5 * c.mu * c.load_n * c.d_mm;
@@ -196,7 +211,9 @@ mod tests {
     use serde_json::json;
 
     use super::*;
-    use crate::calc::testing::{assert_rel, invalid_pointers, ok, result_field as get};
+    use crate::calc::testing::{
+        assert_rel, invalid_pointers, ok, result_field as get, warning_codes,
+    };
 
     /// Khonsari & Booser Ex 15.2 (spec FE-2, recomputed): 7220 jet-lubricated, d = 100,
     /// D = 180 mm, 10 000 rpm, F_a = 26 700 N, ν = 6 mm²/s, μ = 0.002, f_L = 6.6:
@@ -247,11 +264,44 @@ mod tests {
             1e-12,
             "M_S",
         );
+        assert!(warning_codes(&ok::<Friction>(&sealed)).is_empty());
         let mut bad = base.clone();
         bad["outside_diameter_m"] = json!(0.04);
         assert_eq!(
             invalid_pointers::<Friction>(&bad),
             vec!["/outside_diameter_m"]
         );
+    }
+
+    /// Issue 12, item 4: f1 = 0.05 was accepted under a schema minimum of 0.1, and f1 = 0.1
+    /// (7.8 kN·m here) came back without a word. Each factor is refused at its own pointer;
+    /// factors outside Table 15.3's (f1 10–20, f2 10–50 N·mm) warn.
+    #[test]
+    fn seal_factors_follow_the_schema_and_the_catalogue() {
+        let with = |f1: f64, f2: f64| {
+            json!({"bore_diameter_m": 0.05, "outside_diameter_m": 0.09, "speed_rpm": 1500,
+                "equivalent_load_n": 1000, "friction_coefficient": 0.0015, "lubrication_factor": 2.0,
+                "operating_viscosity_mm2_s": 30, "seals": {"f1": f1, "f2": f2}})
+        };
+        assert_eq!(
+            invalid_pointers::<Friction>(&with(0.05, 10.0)),
+            vec!["/seals/f1"]
+        );
+        assert_eq!(
+            invalid_pointers::<Friction>(&with(1001.0, 10.0)),
+            vec!["/seals/f1"]
+        );
+        assert_eq!(
+            invalid_pointers::<Friction>(&with(20.0, 2e6)),
+            vec!["/seals/f2"]
+        );
+        for (f1, f2, warns) in [(0.1, 10.0, true), (10.0, 50.0, false), (20.0, 60.0, true)] {
+            let codes = warning_codes(&ok::<Friction>(&with(f1, f2)));
+            assert_eq!(
+                codes.contains(&"seal_factors_outside_catalogue".to_owned()),
+                warns,
+                "f1 {f1}, f2 {f2}: {codes:?}"
+            );
+        }
     }
 }
