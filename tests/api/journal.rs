@@ -659,3 +659,44 @@ fn thermal_runaway_blames_the_speed_in_words() {
         }
     }
 }
+
+/// The README bearing from 1 N to 2e7 N (issue 12, item 1: at 5e6–2e7 N the root search
+/// "converged" on ε's saturation and gave T_eff ≠ T_in + ΔT, and from 5e5 N the THD maximum
+/// lay below the effective temperature). Every 200 keeps the heat balance T_eff = T_in + ΔT and
+/// a maximum at or above the mean; a load the film cannot carry is a 422 at /load_n that names
+/// the largest load it can (and one too light to resolve says so).
+#[test]
+fn the_heat_balance_holds_over_ten_decades_of_load() {
+    let mut carried = 0;
+    for i in 0..=29 {
+        let load = 10f64.powf(f64::from(i) / 4.0) * 2.0;
+        let body = json!({"geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": load, "inlet_temperature_c": 40,
+            "dynamics": false, "fidelity": "fast"});
+        match run(&body) {
+            Ok(v) => {
+                let r = &v["result"];
+                let eff = r["effective_temperature_c"].as_f64().unwrap();
+                let rise = r["temperature_rise_k"].as_f64().unwrap();
+                assert!(
+                    (eff - (40.0 + rise)).abs() < 1e-6 * eff,
+                    "{load} N: T_eff {eff} against T_in + ΔT {}",
+                    40.0 + rise
+                );
+                if let Some(max) = r["max_temperature_c"].as_f64() {
+                    assert!(max >= eff, "{load} N: T_max {max} below T_eff {eff}");
+                }
+                carried += 1;
+            }
+            Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+                assert_eq!(pointer, "/load_n", "{load} N: {message}");
+                assert!(
+                    message.contains("carries at most") || message.contains("too light"),
+                    "{load} N: {message}"
+                );
+            }
+            Err(other) => panic!("{load} N: {other:?}"),
+        }
+    }
+    assert!(carried >= 20, "{carried} of 30 loads carried");
+}

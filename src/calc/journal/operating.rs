@@ -403,6 +403,17 @@ pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
         None
     };
     let mut solution = outputs(case, &op, rise, thd, reynolds);
+    if let Some(t) = solution
+        .bush_temperatures
+        .filter(|t| t.max_c < solution.effective_temperature_c)
+    {
+        // Outside its range the fit can put the hottest oil below the mean: no answer at all.
+        notes.warn(
+            "thd_temperatures_withheld",
+            format!("Jang–Khonsari's fit, outside its range here, puts the maximum bush temperature at {:.1} °C, below the effective {:.1} °C of the heat balance: the THD maximum and shaft temperatures are not reported", t.max_c, solution.effective_temperature_c),
+        );
+        solution.bush_temperatures = None;
+    }
     let hottest = solution
         .bush_temperatures
         .map_or(solution.effective_temperature_c, |t| {
