@@ -340,7 +340,12 @@ impl Validate for AnalysisInput {
         }
         let life = self.life_input(roller, outer_rpm, pitch_m, nu, &mut errors);
         let life = if errors.is_empty() && nu.is_finite() {
-            life.map(|input| input.validate().map_err(life_pointers))
+            let equivalent_given = self.equivalent_load_n.is_some();
+            life.map(|input| {
+                input
+                    .validate()
+                    .map_err(|e| life_pointers(e, equivalent_given))
+            })
         } else {
             None
         };
@@ -479,12 +484,14 @@ impl AnalysisInput {
     }
 }
 
-/// The life step's pointers, moved onto the fields of this request they come from.
-fn life_pointers(errors: Vec<FieldError>) -> Vec<FieldError> {
+/// The life step's pointers, moved onto the fields of this request they come from (P is the
+/// request's `equivalent_load_n` where given, else built from `radial_load_n`).
+fn life_pointers(errors: Vec<FieldError>, equivalent_given: bool) -> Vec<FieldError> {
     errors
         .into_iter()
         .map(|e| {
             let pointer = match e.pointer.as_str() {
+                "/equivalent_load_n" if !equivalent_given => "/radial_load_n".to_owned(),
                 "/speed_rpm" => "/inner_ring_speed_rpm".to_owned(),
                 "/pitch_diameter_m" => "/bearing/pitch_diameter_m".to_owned(),
                 "/operating_viscosity_mm2_s" | "/kappa" => "/lubricant".to_owned(),
@@ -827,7 +834,7 @@ impl Calculation for Analysis {
         // The sign of a contact angle says only which groove shoulder the ball leans on; the
         // kinematics and the raceway radii take its magnitude (a symmetric solve can leave a
         // round-off −0).
-        let alpha_deg = most_loaded.contact_angle_deg.abs();
+        let alpha_deg = contact_angle_magnitude(most_loaded.contact_angle_deg);
         let alpha = alpha_deg.to_radians();
         let q_max = load_distribution.max_ball_load_n;
         // With the centrifugal ball loads the outer contacts carry more, at their own angle:
@@ -837,7 +844,9 @@ impl Calculation for Analysis {
             .iter()
             .filter_map(|b| Some((b.outer_load_n?, b.outer_contact_angle_deg?)))
             .max_by(|a, b| a.0.total_cmp(&b.0))
-            .map_or((q_max, alpha), |(q, a)| (q, a.abs().to_radians()));
+            .map_or((q_max, alpha), |(q, a)| {
+                (q, contact_angle_magnitude(a).to_radians())
+            });
 
         let kinematics_case = ContactAngle::try_from(alpha_deg)
             .map_err(|m| vec![FieldError::new("/contact_angle_deg", m)])
@@ -922,6 +931,18 @@ impl Calculation for Analysis {
             speed_dn_mm_rpm: limits.0,
             pitch_dn_mm_rpm: limits.1,
         })
+    }
+}
+
+/// A contact angle's magnitude within [0°, 90°]: the load distribution's angle is the line of
+/// contact's direction, so −0° can come back as 180° (seen at 1e6 rev/min, where the inner
+/// contact unloads) and 95° is the line 85° the other way.
+fn contact_angle_magnitude(deg: f64) -> f64 {
+    let a = deg.abs() % 180.0;
+    if a > 90.0 {
+        180.0 - a
+    } else {
+        a
     }
 }
 

@@ -4,6 +4,7 @@
 use super::*;
 use crate::calc::rolling::load_distribution::LoadDistribution;
 use crate::calc::testing::{invalid_pointers, ok, warning_codes as codes};
+use crate::calc::Failure;
 use serde_json::json;
 
 fn example() -> Value {
@@ -255,4 +256,45 @@ fn invalid_steps_name_their_fields() {
     assert!(invalid_pointers::<Analysis>(&typo)
         .iter()
         .any(|p| p == "/lubricant/viscosty_pa_s"));
+}
+
+/// Issue 12, item 7: every 422 of the chain points into this request. At 1e6 rev/min the load
+/// distribution's inner contact angle came back as 180° (a −0° line), which the kinematics step
+/// refused with an empty pointer; the film step now refuses the speed itself. A radial load
+/// below C/1e6 was refused at the life step's `/equivalent_load_n`, a field this request did
+/// not send.
+#[test]
+fn chained_refusals_point_at_this_requests_fields() {
+    let pointer = |r: &Value| match crate::calc::testing::post::<Analysis>(r) {
+        Err(Failure::Invalid(errors)) => errors[0].pointer.clone(),
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => pointer,
+        other => panic!("{r}: expected 422, got {other:?}"),
+    };
+    for rpm in [1e6, -1e6] {
+        let mut r = example();
+        r["inner_ring_speed_rpm"] = json!(rpm);
+        assert_eq!(pointer(&r), "/inner_ring_speed_rpm", "{rpm} rev/min");
+    }
+    let mut r = example();
+    r["radial_load_n"] = json!(1e-3);
+    assert_eq!(pointer(&r), "/radial_load_n");
+    r["equivalent_load_n"] = json!(1e-3);
+    assert_eq!(pointer(&r), "/equivalent_load_n");
+}
+
+#[test]
+fn contact_angles_fold_onto_a_quarter_turn() {
+    for (given, folded) in [
+        (0.0, 0.0),
+        (-0.0, 0.0),
+        (40.0, 40.0),
+        (-40.0, 40.0),
+        (179.999_999_999_963, 3.7e-11),
+        (140.0, 40.0),
+        (220.0, 40.0),
+        (90.0, 90.0),
+    ] {
+        let got = contact_angle_magnitude(given);
+        assert!((got - folded).abs() < 1e-9, "{given}: {got}");
+    }
 }
