@@ -95,7 +95,11 @@ pub fn router_with(state: AppState, calculations: &'static [Entry]) -> Router {
                 .and_then(|v| v.to_str().ok())
                 .unwrap_or("-");
             tracing::info_span!("request", id = %id, method = %req.method(), uri = %req.uri())
-        }))
+        })
+        // `observe` writes the one access line per request; the layer's own response and
+        // failure events (a 503 or 504 at ERROR) are off.
+        .on_response(())
+        .on_failure(()))
         .layer(PropagateRequestIdLayer::x_request_id())
         .layer(middleware::from_fn_with_state(state.clone(), observe))
         .layer(CatchPanicLayer::custom(|_| {
@@ -137,7 +141,18 @@ impl MakeRequestId for Counter {
 #[derive(Debug, Clone, Copy)]
 pub struct SolverSeconds(pub f64);
 
-/// Count every response, time it, and log the internal cause of any 500.
+/// How loudly a response is logged: a 500 is ours to fix (error); a shed 503 or a deadline 504
+/// is the service protecting itself under load (warn); everything else is an access line (info).
+fn access_level(status: StatusCode) -> tracing::Level {
+    match status.as_u16() {
+        503 | 504 => tracing::Level::WARN,
+        s if s >= 500 => tracing::Level::ERROR,
+        _ => tracing::Level::INFO,
+    }
+}
+
+/// Count every response, time it, and log one access line for it (inside the request's span,
+/// which carries the request id, method and URI), with the internal cause of any 500.
 async fn observe(State(state): State<AppState>, req: Request, next: Next) -> Response {
     let route = req
         .extensions()
@@ -146,12 +161,23 @@ async fn observe(State(state): State<AppState>, req: Request, next: Next) -> Res
     let started = Instant::now();
     let res = next.run(req).await;
     let status = res.status();
-    if status == StatusCode::INTERNAL_SERVER_ERROR {
-        let cause = res
-            .extensions()
-            .get::<InternalCause>()
-            .map_or("panic or unknown", |c| c.0.as_str());
-        tracing::error!(route = %route, cause = %cause, "internal error");
+    let elapsed_ms = started.elapsed().as_secs_f64() * 1e3;
+    let cause = res
+        .extensions()
+        .get::<InternalCause>()
+        .map(|c| c.0.as_str());
+    match access_level(status) {
+        tracing::Level::ERROR => tracing::error!(
+            route = %route,
+            status = status.as_u16(),
+            elapsed_ms,
+            cause = cause.unwrap_or("panic or unknown"),
+            "internal error"
+        ),
+        tracing::Level::WARN => {
+            tracing::warn!(route = %route, status = status.as_u16(), elapsed_ms, "refused under load")
+        }
+        _ => tracing::info!(route = %route, status = status.as_u16(), elapsed_ms, "served"),
     }
     let solver = res.extensions().get::<SolverSeconds>().map(|s| s.0);
     state.metrics.record(
@@ -161,4 +187,27 @@ async fn observe(State(state): State<AppState>, req: Request, next: Next) -> Res
         solver,
     );
     res
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn load_refusals_warn_and_only_our_faults_are_errors() {
+        for (status, level) in [
+            (200, tracing::Level::INFO),
+            (400, tracing::Level::INFO),
+            (422, tracing::Level::INFO),
+            (500, tracing::Level::ERROR),
+            (503, tracing::Level::WARN),
+            (504, tracing::Level::WARN),
+        ] {
+            assert_eq!(
+                access_level(StatusCode::from_u16(status).unwrap()),
+                level,
+                "{status}"
+            );
+        }
+    }
 }

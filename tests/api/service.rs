@@ -138,3 +138,65 @@ async fn the_docs_ui_is_served_from_the_binary() {
         );
     }
 }
+
+/// The released binary logs one access line per request at the default level, plain text when
+/// its stderr is not a terminal (issue 12, item 15: nothing was logged for a 200 or a 4xx, and
+/// file logs carried ANSI colour codes).
+#[test]
+fn the_server_logs_one_plain_access_line_per_request() {
+    use std::io::{Read, Write};
+    let port = std::net::TcpListener::bind("127.0.0.1:0")
+        .unwrap()
+        .local_addr()
+        .unwrap()
+        .port();
+    let log = std::env::temp_dir().join(format!("stribeck-access-{port}.log"));
+    let mut server = std::process::Command::new(env!("CARGO_BIN_EXE_stribeck"))
+        .arg("serve")
+        .env("STRIBECK_ADDR", format!("127.0.0.1:{port}"))
+        .env_remove("RUST_LOG")
+        .stderr(std::fs::File::create(&log).unwrap())
+        .spawn()
+        .unwrap();
+    let send = |request: &str| -> Option<String> {
+        let mut stream = std::net::TcpStream::connect(("127.0.0.1", port)).ok()?;
+        stream.write_all(request.as_bytes()).ok()?;
+        let mut reply = String::new();
+        stream.read_to_string(&mut reply).ok()?;
+        Some(reply)
+    };
+    let health = "GET /health HTTP/1.1\r\nhost: x\r\nconnection: close\r\n\r\n";
+    let mut up = None;
+    for _ in 0..100 {
+        up = send(health);
+        if up.is_some() {
+            break;
+        }
+        std::thread::sleep(std::time::Duration::from_millis(50));
+    }
+    assert!(up.unwrap().starts_with("HTTP/1.1 200"));
+    let body = "{}";
+    let bad = send(&format!("POST /v1/contacts/hertz HTTP/1.1\r\nhost: x\r\ncontent-type: application/json\r\ncontent-length: {}\r\nconnection: close\r\n\r\n{body}", body.len())).unwrap();
+    assert!(bad.starts_with("HTTP/1.1 422"), "{bad}");
+    server.kill().unwrap();
+    server.wait().unwrap();
+    let text = std::fs::read_to_string(&log).unwrap();
+    let _ = std::fs::remove_file(&log);
+    assert!(
+        !text.contains('\u{1b}'),
+        "colour codes in a file log:\n{text}"
+    );
+    let served: Vec<&str> = text.lines().filter(|l| l.contains("served")).collect();
+    assert!(
+        served
+            .iter()
+            .any(|l| l.contains("status=200") && l.contains("/health")),
+        "{text}"
+    );
+    assert!(
+        served.iter().any(|l| l.contains("status=422")
+            && l.contains("/v1/contacts/hertz")
+            && l.contains("id=")),
+        "{text}"
+    );
+}
