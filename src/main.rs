@@ -2,7 +2,8 @@
 //!
 //! - `stribeck` / `stribeck serve`: the HTTP service (configured by `STRIBECK_*`).
 //! - `stribeck run <path> < request.json`: one calculation, envelope on stdout, no server.
-//! - `stribeck openapi`: the OpenAPI document (what `openapi/openapi.json` holds).
+//! - `stribeck openapi [--version 3.0]`: the OpenAPI document (what `openapi/openapi.json`
+//!   holds; its 3.0 rendering `openapi/openapi-3.0.json`).
 
 use std::future::IntoFuture;
 use std::io::{Read, Write};
@@ -35,8 +36,14 @@ enum Command {
         /// The calculation's path, e.g. /v1/lubricants/viscosity.
         path: String,
     },
-    /// Print the OpenAPI document.
-    Openapi,
+    /// Print the OpenAPI document (`openapi/openapi.json`; with `--version 3.0`,
+    /// `openapi/openapi-3.0.json`).
+    Openapi {
+        /// The OpenAPI version to render: 3.1 (the served document) or 3.0 (for generators
+        /// that read only 3.0, such as progenitor).
+        #[arg(long, value_enum, default_value = "3.1")]
+        version: OpenapiVersion,
+    },
     /// List the calculations.
     List,
     /// Run every reference case below DIR and print the validation dossier (Markdown); exit 1
@@ -45,6 +52,15 @@ enum Command {
         #[arg(default_value = "tests/data")]
         dir: std::path::PathBuf,
     },
+}
+
+/// The OpenAPI versions `stribeck openapi` renders.
+#[derive(Clone, Copy, clap::ValueEnum)]
+enum OpenapiVersion {
+    #[value(name = "3.1")]
+    V31,
+    #[value(name = "3.0")]
+    V30,
 }
 
 fn main() -> ExitCode {
@@ -59,8 +75,11 @@ fn main() -> ExitCode {
     match cli.command.unwrap_or(Command::Serve) {
         Command::Serve => serve(config),
         Command::Run { path } => run_one(&path, &config),
-        Command::Openapi => {
-            emit(&http::openapi::document_json());
+        Command::Openapi { version } => {
+            emit(&match version {
+                OpenapiVersion::V31 => http::openapi::document_json(),
+                OpenapiVersion::V30 => http::openapi::document_30_json(),
+            });
             ExitCode::SUCCESS
         }
         Command::Validation { dir } => match stribeck::validation::report(&dir) {

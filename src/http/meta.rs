@@ -14,15 +14,31 @@ use super::{AppState, Problem};
 use crate::calc::REGISTRY;
 use crate::fidelity::Level;
 
+/// The answer of `GET /health`.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct HealthStatus {
+    /// Always `ok`: the process answers.
+    #[schema(example = "ok")]
+    pub status: &'static str,
+}
+
+/// The answer of `GET /ready` while the replica takes traffic.
+#[derive(Debug, Serialize, ToSchema)]
+pub struct ReadyStatus {
+    /// Always `ready`; once shutdown has begun the endpoint answers 503 instead.
+    #[schema(example = "ready")]
+    pub status: &'static str,
+}
+
 /// `GET /health`: the process is up.
-pub async fn health() -> Json<serde_json::Value> {
-    Json(serde_json::json!({ "status": "ok" }))
+pub async fn health() -> Json<HealthStatus> {
+    Json(HealthStatus { status: "ok" })
 }
 
 /// `GET /ready`: the replica takes traffic (503 once shutdown has begun).
 pub async fn ready(State(state): State<AppState>) -> Response {
     if state.ready.load(Ordering::Relaxed) {
-        Json(serde_json::json!({ "status": "ready" })).into_response()
+        Json(ReadyStatus { status: "ready" }).into_response()
     } else {
         Problem::new(
             StatusCode::SERVICE_UNAVAILABLE,

@@ -6,6 +6,7 @@ mod calculate;
 mod meta;
 pub mod metrics;
 pub mod openapi;
+pub mod openapi30;
 mod problem;
 
 use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};

@@ -10,6 +10,8 @@
 //! - `hydrostatic`: hydrostatic pads and design: examples, 422s naming the field, the optima.
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
+//! - `openapi_document`: what the OpenAPI document declares (tags, servers, headers, shared
+//!   components) and its 3.0 rendering.
 //! - `thrust`: thrust pads over their range: finite, conserving, balanced; errors that name the field.
 //! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
 //! - `whirl`: the whirl room's 422s, its README example, and finite answers over its range.
@@ -25,6 +27,7 @@ mod hydrostatic;
 mod journal;
 mod limits;
 mod lubricants;
+mod openapi_document;
 mod reference_cases;
 mod service;
 mod squeeze;
