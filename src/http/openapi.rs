@@ -188,7 +188,7 @@ fn deadline_parameter() -> Parameter {
         .name(DEADLINE_HEADER)
         .parameter_in(ParameterIn::Header)
         .required(Required::False)
-        .description(Some("Lower this request's deadline to this many milliseconds (0 counts as 1); it never raises the server's (`STRIBECK_DEADLINE_MS`, 10 000 ms by default). A calculation still running at the deadline is stopped and answered 504. A value that is not a whole number is ignored."))
+        .description(Some("Lower this request's deadline to this many milliseconds (0 counts as 1); it never raises the server's (`STRIBECK_DEADLINE_MS`, 10 000 ms by default). A calculation still running at the deadline is stopped and answered 504. A value that is not a whole number of milliseconds is a 400 naming the header."))
         .schema(Some(
             ObjectBuilder::new()
                 .schema_type(Type::Integer)
@@ -322,7 +322,7 @@ fn calculation_operation(entry: &Entry, input: &str, envelope_name: &str) -> Ope
         .parameter(request_id_parameter())
         .request_body(Some(body))
         .response("200", json_response("The result in its envelope.", schema_ref(envelope_name)))
-        .response("400", problem_response("The body is not JSON."))
+        .response("400", problem_response("The body is not JSON, or the deadline header is not a whole number of milliseconds."))
         .response("413", problem_response("The body exceeds the size limit."))
         .response("415", problem_response("The body is not sent as application/json."))
         .response("422", problem_response("Invalid input (each field named by a JSON pointer), a physically impossible case, or a solver that did not converge."))
