@@ -5,8 +5,8 @@
 //! converged film and Khonsari & Booser Table 7.2, and the squeezed journal's time against its
 //! converged quadrature. Writes `docs/accuracy.md`.
 //!
-//! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` or
-//! `STRIBECK_ACCURACY_SECTION=ehl-point` (or `orbit`) before it regenerates only that section.
+//! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` (or
+//! `ehl-line`, `ehl-point`, `orbit`) before it regenerates only that section.
 
 use std::fmt::Write;
 use std::time::Instant;
@@ -63,6 +63,8 @@ fn ehl_request(m: f64, l: f64, fidelity: &str) -> String {
     )
 }
 
+const EHL_LINE_HEADING: &str = "\n# Accuracy against time: numerical EHL line contact";
+
 /// The numerical EHL line contact: each level's films against a 2048-cell solve.
 fn ehl_line(out: &mut String) {
     let entry = stribeck::calc::find("/v1/contacts/ehl").expect("registered");
@@ -82,7 +84,8 @@ fn ehl_line(out: &mut String) {
         .iter()
         .map(|&(m, l)| films(&run(&ehl_request(m, l, r#"{"grid": [2048, 1]}"#))))
         .collect();
-    out.push_str("\n# Accuracy against time: numerical EHL line contact\n\n");
+    out.push_str(EHL_LINE_HEADING);
+    out.push_str("\n\n");
     out.push_str("Cases: Moes' L = 10 with M ∈ {20, 50, 200, 1000} (Barus, Dowson–Higginson density). Errors in the central and\n");
     out.push_str("minimum film against the same solver on 2048 cells (Richardson-extrapolated from 1024). `grid` is the finest\n");
     out.push_str("grid the level ended on (it refines on its own while its estimate exceeds 5 %, 1 % or 0.2 %); time is the median of 9 solves.\n\n");
@@ -360,10 +363,11 @@ fn regenerate(heading: &str, fill: fn(&mut String)) {
 }
 
 fn main() {
-    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-point`) regenerates only the gas-bearing (or the
-    // numerical EHL point-contact) section, in place.
+    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-line`, `ehl-point`, `orbit`) regenerates only the
+    // gas-bearing (or the numerical EHL line- or point-contact, or the orbit) section, in place.
     match std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() {
         Ok("gas") => return regenerate(GAS_HEADING, gas_bearings),
+        Ok("ehl-line") => return regenerate(EHL_LINE_HEADING, ehl_line),
         Ok("ehl-point") => return regenerate(EHL_POINT_HEADING, ehl_point),
         Ok("orbit") => return regenerate(ORBIT_HEADING, journal_orbits),
         _ => {}

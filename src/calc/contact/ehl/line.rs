@@ -23,11 +23,11 @@
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
-use faer::prelude::Solve;
-use faer::Mat;
+use nalgebra::DMatrix;
 
 use super::fluid::Fluid;
 use crate::fidelity::{IterationUnit, SolverReport};
+use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::half_space::line_log_influence;
 use crate::numerics::interpolate::linear;
@@ -299,12 +299,12 @@ impl LineProblem {
         state: &State,
         pressure: &[f64],
         cavitated: &[bool],
-    ) -> (Mat<f64>, Mat<f64>) {
+    ) -> (DMatrix<f64>, Vec<f64>) {
         let n = grid.nodes();
         let unknowns = n - 1; // interior nodes n − 2, plus H₀
         let h0_col = unknowns - 1;
-        let mut jacobian = Mat::<f64>::zeros(unknowns, unknowns);
-        let mut rhs = Mat::<f64>::zeros(unknowns, 1);
+        let mut jacobian = DMatrix::<f64>::zeros(unknowns, unknowns);
+        let mut rhs = vec![0.0; unknowns];
         // ∂ε_m/∂H_m (zero where the film is at its floor).
         let epsilon_per_film: Vec<f64> = (0..n)
             .map(|m| {
@@ -322,7 +322,7 @@ impl LineProblem {
             let row = i - 1;
             if cavitated[i] {
                 jacobian[(row, row)] = 1.0;
-                rhs[(row, 0)] = -pressure[i];
+                rhs[row] = -pressure[i];
                 continue;
             }
             let dx_e = grid.x[i + 1] - grid.x[i];
@@ -354,14 +354,11 @@ impl LineProblem {
                 local(m, -w * state.density_slope[m] * state.film[m]);
             }
             jacobian[(row, h0_col)] = coeffs.iter().map(|&(_, c)| c).sum();
-            rhs[(row, 0)] = -state.residual[i];
+            rhs[row] = -state.residual[i];
         }
         for k in 1..n - 1 {
-            let column = jacobian
-                .col_mut(k - 1)
-                .try_as_col_major_mut()
-                .expect("contiguous");
-            let column = column.as_slice_mut();
+            // Column-major storage: column k − 1 is contiguous.
+            let column = &mut jacobian.as_mut_slice()[(k - 1) * unknowns..k * unknowns];
             for i in 1..n - 1 {
                 if cavitated[i] {
                     continue;
@@ -376,7 +373,7 @@ impl LineProblem {
         for k in 1..n - 1 {
             jacobian[(h0_col, k - 1)] = grid.volume[k];
         }
-        rhs[(h0_col, 0)] = -state.load_error;
+        rhs[h0_col] = -state.load_error;
         (jacobian, rhs)
     }
 
@@ -441,7 +438,8 @@ struct Iterate {
 }
 
 /// The coupled Newton system on one grid: unknowns (P at the nodes, H₀); the direction by LU
-/// with partial pivoting of the dense Jacobian (faer: the deformation makes it dense and large).
+/// with partial pivoting of the dense Jacobian ([`dense::solve_large`]: the deformation makes it
+/// dense, and it has up to 2048 unknowns).
 struct LineNewton<'a> {
     problem: &'a LineProblem,
     grid: &'a Grid,
@@ -450,7 +448,7 @@ struct LineNewton<'a> {
 impl NewtonSystem for LineNewton<'_> {
     type Point = (Vec<f64>, f64);
     type Eval = Iterate;
-    type Step = Mat<f64>;
+    type Step = Vec<f64>;
 
     fn evaluate(&self, (pressure, h0): &(Vec<f64>, f64)) -> Iterate {
         let state = self.problem.state(self.grid, pressure, *h0);
@@ -462,22 +460,19 @@ impl NewtonSystem for LineNewton<'_> {
         at.merit
     }
 
-    fn direction(&self, (pressure, _): &(Vec<f64>, f64), at: &Iterate) -> Option<Mat<f64>> {
+    fn direction(&self, (pressure, _): &(Vec<f64>, f64), at: &Iterate) -> Option<Vec<f64>> {
         let cavitated = LineProblem::cavitated(&at.state, pressure);
         let (jacobian, rhs) = self
             .problem
             .newton_system(self.grid, &at.state, pressure, &cavitated);
-        let step = jacobian.partial_piv_lu().solve(&rhs);
-        (0..step.nrows())
-            .all(|r| step[(r, 0)].is_finite())
-            .then_some(step)
+        dense::solve_large(jacobian, &rhs)
     }
 
     /// The damped step, projected: P ≥ 0, and P = 0 at the two ends.
     fn advance(
         &self,
         (pressure, h0): &(Vec<f64>, f64),
-        step: &Mat<f64>,
+        step: &Vec<f64>,
         t: f64,
     ) -> (Vec<f64>, f64) {
         let n = pressure.len();
@@ -486,11 +481,11 @@ impl NewtonSystem for LineNewton<'_> {
                 if i == 0 || i == n - 1 {
                     0.0
                 } else {
-                    (pressure[i] + t * step[(i - 1, 0)]).max(0.0)
+                    (pressure[i] + t * step[i - 1]).max(0.0)
                 }
             })
             .collect();
-        (trial, h0 + t * step[(n - 2, 0)])
+        (trial, h0 + t * step[n - 2])
     }
 
     /// A trial point is taken when its scaled residual is strictly below the current one.
