@@ -827,7 +827,7 @@ impl Calculation for Analysis {
         let ball = case.bearing.element_diameter_m().get();
         let pitch = case.bearing.pitch_diameter_m().get();
         let most_loaded = load_distribution
-            .ball_loads
+            .element_loads
             .iter()
             .max_by(|a, b| a.load_n.total_cmp(&b.load_n))
             .ok_or_else(|| CalcError::Internal("no balls".into()))?;
@@ -836,11 +836,11 @@ impl Calculation for Analysis {
         // round-off −0).
         let alpha_deg = contact_angle_magnitude(most_loaded.contact_angle_deg);
         let alpha = alpha_deg.to_radians();
-        let q_max = load_distribution.max_ball_load_n;
+        let q_max = load_distribution.max_element_load_n;
         // With the centrifugal ball loads the outer contacts carry more, at their own angle:
         // the outer film sits at the ball with the largest outer load.
         let (q_outer, alpha_outer) = load_distribution
-            .ball_loads
+            .element_loads
             .iter()
             .filter_map(|b| Some((b.outer_load_n?, b.outer_contact_angle_deg?)))
             .max_by(|a, b| a.0.total_cmp(&b.0))

@@ -26,7 +26,9 @@ fn the_chain_is_its_rooms() {
         &json!({"bearing": example()["bearing"], "radial_load_n": 8900.0, "axial_load_n": 0.0}),
     );
     assert_eq!(r["static_capacity"], static_alone["result"]);
-    let q = r["load_distribution"]["max_ball_load_n"].as_f64().unwrap();
+    let q = r["load_distribution"]["max_element_load_n"]
+        .as_f64()
+        .unwrap();
     // The film's Hertz pressure at Q_max equals the load distribution's inner contact.
     let p_film = r["inner_film"]["max_hertz_pressure_pa"].as_f64().unwrap();
     let p_ld = r["load_distribution"]["inner_contact"]["max_pressure_pa"]
@@ -61,7 +63,7 @@ fn at_speed_the_outer_film_carries_the_centrifugal_force() {
     assert_eq!(v["effects"]["centrifugal"]["applied"], true);
     let ld = &v["result"]["load_distribution"];
     let q_o = ld["max_outer_ball_load_n"].as_f64().unwrap();
-    assert!(q_o > ld["max_ball_load_n"].as_f64().unwrap());
+    assert!(q_o > ld["max_element_load_n"].as_f64().unwrap());
     // The film's Hertz pressure at the outer raceway is the load distribution's.
     let p_film = v["result"]["outer_film"]["max_hertz_pressure_pa"]
         .as_f64()
@@ -190,7 +192,7 @@ fn hamrock_a_r2_roller_chain() {
             .as_f64()
             .unwrap()
     };
-    let q = res["load_distribution"]["max_ball_load_n"]
+    let q = res["load_distribution"]["max_element_load_n"]
         .as_f64()
         .unwrap();
     let s = (q / 4800.0).powf(-0.073);

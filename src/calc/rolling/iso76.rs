@@ -157,7 +157,7 @@ pub struct StaticRating {
     /// The conformities rated at (ball bearings).
     pub rating_conformities: Option<[f64; 2]>,
     /// Q₀, N.
-    pub ball_load_at_rating_pressure_n: f64,
+    pub element_load_at_rating_pressure_n: f64,
     pub governing_raceway: Raceway,
     /// C0, N.
     pub basic_static_load_rating_n: f64,
@@ -225,7 +225,7 @@ pub fn rate(case: &StaticCapacityCase) -> Result<StaticRating, CalcError> {
         rating_conformities: roller
             .is_none()
             .then_some([case.conformity.0, case.conformity.1]),
-        ball_load_at_rating_pressure_n: q0,
+        element_load_at_rating_pressure_n: q0,
         governing_raceway: governing,
         basic_static_load_rating_n: c0,
         rating_used_n: rating,

@@ -349,9 +349,9 @@ impl Loading {
     }
 }
 
-/// One ball's share.
+/// One rolling element's share (a ball's or a roller's).
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct BallLoad {
+pub struct ElementLoad {
     /// Azimuth ψ_j = 360 j/Z, degrees, 0 … 360, measured from the radial load line.
     #[schema(minimum = 0.0, maximum = 360.0, example = 36.0)]
     pub azimuth_deg: f64,
@@ -425,9 +425,9 @@ impl RacewayContact {
 /// Result.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct LoadDistributionOutput {
-    /// Largest ball load Q_max, N.
+    /// Largest rolling-element (ball or roller) load Q_max, N.
     #[schema(example = 1380.0)]
-    pub max_ball_load_n: f64,
+    pub max_element_load_n: f64,
     /// Load-zone factor ε = δ(0)/[δ(0) − δ(π)], dimensionless, with δ(ψ) = A(ψ) − BD the signed
     /// (unclipped) contact deflection at azimuth ψ: the fraction of the pitch diameter along
     /// the load line over which the balls are loaded. In `fixed` mode this is the classic
@@ -440,14 +440,14 @@ pub struct LoadDistributionOutput {
     /// Load-zone half angle ψ_l, degrees, 0 … 180: the azimuth at which δ(ψ) = 0 on the
     /// continuous pitch circle (180: every ball loaded). It is the arc around ψ = 0; a ring
     /// under a tilting moment can also load a second arc about ψ = 180°, which
-    /// `loaded_ball_count` and `ball_loads` include and this angle does not.
+    /// `loaded_element_count` and `element_loads` include and this angle does not.
     #[schema(minimum = 0.0, maximum = 180.0, example = 83.0)]
     pub load_zone_half_angle_deg: f64,
-    /// Balls carrying load (Q_j > 0).
+    /// Rolling elements (balls or rollers) carrying load (Q_j > 0).
     #[schema(minimum = 1, example = 5)]
-    pub loaded_ball_count: u32,
-    /// Every ball, j = 0 … Z − 1.
-    pub ball_loads: Vec<BallLoad>,
+    pub loaded_element_count: u32,
+    /// Every rolling element, j = 0 … Z − 1.
+    pub element_loads: Vec<ElementLoad>,
     /// Radial displacement δ_r of the inner ring along the load line, m (from the concentric
     /// position).
     #[schema(example = 2.0e-5)]
@@ -510,6 +510,18 @@ pub struct LoadDistributionOutput {
     /// Outer raceway contact of the most loaded ball (with the centrifugal effect: of the ball
     /// with the largest outer load, at its outer contact angle).
     pub outer_contact: RacewayContact,
+    /// Deprecated: `max_element_load_n` under its name of release 0.1 (every element a ball).
+    /// Sent until the next release, then removed.
+    #[schema(deprecated, example = 1380.0)]
+    pub max_ball_load_n: f64,
+    /// Deprecated: `loaded_element_count` under its name of release 0.1. Sent until the next
+    /// release, then removed.
+    #[schema(deprecated, minimum = 1, example = 5)]
+    pub loaded_ball_count: u32,
+    /// Deprecated: `element_loads` under its name of release 0.1. Sent until the next release,
+    /// then removed.
+    #[schema(deprecated)]
+    pub ball_loads: Vec<ElementLoad>,
 }
 
 impl Calculation for LoadDistribution {
@@ -600,24 +612,26 @@ pub(super) fn solve(
                 * (std::f64::consts::TAU * j as f64 / z as f64).cos()
         })
         .sum();
+    let element_loads: Vec<ElementLoad> = eq
+        .balls
+        .iter()
+        .enumerate()
+        .map(|(j, b)| ElementLoad {
+            azimuth_deg: 360.0 * j as f64 / z as f64,
+            load_n: b.inner_load,
+            contact_angle_deg: b.inner_angle.to_degrees(),
+            outer_load_n: free.then_some(b.outer_load),
+            outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
+            gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
+        })
+        .collect();
+    let loaded = eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32;
     Ok(LoadDistributionOutput {
-        max_ball_load_n: inner_max.0,
+        max_element_load_n: inner_max.0,
         load_zone_factor: eq.load_zone_factor,
         load_zone_half_angle_deg: eq.half_angle.to_degrees(),
-        loaded_ball_count: eq.balls.iter().filter(|b| b.inner_load > 0.0).count() as u32,
-        ball_loads: eq
-            .balls
-            .iter()
-            .enumerate()
-            .map(|(j, b)| BallLoad {
-                azimuth_deg: 360.0 * j as f64 / z as f64,
-                load_n: b.inner_load,
-                contact_angle_deg: b.inner_angle.to_degrees(),
-                outer_load_n: free.then_some(b.outer_load),
-                outer_contact_angle_deg: free.then(|| b.outer_angle.to_degrees()),
-                gyroscopic_friction_n: eq.gyroscopic.then_some(b.friction_n),
-            })
-            .collect(),
+        loaded_element_count: loaded,
+        element_loads: element_loads.clone(),
         radial_displacement_m: eq.displacement[0],
         axial_displacement_m: eq.displacement[1],
         free_contact_angle_deg: alpha_f.to_degrees(),
@@ -637,6 +651,9 @@ pub(super) fn solve(
         }),
         inner_contact: RacewayContact::of(&inner)?,
         outer_contact: RacewayContact::of(&outer)?,
+        max_ball_load_n: inner_max.0,
+        loaded_ball_count: loaded,
+        ball_loads: element_loads,
     })
 }
 
@@ -708,24 +725,26 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
     } else {
         0.0
     };
+    let element_loads: Vec<ElementLoad> = eq
+        .loads
+        .iter()
+        .enumerate()
+        .map(|(j, &q)| ElementLoad {
+            azimuth_deg: 360.0 * j as f64 / z as f64,
+            load_n: q,
+            contact_angle_deg: 0.0,
+            outer_load_n: None,
+            outer_contact_angle_deg: None,
+            gyroscopic_friction_n: None,
+        })
+        .collect();
+    let loaded = eq.loads.iter().filter(|&&q| q > 0.0).count() as u32;
     Ok(LoadDistributionOutput {
-        max_ball_load_n: q_max,
+        max_element_load_n: q_max,
         load_zone_factor: (d_r > 0.0).then(|| (d_r - half) / (2.0 * d_r)),
         load_zone_half_angle_deg: half_angle.to_degrees(),
-        loaded_ball_count: eq.loads.iter().filter(|&&q| q > 0.0).count() as u32,
-        ball_loads: eq
-            .loads
-            .iter()
-            .enumerate()
-            .map(|(j, &q)| BallLoad {
-                azimuth_deg: 360.0 * j as f64 / z as f64,
-                load_n: q,
-                contact_angle_deg: 0.0,
-                outer_load_n: None,
-                outer_contact_angle_deg: None,
-                gyroscopic_friction_n: None,
-            })
-            .collect(),
+        loaded_element_count: loaded,
+        element_loads: element_loads.clone(),
         radial_displacement_m: d_r,
         axial_displacement_m: 0.0,
         free_contact_angle_deg: 0.0,
@@ -740,6 +759,9 @@ fn roller_run(case: RollerCase, ctx: &mut Context) -> Result<LoadDistributionOut
         max_gyroscopic_friction_n: None,
         inner_contact: inner,
         outer_contact: outer,
+        max_ball_load_n: q_max,
+        loaded_ball_count: loaded,
+        ball_loads: element_loads,
     })
 }
 

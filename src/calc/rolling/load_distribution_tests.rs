@@ -55,7 +55,7 @@ fn request(bearing: Value, f_r: f64, f_a: f64, mode: &str) -> Value {
 
 /// Σ Q cos α cos ψ and Σ Q sin α from the reported ball loads.
 fn resultant(v: &Value) -> (f64, f64) {
-    let balls = v["result"]["ball_loads"].as_array().unwrap();
+    let balls = v["result"]["element_loads"].as_array().unwrap();
     balls.iter().fold((0.0, 0.0), |(r, a), b| {
         let q = b["load_n"].as_f64().unwrap();
         let alpha = b["contact_angle_deg"].as_f64().unwrap().to_radians();
@@ -65,7 +65,7 @@ fn resultant(v: &Value) -> (f64, f64) {
 }
 
 fn loads(v: &Value) -> Vec<f64> {
-    v["result"]["ball_loads"]
+    v["result"]["element_loads"]
         .as_array()
         .unwrap()
         .iter()
@@ -91,7 +91,7 @@ fn zero_clearance_radial_load_gives_stribecks_constant() {
                 0.0,
                 mode,
             ));
-            let factor = get(&v, "/result/max_ball_load_n") * z as f64 / 5000.0;
+            let factor = get(&v, "/result/max_element_load_n") * z as f64 / 5000.0;
             assert!((factor - want).abs() < 6e-4, "Z {z} {mode}: {factor}");
             assert_rel(get(&v, "/result/load_zone_factor"), 0.5, 1e-12, "ε");
             assert_rel(
@@ -121,7 +121,7 @@ fn pure_axial_load_is_shared_equally() {
     assert!(fixed["result"].get("load_zone_factor").is_none());
     assert_eq!(get(&fixed, "/result/load_zone_half_angle_deg"), 180.0);
     let varying = ok(&request(b, 0.0, 24000.0, "varying"));
-    let alpha = get(&varying, "/result/ball_loads/0/contact_angle_deg");
+    let alpha = get(&varying, "/result/element_loads/0/contact_angle_deg");
     assert!(
         alpha > 40.0,
         "the contact angle grows under thrust: {alpha}"
@@ -136,10 +136,10 @@ fn pure_axial_load_is_shared_equally() {
     }
     // A deep-groove bearing with clearance carries thrust at angles above its free angle.
     let v = ok(&request(bearing_6210(0.018), 0.0, 2000.0, "varying"));
-    let alpha = get(&v, "/result/ball_loads/3/contact_angle_deg");
+    let alpha = get(&v, "/result/element_loads/3/contact_angle_deg");
     assert!(alpha > get(&v, "/result/free_contact_angle_deg"));
     assert_rel(
-        get(&v, "/result/max_ball_load_n"),
+        get(&v, "/result/max_element_load_n"),
         2000.0 / (10.0 * alpha.to_radians().sin()),
         1e-12,
         "Q",
@@ -157,7 +157,7 @@ fn hamrock_deep_groove_example() {
     b["inner_groove_radius_m"] = json!(6.604e-3);
     b["outer_groove_radius_m"] = json!(6.604e-3);
     let v = ok(&request(b, 8900.0, 0.0, "varying"));
-    let q = get(&v, "/result/max_ball_load_n");
+    let q = get(&v, "/result/max_element_load_n");
     assert_rel(q, 4513.0, 3e-3, "F_max vs the handbook");
     assert_rel(q, 4522.6, 2e-4, "F_max, discrete sum");
     assert_rel(9.0 * q / 8900.0, 4.564, 3e-3, "Stribeck Z");
@@ -169,7 +169,7 @@ fn hamrock_deep_groove_example() {
         "β_f",
     );
     assert_rel(get(&v, "/result/end_play_m"), 1.739e-4, 2e-3, "P_e");
-    assert_eq!(get(&v, "/result/ball_loads/0/contact_angle_deg"), 0.0);
+    assert_eq!(get(&v, "/result/element_loads/0/contact_angle_deg"), 0.0);
     // δ = δ_i + δ_o at the most loaded ball: 5.438e-5 m printed (within 1 % exact).
     let approach =
         get(&v, "/result/inner_contact/approach_m") + get(&v, "/result/outer_contact/approach_m");
@@ -190,7 +190,7 @@ fn khonsari_6210_chain() {
     // checked here at the discrete equilibrium's Q_max under F_r = 3000 N.
     let v = ok(&request(bearing_6210(0.018), 3000.0, 0.0, "varying"));
     assert_rel(get(&v, "/result/end_play_m"), 0.1889e-3, 1e-3, "P_e");
-    let q = get(&v, "/result/max_ball_load_n");
+    let q = get(&v, "/result/max_element_load_n");
     // Between Stribeck's 4.37 F_r/Z (no clearance) and the classic design rule 5 F_r/Z.
     assert!(q > 4.37 * 300.0 && q < 5.0 * 300.0, "Q_max = {q}");
     let s = (q / 1500.0).cbrt();
@@ -221,7 +221,7 @@ fn bearing_7220() -> Value {
 #[test]
 fn khonsari_7220_combined_load() {
     let v = ok(&request(bearing_7220(), 20000.0, 24000.0, "fixed"));
-    assert_rel(get(&v, "/result/max_ball_load_n"), 6374.0, 5e-3, "Q_max");
+    assert_rel(get(&v, "/result/max_element_load_n"), 6374.0, 5e-3, "Q_max");
     assert_rel(get(&v, "/result/load_zone_factor"), 0.799, 5e-3, "ε");
     let q = loads(&v);
     for (j, want) in [5924.0, 4704.0, 3064.0, 1459.0, 315.0].iter().enumerate() {
@@ -242,10 +242,10 @@ fn khonsari_7220_combined_load() {
     // Varying angles: the radial displacement tilts the curvature-centre lines, below 40° on
     // the load line and above it opposite; at these small deflections Q_max moves by < 1 %.
     let varying = ok(&request(bearing_7220(), 20000.0, 24000.0, "varying"));
-    assert!(get(&varying, "/result/ball_loads/0/contact_angle_deg") < 40.0);
-    assert!(get(&varying, "/result/ball_loads/8/contact_angle_deg") > 40.0);
+    assert!(get(&varying, "/result/element_loads/0/contact_angle_deg") < 40.0);
+    assert!(get(&varying, "/result/element_loads/8/contact_angle_deg") > 40.0);
     assert_rel(
-        get(&varying, "/result/max_ball_load_n"),
+        get(&varying, "/result/max_element_load_n"),
         q[0],
         0.01,
         "varying Q_max",
@@ -257,14 +257,14 @@ fn a_preloaded_bearing_at_rest_loads_every_ball() {
     let v = ok(&request(bearing_6210(-0.01), 0.0, 0.0, "varying"));
     let q = loads(&v);
     assert!(q.iter().all(|&x| x > 0.0 && (x - q[0]).abs() < 1e-9 * q[0]));
-    assert_eq!(get(&v, "/result/loaded_ball_count"), 10.0);
+    assert_eq!(get(&v, "/result/loaded_element_count"), 10.0);
     assert_eq!(get(&v, "/result/radial_displacement_m"), 0.0);
     assert_eq!(get(&v, "/result/end_play_m"), 0.0);
     let k = get(&v, "/result/contact_stiffness_n_m1_5");
     assert_rel(q[0], k * 5e-6f64.powf(1.5), 1e-12, "Q = K (−P_d/2)^1.5");
     // Under load the preload keeps every ball loaded.
     let v = ok(&request(bearing_6210(-0.01), 500.0, 0.0, "varying"));
-    assert_eq!(get(&v, "/result/loaded_ball_count"), 10.0);
+    assert_eq!(get(&v, "/result/loaded_element_count"), 10.0);
     assert!(get(&v, "/result/load_zone_factor") > 1.0);
     assert_eq!(get(&v, "/result/load_zone_half_angle_deg"), 180.0);
 }
@@ -272,12 +272,12 @@ fn a_preloaded_bearing_at_rest_loads_every_ball() {
 #[test]
 fn a_light_radial_load_with_clearance_loads_one_ball() {
     let v = ok(&request(bearing_6210(0.018), 1.0, 0.0, "varying"));
-    assert_eq!(get(&v, "/result/loaded_ball_count"), 1.0);
-    assert_rel(get(&v, "/result/max_ball_load_n"), 1.0, 1e-9, "Q = F_r");
+    assert_eq!(get(&v, "/result/loaded_element_count"), 1.0);
+    assert_rel(get(&v, "/result/max_element_load_n"), 1.0, 1e-9, "Q = F_r");
     // Combined, in both modes: a heavy thrust with a light radial load loads every ball.
     for mode in ["varying", "fixed"] {
         let v = ok(&request(bearing_7220(), 100.0, 50000.0, mode));
-        assert_eq!(get(&v, "/result/loaded_ball_count"), 16.0, "{mode}");
+        assert_eq!(get(&v, "/result/loaded_element_count"), 16.0, "{mode}");
         assert!(get(&v, "/result/load_zone_factor") > 1.0);
     }
 }
@@ -479,7 +479,7 @@ proptest! {
         // The solver's load scale: max(|F|, Z Q₀); a preloaded bearing's ball loads bound Z Q₀.
         let scale = f_r.hypot(f_a).max(loads(&v).iter().sum::<f64>());
         prop_assert!((r - f_r).hypot(a - f_a) <= 1e-9 * scale, "{} {}: {} {}", f_r, f_a, r, a);
-        for p in ["/result/max_ball_load_n", "/result/radial_displacement_m", "/result/axial_displacement_m",
+        for p in ["/result/max_element_load_n", "/result/radial_displacement_m", "/result/axial_displacement_m",
                   "/result/load_zone_half_angle_deg", "/result/inner_contact/max_pressure_pa",
                   "/result/outer_contact/approach_m", "/solver/residual"] {
             prop_assert!(get(&v, p).is_finite(), "{}", p);
@@ -489,7 +489,7 @@ proptest! {
     #[test]
     fn max_ball_load_grows_with_radial_load(log_fr in 0.0f64..4.0, f_a in 0.0f64..2000.0, clearance_um in 0.0f64..30.0) {
         let f_r = 10f64.powf(log_fr);
-        let q = |f: f64| get(&ok(&request(bearing_6210(clearance_um * 1e-3), f, f_a, "varying")), "/result/max_ball_load_n");
+        let q = |f: f64| get(&ok(&request(bearing_6210(clearance_um * 1e-3), f, f_a, "varying")), "/result/max_element_load_n");
         prop_assert!(q(1.1 * f_r) > q(f_r));
     }
 
@@ -531,7 +531,7 @@ fn arm(v: &Value, b: &Value) -> f64 {
 /// Σ Q_j sin α_j ℜ cos ψ_j of a result.
 fn moment_of(v: &Value, b: &Value) -> f64 {
     let arm = arm(v, b);
-    v["result"]["ball_loads"]
+    v["result"]["element_loads"]
         .as_array()
         .unwrap()
         .iter()
@@ -619,7 +619,7 @@ fn at_speed(b: Value, f_r: f64, f_a: f64, rpm: f64, effects: Value) -> Value {
 /// τ = (−cos α_o, sin α_o); the largest residual over the balls.
 fn ball_imbalance(v: &Value) -> f64 {
     let f_c = get(v, "/result/centrifugal_force_n");
-    v["result"]["ball_loads"]
+    v["result"]["element_loads"]
         .as_array()
         .unwrap()
         .iter()
@@ -655,14 +655,14 @@ fn centrifugal_force_loads_the_outer_contacts() {
     let cos = get(&v, "/result/free_contact_angle_deg").to_radians().cos();
     let cage = 0.5 * (1.0 - 12.7 * cos / 70.0) * 20000.0 * std::f64::consts::TAU / 60.0;
     assert_rel(f_c, 0.5 * m * 0.07 * cage * cage, 1e-12, "F_c");
-    for x in v["result"]["ball_loads"].as_array().unwrap() {
+    for x in v["result"]["element_loads"].as_array().unwrap() {
         let (qi, qo) = (
             x["load_n"].as_f64().unwrap(),
             x["outer_load_n"].as_f64().unwrap(),
         );
         assert!((qo - qi - f_c).abs() <= 1e-9 * 3000.0, "{qi} {qo}");
     }
-    assert!(get(&v, "/result/max_outer_ball_load_n") > get(&v, "/result/max_ball_load_n"));
+    assert!(get(&v, "/result/max_outer_ball_load_n") > get(&v, "/result/max_element_load_n"));
     let (fr, fa) = resultant(&v);
     assert!((fr - 3000.0).hypot(fa) <= 1e-9 * 3000.0);
     assert!(ball_imbalance(&v) <= 1e-9 * 3000.0);
@@ -704,7 +704,7 @@ fn angular_contact_at_speed_parts_the_contact_angles() {
             "{effects}: {}",
             ball_imbalance(&v)
         );
-        for x in v["result"]["ball_loads"].as_array().unwrap() {
+        for x in v["result"]["element_loads"].as_array().unwrap() {
             let (ai, ao) = (
                 x["contact_angle_deg"].as_f64().unwrap(),
                 x["outer_contact_angle_deg"].as_f64().unwrap(),
@@ -859,14 +859,14 @@ proptest! {
         let mut scale = f_r.hypot(f_a).max(m.abs() / arm(&v, &b)).max(preload);
         if v["result"].get("centrifugal_force_n").is_some() {
             // At speed the forces in play are the outer contacts' (preload and F_c).
-            let outer: f64 = v["result"]["ball_loads"].as_array().unwrap().iter()
+            let outer: f64 = v["result"]["element_loads"].as_array().unwrap().iter()
                 .map(|x| x["outer_load_n"].as_f64().unwrap()).sum();
             scale = scale.max(outer);
             prop_assert!(ball_imbalance(&v) <= 1e-9 * scale, "{} vs {}", ball_imbalance(&v), scale);
         }
         prop_assert!((fr - f_r).hypot(fa - f_a) <= 1e-9 * scale, "{} {}: {} {}", f_r, f_a, fr, fa);
         prop_assert!((moment_of(&v, &b) - m).abs() <= 1e-9 * scale * arm(&v, &b));
-        for p in ["/result/max_ball_load_n", "/result/tilt_rad", "/result/load_zone_half_angle_deg",
+        for p in ["/result/max_element_load_n", "/result/tilt_rad", "/result/load_zone_half_angle_deg",
                   "/result/inner_contact/max_pressure_pa", "/result/outer_contact/approach_m", "/solver/residual"] {
             prop_assert!(get(&v, p).is_finite(), "{}", p);
         }
@@ -898,7 +898,7 @@ fn roller_stribeck_constants() {
             roller_bearing(10.0, 10.0, 80.0, z, 0.0),
             10000.0,
         ));
-        let q = get(&v, "/result/max_ball_load_n");
+        let q = get(&v, "/result/max_element_load_n");
         assert_rel(q * z as f64 / 10000.0, want, 5e-4, &format!("Z = {z}"));
     }
     // Hamrock A-R2: d_i = 64, d_o = 96 mm → d_m = 80, D = l = 16 mm, n = 9, E = 207.5 GPa.
@@ -906,7 +906,7 @@ fn roller_stribeck_constants() {
     b["rollers"] = json!({"elastic_modulus_pa": 2.075e11, "poisson_ratio": 0.3});
     b["rings"] = b["rollers"].clone();
     let v = ok(&roller_request(b, 10800.0));
-    let q = get(&v, "/result/max_ball_load_n");
+    let q = get(&v, "/result/max_element_load_n");
     // Nine rollers, odd, have no roller opposite the load line: the 10/9 law's discrete
     // constant is 4.11 here (derived), 2.8 % above the linear law's continuous 4.
     assert_rel(q, 4800.0, 0.03, "Hamrock's 4 F_r/n");
@@ -958,7 +958,7 @@ fn roller_stribeck_constants() {
 fn khonsari_209_roller_bearing() {
     let b = roller_bearing(10.0, 9.601, 65.0115, 14, 0.041);
     let v = ok(&roller_request(b, 6000.0));
-    let q = get(&v, "/result/max_ball_load_n");
+    let q = get(&v, "/result/max_element_load_n");
     // The clearance narrows the load zone: above Stribeck's 4.08 F_r/Z, and here (P_d
     // about 3 × the contact approach) above the design rule's 5 F_r/Z = 2143 N as well.
     assert!(q > 5.0 * 6000.0 / 14.0, "{q}");
@@ -1006,8 +1006,8 @@ fn roller_edge_cases_and_refusals() {
         roller_bearing(10.0, 10.0, 65.0, 14, 0.04),
         1.0,
     ));
-    assert_eq!(get(&v, "/result/loaded_ball_count"), 1.0);
-    assert_rel(get(&v, "/result/max_ball_load_n"), 1.0, 1e-9, "Q = F_r");
+    assert_eq!(get(&v, "/result/loaded_element_count"), 1.0);
+    assert_rel(get(&v, "/result/max_element_load_n"), 1.0, 1e-9, "Q = F_r");
     let v = ok(&roller_request(
         roller_bearing(10.0, 10.0, 65.0, 14, -0.01),
         0.0,
@@ -1086,8 +1086,8 @@ fn crowned_rollers() {
     ));
     let flat = ok(&roller_request(crowned(1e4), 10000.0));
     assert_rel(
-        get(&flat, "/result/max_ball_load_n"),
-        get(&straight, "/result/max_ball_load_n"),
+        get(&flat, "/result/max_element_load_n"),
+        get(&straight, "/result/max_element_load_n"),
         1e-3,
         "R → ∞",
     );
@@ -1108,7 +1108,7 @@ fn crowned_rollers() {
             > get(&straight, "/result/inner_contact/max_pressure_pa")
     );
     for v in [&light, &heavy, &crowned_10k] {
-        let f = get(v, "/result/ball_loads/0/load_n");
+        let f = get(v, "/result/element_loads/0/load_n");
         assert!(f > 0.0);
     }
     for (v, f) in [(&light, 50.0), (&heavy, 50000.0), (&crowned_10k, 10000.0)] {
@@ -1155,7 +1155,7 @@ fn denormal_inputs_stay_finite() {
         match post(&r) {
             Ok(v) => {
                 for p in [
-                    "/result/max_ball_load_n",
+                    "/result/max_element_load_n",
                     "/result/radial_displacement_m",
                     "/result/tilt_rad",
                     "/result/inner_contact/max_pressure_pa",
@@ -1172,5 +1172,35 @@ fn denormal_inputs_stay_finite() {
             | Err(Failure::Calc(CalcError::NotConverged { .. })) => {}
             Err(e) => panic!("{r}: {e:?}"),
         }
+    }
+}
+
+/// Issue 12 item 9: a roller bearing's answer names its elements neutrally; the ball names of
+/// release 0.1 are still sent, equal to the new ones, and the schema marks them deprecated.
+#[test]
+fn element_names_are_neutral_and_the_ball_names_are_deprecated_aliases() {
+    let roller = ok(&roller_request(
+        roller_bearing(10.0, 9.601, 65.0115, 14, 0.041),
+        6000.0,
+    ));
+    let ball = ok(&request(bearing_6210(0.018), 5000.0, 0.0, "varying"));
+    for v in [&roller, &ball] {
+        let r = &v["result"];
+        assert_eq!(r["max_ball_load_n"], r["max_element_load_n"]);
+        assert_eq!(r["loaded_ball_count"], r["loaded_element_count"]);
+        assert_eq!(r["ball_loads"], r["element_loads"]);
+        assert!(r["max_element_load_n"].as_f64().unwrap() > 0.0);
+    }
+    let doc = serde_json::to_value(crate::http::openapi::document()).unwrap();
+    let props = &doc["components"]["schemas"]["LoadDistributionOutput"]["properties"];
+    for old in ["max_ball_load_n", "loaded_ball_count", "ball_loads"] {
+        assert_eq!(props[old]["deprecated"], true, "{old}: {}", props[old]);
+    }
+    for new in [
+        "max_element_load_n",
+        "loaded_element_count",
+        "element_loads",
+    ] {
+        assert!(props[new].get("deprecated").is_none(), "{new}");
     }
 }

@@ -338,10 +338,10 @@ pub struct StaticCapacityOutput {
     #[serde(skip_serializing_if = "Option::is_none")]
     #[schema(example = json!([0.52, 0.53]))]
     pub rating_conformities: Option<[f64; 2]>,
-    /// Ball (roller) load Q₀ that brings the more stressed raceway contact to 4200 MPa
-    /// (4000 MPa for a roller), N.
+    /// Rolling-element (ball or roller) load Q₀ that brings the more stressed raceway contact
+    /// to 4200 MPa (4000 MPa for a roller), N.
     #[schema(example = 11600.0)]
-    pub ball_load_at_rating_pressure_n: f64,
+    pub element_load_at_rating_pressure_n: f64,
     /// Which raceway reaches the rating pressure first: `inner` or `outer`.
     #[schema(example = "inner")]
     pub governing_raceway: &'static str,
@@ -373,6 +373,10 @@ pub struct StaticCapacityOutput {
     /// (p ∝ Q^⅓), Pa.
     #[schema(example = 2.1e9)]
     pub max_contact_pressure_pa: f64,
+    /// Deprecated: `element_load_at_rating_pressure_n` under its name of release 0.1. Sent until
+    /// the next release, then removed.
+    #[schema(deprecated, example = 11600.0)]
+    pub ball_load_at_rating_pressure_n: f64,
 }
 
 impl Calculation for StaticCapacity {
@@ -409,7 +413,7 @@ pub(super) fn solve(
         gamma: r.gamma,
         static_rating_factor_f0: r.static_rating_factor_f0,
         rating_conformities: r.rating_conformities,
-        ball_load_at_rating_pressure_n: r.ball_load_at_rating_pressure_n,
+        element_load_at_rating_pressure_n: r.element_load_at_rating_pressure_n,
         governing_raceway: r.governing_raceway.name(),
         basic_static_load_rating_n: r.basic_static_load_rating_n,
         rating_used_n: r.rating_used_n,
@@ -419,6 +423,7 @@ pub(super) fn solve(
         static_safety_factor: r.static_safety_factor,
         recommended_min_static_safety_factor: r.recommended_min_static_safety_factor,
         max_contact_pressure_pa: r.max_contact_pressure_pa,
+        ball_load_at_rating_pressure_n: r.element_load_at_rating_pressure_n,
     })
 }
 

@@ -60,6 +60,11 @@ fn at_the_rating_the_governing_contact_is_at_4200_mpa() {
         let v = ok::<StaticCapacity>(&request(bearing(d, dm, z, 0.52, 0.53), 1000.0, 0.0));
         let c0 = result_field(&v, "basic_static_load_rating_n");
         let q = 5.0 * c0 / z as f64;
+        // Issue 12 item 9: the release-0.1 name is a deprecated alias of the neutral one.
+        assert_eq!(
+            v["result"]["ball_load_at_rating_pressure_n"],
+            v["result"]["element_load_at_rating_pressure_n"]
+        );
         let d = d * 1e-3;
         let (rx, ry) = if v["result"]["governing_raceway"] == "inner" {
             (0.5 * (dm * 1e-3 - d), -0.52 * d)
