@@ -208,7 +208,7 @@ pub struct CustomFidelity {
     #[schema(example = json!([96, 12]))]
     pub grid: Option<[u32; 2]>,
     /// Relative change per sweep at which the iteration stops (1e-14 … 1e-3).
-    #[schema(example = 1e-8)]
+    #[schema(minimum = 1e-14, maximum = 1e-3, example = 1e-8)]
     pub tolerance: Option<f64>,
 }
 

@@ -15,6 +15,7 @@ pub mod thrust;
 
 mod context;
 mod registry;
+mod schema_bounds;
 #[cfg(test)]
 pub(crate) mod testing;
 

@@ -143,8 +143,11 @@ mod tests {
 
 /// Smallest magnitude of a principal radius of curvature, m (a flat is an absent radius).
 pub const MIN_RADIUS_M: f64 = 1e-9;
+/// Largest magnitude of a principal radius of curvature, m: a million kilometres is a flat for
+/// any contact (give no radius for one).
+pub const MAX_RADIUS_M: f64 = 1e9;
 
-/// A signed principal radius of curvature, m: finite, |r| ≥ 1 nm; convex > 0, concave < 0.
+/// A signed principal radius of curvature, m: 1 nm ≤ |r| ≤ 1e9 m; convex > 0, concave < 0.
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(try_from = "f64")]
 pub struct Radius(f64);
@@ -158,11 +161,11 @@ impl Radius {
 impl TryFrom<f64> for Radius {
     type Error = String;
     fn try_from(v: f64) -> Result<Self, String> {
-        if v.is_finite() && v.abs() >= MIN_RADIUS_M {
+        if (MIN_RADIUS_M..=MAX_RADIUS_M).contains(&v.abs()) {
             Ok(Radius(v))
         } else {
             Err(format!(
-                "must be a finite radius with |r| ≥ {MIN_RADIUS_M} m (negative for concave; omit it for a flat), got {v}"
+                "must be a radius with {MIN_RADIUS_M:e} m ≤ |r| ≤ {MAX_RADIUS_M:e} m (negative for concave; omit it for a flat), got {v:e}"
             ))
         }
     }

@@ -218,7 +218,23 @@ pub fn execute<C: Calculation>(
     cancelled: Arc<AtomicBool>,
 ) -> Result<Executed, Failure> {
     let input: C::Input = parse(body)?;
-    let case = input.validate().map_err(Failure::Invalid)?;
+    // The ranges the OpenAPI document states, beside the room's own checks (whose messages
+    // come first where both name a field).
+    let sent: serde_json::Value =
+        serde_json::from_slice(body).map_err(|e| Failure::Unreadable(e.to_string()))?;
+    let outside = super::schema_bounds::violations(&C::Input::name(), &sent);
+    let case = match input.validate() {
+        Ok(case) if outside.is_empty() => case,
+        Ok(_) => return Err(Failure::Invalid(outside)),
+        Err(mut errors) => {
+            for e in outside {
+                if !errors.iter().any(|known| known.pointer == e.pointer) {
+                    errors.push(e);
+                }
+            }
+            return Err(Failure::Invalid(errors));
+        }
+    };
     let mut ctx = Context::new(deadline, cancelled);
     let started = Instant::now();
     let output = C::run(case, &mut ctx).map_err(Failure::Calc)?;
@@ -403,14 +419,34 @@ pub mod finite_json {
         }
     }
 
-    /// Serialise `value`, failing on any NaN, infinity or null inside it.
+    /// Serialise `value`, failing on any NaN, infinity or null inside it; the failure names
+    /// the first such field, for the log.
     pub fn to_vec<T: Serialize + ?Sized>(value: &T) -> Result<Vec<u8>, CalcError> {
         let mut out = Vec::with_capacity(256);
         let mut ser = serde_json::Serializer::with_formatter(&mut out, NoNull);
-        value
-            .serialize(&mut ser)
-            .map_err(|e| CalcError::Internal(format!("response serialisation: {e}")))?;
+        value.serialize(&mut ser).map_err(|e| {
+            let at = serde_json::to_value(value)
+                .ok()
+                .and_then(|v| first_null(&v, String::new()))
+                .unwrap_or_default();
+            CalcError::Internal(format!("response serialisation: {e} at {at:?}"))
+        })?;
         Ok(out)
+    }
+
+    /// The JSON pointer of the first `null` in `v` (where a non-finite number went).
+    fn first_null(v: &serde_json::Value, at: String) -> Option<String> {
+        match v {
+            serde_json::Value::Null => Some(at),
+            serde_json::Value::Array(items) => items
+                .iter()
+                .enumerate()
+                .find_map(|(i, x)| first_null(x, format!("{at}/{i}"))),
+            serde_json::Value::Object(fields) => fields
+                .iter()
+                .find_map(|(k, x)| first_null(x, format!("{at}/{k}"))),
+            _ => None,
+        }
     }
 
     #[cfg(test)]
@@ -428,6 +464,8 @@ pub mod finite_json {
             assert!(to_vec(&[f64::INFINITY]).is_err());
             assert!(to_vec(&[f64::NEG_INFINITY]).is_err());
             assert!(to_vec(&None::<f64>).is_err());
+            let named = to_vec(&serde_json::json!({"a": [1.0, {"b": null}]})).unwrap_err();
+            assert!(named.to_string().contains("\"/a/1/b\""), "{named}");
         }
     }
 }

@@ -13,6 +13,8 @@
 //! - `openapi_document`: what the OpenAPI document declares (tags, servers, headers, shared
 //!   components) and its 3.0 rendering.
 //! - `thrust`: thrust pads over their range: finite, conserving, balanced; errors that name the field.
+//! - `sweep`: every number of every example from the smallest positive double to the largest:
+//!   a finite success or a 422.
 //! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
 //! - `whirl`: the whirl room's 422s, its README example, and finite answers over its range.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
@@ -31,5 +33,6 @@ mod openapi_document;
 mod reference_cases;
 mod service;
 mod squeeze;
+mod sweep;
 mod thrust;
 mod whirl;

@@ -65,7 +65,7 @@ pub struct CompositeSpeedSplitInput {
     #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 10.0, example = 0.1)]
     pub sleeve_length_m: Positive,
     /// Radial clearance C between journal and sleeve, m (1e-7 … a tenth of the radius).
-    #[schema(value_type = f64, minimum = 1e-7, example = 6e-5)]
+    #[schema(value_type = f64, minimum = 1e-7, maximum = 0.1, example = 6e-5)]
     pub radial_clearance_m: Positive,
     pub lubricant: LubricantSpec,
     /// Film temperature, °C (−273 … 1000): where the viscosity is taken; required unless the

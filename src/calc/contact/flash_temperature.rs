@@ -62,6 +62,8 @@ pub struct FlashTemperature;
 
 /// Largest accepted magnitudes: beyond them no tribological contact is meant.
 const MAX_LENGTH_M: f64 = 10.0;
+/// Smallest accepted contact dimension, m: a nanometre asperity junction.
+const MIN_LENGTH_M: f64 = 1e-9;
 const MAX_LOAD_N: f64 = 1e9;
 const MAX_SPEED_M_S: f64 = 1e4;
 const MAX_FRICTION: f64 = 10.0;
@@ -84,15 +86,16 @@ pub enum FlashShape {
 #[serde(deny_unknown_fields)]
 pub struct FlashGeometry {
     pub shape: FlashShape,
-    /// Contact radius a, m, 0 < a ≤ 10; `circular` only.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.01)]
+    /// Contact radius a, m, 1e-9 ≤ a ≤ 10; `circular` only.
+    #[schema(value_type = Option<f64>, minimum = 1e-9, maximum = 10.0, example = 0.01)]
     pub radius_m: Option<Positive>,
-    /// Half-width b in the sliding direction, m, 0 < b ≤ 10; `square` (half-side) and `line`
-    /// (half the band's width, e.g. the Hertz half-width).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 1.82e-4)]
+    /// Half-width b in the sliding direction, m, 1e-9 ≤ b ≤ 10; `square` (half-side) and
+    /// `line` (half the band's width, e.g. the Hertz half-width).
+    #[schema(value_type = Option<f64>, minimum = 1e-9, maximum = 10.0, example = 1.82e-4)]
     pub half_width_m: Option<Positive>,
-    /// Full length 2l of the band across the sliding direction, m, 0 < 2l ≤ 10; `line` only.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.01)]
+    /// Full length 2l of the band across the sliding direction, m, 1e-9 ≤ 2l ≤ 10; `line`
+    /// only.
+    #[schema(value_type = Option<f64>, minimum = 1e-9, maximum = 10.0, example = 0.01)]
     pub length_m: Option<Positive>,
 }
 
@@ -106,8 +109,9 @@ pub struct FlashBody {
     /// |U_A − U_B|).
     #[schema(minimum = -1e4, maximum = 1e4, example = 0.5)]
     pub speed_m_s: f64,
-    /// Thermal conductivity K, W/(m·K), > 0 (carbon steel 54, bearing steel 46.7).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e4, example = 54.0)]
+    /// Thermal conductivity K, W/(m·K), 1e-3 … 1e4 (carbon steel 54, bearing steel 46.7;
+    /// still air 0.026).
+    #[schema(value_type = f64, minimum = 1e-3, maximum = 1e4, example = 54.0)]
     pub thermal_conductivity_w_m_k: Positive,
     /// Thermal diffusivity χ = K/(ρσ), m²/s, > 0 (carbon steel 1.474e-5).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.0, example = 1.474e-5)]
@@ -161,11 +165,11 @@ fn parse_body(spec: &FlashBody, name: &str, errors: &mut Vec<FieldError>) -> Opt
         ok = false;
     }
     let k = spec.thermal_conductivity_w_m_k.get();
-    if k > 1e4 {
+    if !(1e-3..=1e4).contains(&k) {
         errors.push(body_error(
             name,
             "thermal_conductivity_w_m_k",
-            format!("must be at most 1e4 W/(m·K), got {k}"),
+            format!("must be within 1e-3 … 1e4 W/(m·K) (an insulating foam to diamond), got {k}"),
         ));
         ok = false;
     }
@@ -233,11 +237,14 @@ fn parse_source(g: &FlashGeometry, errors: &mut Vec<FieldError>) -> Option<Sourc
     let n = errors.len();
     let mut need = |value: Option<Positive>, field: &str, wanted: bool| -> f64 {
         match (value, wanted) {
-            (Some(v), true) if v.get() <= MAX_LENGTH_M => v.get(),
+            (Some(v), true) if (MIN_LENGTH_M..=MAX_LENGTH_M).contains(&v.get()) => v.get(),
             (Some(v), true) => {
                 errors.push(FieldError::new(
                     format!("/geometry/{field}"),
-                    format!("must be at most {MAX_LENGTH_M} m, got {}", v.get()),
+                    format!(
+                        "must be within {MIN_LENGTH_M:e} … {MAX_LENGTH_M} m (a nanometre asperity to a machine), got {}",
+                        v.get()
+                    ),
                 ));
                 f64::NAN
             }

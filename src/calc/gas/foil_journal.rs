@@ -23,6 +23,14 @@ pub struct FoilJournal;
 const MAX_ECCENTRICITY: f64 = 20.0;
 /// Largest compliance α accepted.
 const MAX_COMPLIANCE: f64 = 100.0;
+/// Ranges of the bump foil's thickness, pitch, length (m), modulus (Pa) and Poisson's ratio.
+const BUMP_RANGES: [(f64, f64); 5] = [
+    (1e-6, 0.01),
+    (1e-5, 0.1),
+    (1e-5, 0.1),
+    (1e6, 1e13),
+    (0.0, 0.5),
+];
 /// Largest speed, rpm, and DellaCorte coefficient, lbf/(in³·krpm).
 const MAX_SPEED_RPM: f64 = 1e7;
 const MAX_DELLACORTE_COEFFICIENT: f64 = 10.0;
@@ -39,17 +47,17 @@ pub struct FoilSpec {
     /// the bump fields.
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 100.0, example = 0.2053)]
     pub compliance: Option<NonNegative>,
-    /// Bump foil thickness t_B, m.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 7.6e-5)]
+    /// Bump foil thickness t_B, m, 1e-6 … 0.01.
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 0.01, example = 7.6e-5)]
     pub thickness_m: Option<Positive>,
-    /// Bump pitch s, m.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.00317)]
+    /// Bump pitch s, m, 1e-5 … 0.1.
+    #[schema(value_type = Option<f64>, minimum = 1e-5, maximum = 0.1, example = 0.00317)]
     pub bump_pitch_m: Option<Positive>,
-    /// Bump length 2l, m (Table 11.5's "bump length"; the law takes its half l).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.00254)]
+    /// Bump length 2l, m, 1e-5 … 0.1 (Table 11.5's "bump length"; the law takes its half l).
+    #[schema(value_type = Option<f64>, minimum = 1e-5, maximum = 0.1, example = 0.00254)]
     pub bump_length_m: Option<Positive>,
-    /// Young's modulus of the foil E, Pa.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 2e11)]
+    /// Young's modulus of the foil E, Pa, 1e6 … 1e13.
+    #[schema(value_type = Option<f64>, minimum = 1e6, maximum = 1e13, example = 2e11)]
     pub elastic_modulus_pa: Option<Positive>,
     /// Poisson's ratio of the foil ν (0 … 0.5).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 0.5, example = 0.31)]
@@ -112,19 +120,25 @@ fn parse_foil(
         ),
         ("poisson_ratio", f.poisson_ratio.map(NonNegative::get)),
     ];
+    // The ranges of the bump dimensions (a foil, not a plate or a film), as the schema states.
+    let n = errors.len();
+    for ((name, value), (lo, hi)) in bumps.iter().zip(BUMP_RANGES) {
+        if let Some(v) = value.filter(|v| !(lo..=hi).contains(v)) {
+            errors.push(FieldError::new(
+                format!("/foil/{name}"),
+                format!("must be within [{lo:e}, {hi:e}], got {v}"),
+            ));
+        }
+    }
+    if errors.len() > n {
+        return None;
+    }
     let given = bumps.iter().filter(|(_, v)| v.is_some()).count();
     const EITHER: &str = "give compliance, or all of thickness_m, bump_pitch_m, bump_length_m, elastic_modulus_pa and poisson_ratio";
     let alpha = match (f.compliance, given) {
         (Some(a), 0) => a.get(),
         (None, 5) => {
             let v: Vec<f64> = bumps.iter().filter_map(|(_, v)| *v).collect();
-            if v[4] > 0.5 {
-                errors.push(FieldError::new(
-                    "/foil/poisson_ratio",
-                    "must be at most 0.5",
-                ));
-                return None;
-            }
             bump_compliance(
                 ambient_pressure?,
                 v[1],

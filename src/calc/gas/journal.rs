@@ -41,7 +41,7 @@ pub struct GasJournalInput {
     pub eccentricity_ratio: Option<f64>,
     /// Load W, N (> 0); instead of `eccentricity_ratio`: ε and the attitude angle are found by
     /// a root search on the film's load.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 20.0)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 20.0)]
     pub load_n: Option<Positive>,
     /// `fast`, `standard` (default), `high`, or `{"grid": [circumferential cells 16…512 (even),
     /// half-length axial cells 2…128]}`; each is also solved on its half mesh and

@@ -63,10 +63,13 @@ pub enum DynamicFilmModel {
 #[serde(deny_unknown_fields)]
 pub struct LoadPoint {
     /// Journal rotation angle within the period, degrees (ascending, from 0 to below the period).
+    #[schema(minimum = 0.0, exclusive_maximum = 36000.0)]
     pub angle_deg: f64,
-    /// Force on the journal along x, N.
+    /// Force on the journal along x, N (|F| ≤ 1e9).
+    #[schema(minimum = -1e9, maximum = 1e9)]
     pub force_x_n: f64,
-    /// Force on the journal along y (up), N.
+    /// Force on the journal along y (up), N (|F| ≤ 1e9).
+    #[schema(minimum = -1e9, maximum = 1e9)]
     pub force_y_n: f64,
 }
 
@@ -75,8 +78,10 @@ pub struct LoadPoint {
 #[serde(deny_unknown_fields)]
 pub struct PressurePoint {
     /// Crank angle from top dead centre, degrees (ascending within the cycle).
+    #[schema(minimum = 0.0, exclusive_maximum = 720.0)]
     pub crank_angle_deg: f64,
-    /// Cylinder pressure above the crankcase's, Pa.
+    /// Cylinder pressure above the crankcase's, Pa (−1e6 … 1e9).
+    #[schema(minimum = -1e6, maximum = 1e9)]
     pub pressure_pa: f64,
 }
 
@@ -87,29 +92,38 @@ pub enum DynamicLoadSpec {
     /// A fixed force.
     Constant {
         /// N (0 … 1e9).
+        #[schema(minimum = 0.0, maximum = 1e9)]
         magnitude_n: f64,
         /// Where the force on the journal points, degrees from +x (−90 = down).
+        #[schema(minimum = -3600.0, maximum = 3600.0)]
         direction_deg: f64,
     },
     /// A force of fixed magnitude turning at `speed_ratio` times the journal speed (1:
     /// unbalance; 0.5: the half-speed load no film can carry).
     Rotating {
         /// N (0 … 1e9).
+        #[schema(minimum = 0.0, maximum = 1e9)]
         magnitude_n: f64,
         /// Load speed over journal speed (−100 … 100; negative turns against the journal).
+        #[schema(minimum = -100.0, maximum = 100.0)]
         speed_ratio: f64,
         /// Direction at time 0, degrees from +x.
+        #[schema(minimum = -3600.0, maximum = 3600.0)]
         direction_at_start_deg: f64,
     },
     /// F = F_s + F_o sin(α ω t) along a fixed direction (Harnoy Eq. 18-35).
     Sinusoidal {
         /// F_s, N.
+        #[schema(minimum = -1e9, maximum = 1e9)]
         static_n: f64,
         /// F_o, N.
+        #[schema(minimum = -1e9, maximum = 1e9)]
         amplitude_n: f64,
         /// α, the load frequency over the journal's (0 … 100].
+        #[schema(exclusive_minimum = 0.0, maximum = 100.0)]
         frequency_ratio: f64,
         /// Degrees from +x (−90 = down).
+        #[schema(minimum = -3600.0, maximum = 3600.0)]
         direction_deg: f64,
     },
     /// One period of tabulated force, interpolated by a periodic cubic (C¹).
@@ -117,22 +131,28 @@ pub enum DynamicLoadSpec {
         /// At least 3 points, angles ascending within [0, period_deg).
         points: Vec<LoadPoint>,
         /// The period in journal rotation, degrees (default 360; 720 for a four-stroke cycle).
+        #[schema(minimum = 1.0, maximum = 36000.0)]
         period_deg: Option<f64>,
     },
     /// A single-cylinder slider-crank on its main bearing.
     Engine {
         /// Cylinder bore, m.
+        #[schema(minimum = 1e-3, maximum = 5.0)]
         bore_m: f64,
         /// Crank radius (half the stroke), m.
+        #[schema(minimum = 1e-3, maximum = 5.0)]
         crank_radius_m: f64,
         /// Connecting-rod length (centre to centre), m; longer than the crank radius.
+        #[schema(exclusive_minimum = 1.2e-3, maximum = 20.0)]
         rod_length_m: f64,
         /// Reciprocating mass (piston, pin, rings, the rod's small-end share), kg.
+        #[schema(minimum = 0.0, maximum = 1e5)]
         reciprocating_mass_kg: f64,
         /// Cylinder pressure over the cycle (at least 3 points, crank angles ascending within
         /// [0, cycle_deg)), periodic cubic between them.
         cylinder_pressure: Vec<PressurePoint>,
         /// Degrees of crank angle per cycle: 720 (four-stroke, default) or 360 (two-stroke).
+        #[schema(minimum = 360.0, maximum = 720.0)]
         cycle_deg: Option<f64>,
     },
 }
@@ -152,16 +172,16 @@ pub enum InitialStateName {
 #[serde(deny_unknown_fields)]
 pub struct GivenState {
     /// Journal centre from the bearing centre along x, m (inside 0.999 C).
-    #[schema(example = 0.0)]
+    #[schema(minimum = -1.0, maximum = 1.0, example = 0.0)]
     pub x_m: f64,
     /// Along y (up), m.
-    #[schema(example = -5e-5)]
+    #[schema(minimum = -1.0, maximum = 1.0, example = -5e-5)]
     pub y_m: f64,
     /// Velocity of the centre along x, m/s (at most 1000 C ω in size).
-    #[schema(example = 0.0)]
+    #[schema(minimum = -1e4, maximum = 1e4, example = 0.0)]
     pub velocity_x_m_s: f64,
     /// Along y, m/s.
-    #[schema(example = 0.0)]
+    #[schema(minimum = -1e4, maximum = 1e4, example = 0.0)]
     pub velocity_y_m_s: f64,
 }
 
@@ -186,6 +206,7 @@ pub enum UntilName {
 #[serde(deny_unknown_fields)]
 pub struct UntilTime {
     /// s (> 0, at most 20 000 journal revolutions).
+    #[schema(exclusive_minimum = 0.0, maximum = 1e13)]
     pub time_s: f64,
 }
 
@@ -194,6 +215,7 @@ pub struct UntilTime {
 #[serde(deny_unknown_fields)]
 pub struct UntilEccentricity {
     /// (0, 0.999]; the run also stops after 20 000 revolutions.
+    #[schema(exclusive_minimum = 0.0, maximum = 0.999)]
     pub eccentricity_ratio: f64,
 }
 

@@ -47,13 +47,13 @@ pub struct FeedSpec {
     #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e8, example = 276000.0)]
     pub supply_pressure_pa: Positive,
     /// Feed-hole diameter D_H, m (hole; D_H/L from 0.05 to 0.5).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.01)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.01)]
     pub hole_diameter_m: Option<Positive>,
     /// Axial groove length L_g, m (grooves; L_g/L from 0.3 to 0.95).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.067)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.067)]
     pub groove_length_m: Option<Positive>,
     /// Groove width w_g, m (grooves; typically ≥ D/10).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.00476)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.00476)]
     pub groove_width_m: Option<Positive>,
 }
 

@@ -30,7 +30,7 @@ pub struct GeometrySpec {
     #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 50.0, example = 0.1)]
     pub length_m: Positive,
     /// Radial clearance C, m (> 0; R/C from 50 to 10000, typically 500–1000).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.0001)]
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1.0, example = 0.0001)]
     pub radial_clearance_m: Positive,
 }
 
@@ -212,14 +212,15 @@ pub struct PlainInput {
     /// total flows (Martin's model) and puts the total flow in the heat balance; absent, the
     /// side leakage carries the heat (Table 8.6's ΔT).
     pub feed: Option<FeedSpec>,
-    /// Rotor mass carried by this bearing, kg, for the stability threshold (default W/g).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
+    /// Rotor mass carried by this bearing, kg, 1e-6 … 1e8, for the stability threshold
+    /// (default W/g).
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e8, example = 1000.0)]
     pub rotor_mass_kg: Option<Positive>,
     /// Stiffness of the shaft between the rotor mass and this bearing, N/m (a Jeffcott rotor:
     /// the shaft in series with the film; default rigid). Its flexibility γ = W/(k_s C) lowers
     /// the critical mass by 1 + γ k_eq (Hori's Routh–Hurwitz threshold as Stachowiak &
     /// Batchelor §5.6.4 give it; γ is their "dimensionless exciter mass").
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1e8)]
+    #[schema(value_type = Option<f64>, minimum = 1.0, maximum = 1e13, example = 1e8)]
     pub shaft_stiffness_n_m: Option<Positive>,
     /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
     /// half-length axial 2…256], "tolerance": 1e-14…1e-3}` (the tolerance stops the
@@ -260,6 +261,14 @@ impl Validate for PlainInput {
                 "/speed_rpm",
                 "must be within [1e-6, 1e6] rev/min",
             ));
+        }
+        if let Some(m) = self.rotor_mass_kg.map(Positive::get) {
+            if !(1e-6..=1e8).contains(&m) {
+                errors.push(FieldError::new(
+                    "/rotor_mass_kg",
+                    format!("must be within [1e-6, 1e8] kg (a micro-turbine's rotor to the largest turbine-generator's), got {m}"),
+                ));
+            }
         }
         let operating = match (self.load_n, self.eccentricity_ratio) {
             (Some(w), None) if (1e-6..=1e12).contains(&w.get()) => {

@@ -76,7 +76,7 @@ pub struct VogelPoint {
     #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
     pub temperature_c: Celsius,
     /// Dynamic viscosity, Pa·s, > 0.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.03)]
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e6, example = 0.03)]
     pub viscosity_pa_s: Positive,
 }
 
@@ -85,7 +85,7 @@ pub struct VogelPoint {
 #[serde(deny_unknown_fields)]
 pub struct ExponentialSpec {
     /// μ_ref, Pa·s, > 0.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.03)]
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e4, example = 0.03)]
     pub reference_viscosity_pa_s: Positive,
     /// T_ref, °C.
     #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]

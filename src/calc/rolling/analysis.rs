@@ -56,10 +56,10 @@ pub struct AnalysisInput {
     #[schema(value_type = BallBearingSpec)]
     pub bearing: Value,
     /// Radial load F_r, N (≥ 0).
-    #[schema(value_type = f64, minimum = 0.0, example = 8900.0)]
+    #[schema(value_type = f64, minimum = 0.0, maximum = 1e10, example = 8900.0)]
     pub radial_load_n: NonNegative,
     /// Axial load F_a, N (≥ 0; default 0).
-    #[schema(value_type = Option<f64>, minimum = 0.0, example = 0.0)]
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e10, example = 0.0)]
     pub axial_load_n: Option<NonNegative>,
     /// Inner-ring speed, rev/min (signed, |n| ≤ 1e6).
     #[schema(minimum = -1e6, maximum = 1e6, example = 2000.0)]
@@ -73,30 +73,30 @@ pub struct AnalysisInput {
     #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 70.0)]
     pub temperature_c: Celsius,
     /// Basic dynamic load rating C, N (catalogue).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 35700.0)]
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e10, example = 35700.0)]
     pub dynamic_load_rating_n: Positive,
     /// Equivalent dynamic load P, N; default F_r when F_a = 0, else give it (or X and Y).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 8900.0)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e10, example = 8900.0)]
     pub equivalent_load_n: Option<Positive>,
     /// Radial factor X for P = X F_r + Y F_a (with `y_factor`).
-    #[schema(value_type = Option<f64>, minimum = 0.0, example = 0.56)]
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 10.0, example = 0.56)]
     pub x_factor: Option<NonNegative>,
     /// Axial factor Y for P = X F_r + Y F_a (with `x_factor`).
-    #[schema(value_type = Option<f64>, minimum = 0.0, example = 1.5)]
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 10.0, example = 1.5)]
     pub y_factor: Option<NonNegative>,
-    /// Reliability, % (default 90).
-    #[schema(minimum = 0.0, maximum = 100.0, example = 90.0)]
+    /// Reliability, %, within [1, 100) (default 90).
+    #[schema(minimum = 1.0, exclusive_maximum = 100.0, example = 90.0)]
     pub reliability_percent: Option<f64>,
     /// Contamination factor e_C (0 … 1), with `fatigue_load_limit_n`, for ISO 281's a_ISO.
     #[schema(minimum = 0.0, maximum = 1.0, example = 0.5)]
     pub contamination_factor: Option<f64>,
     /// Fatigue load limit C_u, N, with `contamination_factor`.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 1000.0)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e10, example = 1000.0)]
     pub fatigue_load_limit_n: Option<Positive>,
     pub roughness: Option<RaceRoughness>,
     /// Bore d, m (< pitch diameter), for the speed limit d·n (Khonsari & Booser Table 14.5);
     /// absent: the pitch diameter stands in (conservative, d_m > d).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.05)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 100.0, example = 0.05)]
     pub bore_diameter_m: Option<Positive>,
     /// How the bearing is lubricated, for the speed limit: `grease_or_bath` (d·n ≤ 300 000 mm·rpm)
     /// or `circulating_oil` (500 000); absent: both limits are judged.
@@ -107,7 +107,7 @@ pub struct AnalysisInput {
     pub misalignment_rad: Option<NonNegative>,
     /// Distance from the contact centre upstream to the inlet oil meniscus, m (> 0), passed to
     /// both raceway films for their starvation effect (`/v1/contacts/ehl-film`).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.0005)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.0, example = 0.0005)]
     pub inlet_meniscus_distance_m: Option<Positive>,
     /// The raceway films' effects (`thermal` inlet heating, `starvation`, `mixed_lubrication`:
     /// `auto`, `on`, `off`), passed to `/v1/contacts/ehl-film` for both raceways.

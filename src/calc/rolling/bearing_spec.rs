@@ -67,10 +67,10 @@ pub struct BallBearingSpec {
     pub ball_count: u32,
     /// Inner raceway groove radius r_i, m, > D/2 (conformity f_i = r_i/D within (0.5, 2];
     /// typically 0.515–0.53).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.0066)]
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 200.0, example = 0.0066)]
     pub inner_groove_radius_m: Positive,
     /// Outer raceway groove radius r_o, m, > D/2 (f_o = r_o/D within (0.5, 2]).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.0066)]
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 200.0, example = 0.0066)]
     pub outer_groove_radius_m: Positive,
     /// Diametral clearance P_d, m: d_o − d_i − 2D of the raceway diameters with the rings
     /// concentric (Khonsari eq. 14.4). Negative: interference, a preloaded bearing (at most

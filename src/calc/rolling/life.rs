@@ -100,11 +100,11 @@ pub struct Reliability(f64);
 impl TryFrom<f64> for Reliability {
     type Error = String;
     fn try_from(v: f64) -> Result<Self, String> {
-        if v.is_finite() && v > 0.0 && v < 100.0 {
+        if (1.0..100.0).contains(&v) {
             Ok(Reliability(v))
         } else {
             Err(format!(
-                "must be a reliability in percent within (0, 100), got {v}"
+                "must be a reliability in percent within [1, 100), got {v}: below 1 % the Weibull law is extrapolated beyond any use, and 100 % is an infinitely short life"
             ))
         }
     }
@@ -142,10 +142,10 @@ pub struct DutyStep {
     /// Share of the time spent in this step, > 0; normalised by the sum over the steps (minutes
     /// per cycle, percent or fractions all work). Give this or `revolution_fraction`, the same
     /// kind in every step.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 10.0)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 10.0)]
     pub time_fraction: Option<Positive>,
     /// Share of the revolutions made in this step, > 0; normalised by the sum over the steps.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.25)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 0.25)]
     pub revolution_fraction: Option<Positive>,
 }
 
@@ -185,8 +185,8 @@ pub struct LifeInput {
     /// Speed n, rpm, 1e-6 … 1e7; required unless `duty_cycle` gives each step's speed.
     #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e7, example = 5000.0)]
     pub speed_rpm: Option<Positive>,
-    /// Reliability R, percent, within (0, 100); default 90 (the rating's, a1 = 1).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, exclusive_maximum = 100.0, example = 90.0)]
+    /// Reliability R, percent, within [1, 100); default 90 (the rating's, a1 = 1).
+    #[schema(value_type = Option<f64>, minimum = 1.0, exclusive_maximum = 100.0, example = 90.0)]
     pub reliability_percent: Option<Reliability>,
     /// Which a1 set: `weibull` (default; the texts' Table 13.9 with slope 1.5) or
     /// `iso_281_2007`.

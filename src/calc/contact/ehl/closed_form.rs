@@ -32,13 +32,19 @@ const INLET_HEATING_SPEED_M_S: f64 = 10.0;
 /// Highest entrainment speed the film model takes, m/s (beyond it the closed forms have no
 /// footing at all).
 pub const MAX_SPEED_M_S: f64 = 1e3;
+/// Lowest entrainment speed the film model takes, m/s: a nanometre a second (below it the
+/// dimensionless groups underflow).
+pub const MIN_SPEED_M_S: f64 = 1e-9;
+/// A film above this fraction of R_x is not thin (the lubrication approximation fails).
+const THIN_FILM_FRACTION: f64 = 0.01;
 /// Largest RMS roughness of one surface, m.
 pub const MAX_ROUGHNESS_M: f64 = 1e-4;
 
 /// Why the film model refuses an entrainment speed (the caller names the field).
 pub fn speed_refusal(speed_m_s: f64) -> Option<String> {
-    (speed_m_s > MAX_SPEED_M_S)
-        .then(|| format!("must be at most {MAX_SPEED_M_S} m/s, got {speed_m_s}"))
+    (!(MIN_SPEED_M_S..=MAX_SPEED_M_S).contains(&speed_m_s)).then(|| {
+        format!("must be within [{MIN_SPEED_M_S:e}, {MAX_SPEED_M_S}] m/s, got {speed_m_s}")
+    })
 }
 
 /// The composite roughness of two surfaces' RMS roughness, or which surface (0 or 1) is refused
@@ -275,6 +281,7 @@ pub fn solve(case: &FilmCase) -> Result<FilmSolution, CalcError> {
             format!("h_c = {central:.3e} m above 1 µm at ū = {} m/s above 10 m/s: the isothermal fits overestimate the film here (Stachowiak §7.4); consider effects.thermal on", case.speed_m_s),
         );
     }
+    warn_film_shape(central, min, rx, &mut notes);
     let lambda = case.composite_roughness_m.map(|s| film_parameter(min, s));
     mixed_lubrication(case, lambda, &mut notes);
     Ok(FilmSolution {
@@ -297,6 +304,25 @@ pub fn solve(case: &FilmCase) -> Result<FilmSolution, CalcError> {
         formulas: films.formulas,
         notes,
     })
+}
+
+/// Warnings for films no formula can mean (issue 12, item 2): a film that is not thin against
+/// the contact's radius breaks the lubrication approximation every formula rests on (a feather
+/// load or a crawling speed in the rigid regimes), and a minimum film above the central one is
+/// two fits extrapolated past each other.
+fn warn_film_shape(central: f64, min: f64, rx: f64, notes: &mut Notes) {
+    if central > THIN_FILM_FRACTION * rx {
+        notes.warn(
+            "film_not_thin",
+            format!("h_c = {central:.3e} m exceeds {THIN_FILM_FRACTION} R_x = {:.3e} m: the lubrication approximation behind the film formulas needs h ≪ R (Hamrock §21.2), so this film is not a result; the bodies are effectively apart", THIN_FILM_FRACTION * rx),
+        );
+    }
+    if min > central {
+        notes.warn(
+            "min_film_above_central",
+            format!("h_min = {min:.3e} m above h_c = {central:.3e} m: the two fits are extrapolated far outside their range and disagree; neither is reliable here"),
+        );
+    }
 }
 
 /// What the shape-specific part hands back: dimensionless films (H = h/R_x) before effects.

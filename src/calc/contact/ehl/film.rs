@@ -47,6 +47,8 @@ pub struct EhlFilm;
 
 /// Largest slide-to-roll ratio |u₁ − u₂|/ū: 2 is pure sliding (one surface still).
 const MAX_SLIDE_ROLL: f64 = 2.0;
+/// Lightest load the film formulas take, N.
+const MIN_LOAD_N: f64 = 1e-6;
 /// Surface roughness: both bodies' RMS roughness, or the composite.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
@@ -93,14 +95,14 @@ pub struct EhlFilmInput {
     pub body1: BodySpec,
     /// The second body.
     pub body2: BodySpec,
-    /// Normal load F pressing the bodies together, N (> 0, at most 1e12); for a line contact
-    /// the total load on `line.length_m`.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e12, example = 4513.0)]
+    /// Normal load F pressing the bodies together, N (1e-6 … 1e12); for a line contact the
+    /// total load on `line.length_m`.
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e12, example = 4513.0)]
     pub load_n: Positive,
     /// Mean entrainment speed ū = (u₁ + u₂)/2 of the two surfaces relative to the contact,
-    /// along x, m/s (> 0, at most 1000). The MEAN, not the sum: a ball bearing's inner-race
+    /// along x, m/s (1e-9 … 1000). The MEAN, not the sum: a ball bearing's inner-race
     /// contact entrains at ū = (d_e² − d²)|ω_i − ω_o|/(4d_e) (Hamrock eq. 21.98).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1000.0, example = 6.252)]
+    #[schema(value_type = f64, minimum = 1e-9, maximum = 1000.0, example = 6.252)]
     pub entrainment_speed_m_s: Positive,
     /// The lubricant; it must have a pressure–viscosity law (Barus α, or a Roelands Z from
     /// which α = Z·5.1e-9·(ln η₀ + 9.67), Khonsari eq. 2.13).
@@ -119,7 +121,7 @@ pub struct EhlFilmInput {
     pub slide_roll_ratio: Option<NonNegative>,
     /// Distance from the contact centre upstream to the inlet oil meniscus, m (> 0, beyond the
     /// Hertz semi-axis along x); enables the starvation effect (point contacts).
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, example = 0.0005)]
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1.0, example = 0.0005)]
     pub inlet_meniscus_distance_m: Option<Positive>,
     /// How the Hertz ellipticity is found: `standard` (default, exact) or `closed_form` (the
     /// curve fits chosen by `closed_form`). The film formulas are closed forms either way.
@@ -156,6 +158,12 @@ impl Validate for EhlFilmInput {
                 None
             }
         };
+        if self.load_n.get() < MIN_LOAD_N {
+            errors.push(FieldError::new(
+                "/load_n",
+                format!("must be within [{MIN_LOAD_N:e}, 1e12] N (a micronewton: below it the film formulas' load group underflows), got {}", self.load_n.get()),
+            ));
+        }
         let speed = entrainment_speed(self.entrainment_speed_m_s, &mut errors);
         let lubricant = self
             .lubricant

@@ -128,9 +128,9 @@ pub struct NumericalEhlInput {
     pub load_n: Positive,
     /// The contact length of a line contact; absent for a point contact.
     pub line: Option<LineSpec>,
-    /// Mean entrainment speed ū = (u₁ + u₂)/2 along x, m/s (> 0, at most 1000): the mean, not
+    /// Mean entrainment speed ū = (u₁ + u₂)/2 along x, m/s (1e-9 … 1000): the mean, not
     /// the sum.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1000.0, example = 2.0)]
+    #[schema(value_type = f64, minimum = 1e-9, maximum = 1000.0, example = 2.0)]
     pub entrainment_speed_m_s: Positive,
     /// The lubricant; it needs a pressure–viscosity law (Barus α or Roelands Z) unless
     /// `effects.piezoviscosity` is `off`.

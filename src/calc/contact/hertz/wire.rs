@@ -20,13 +20,13 @@ pub struct Hertz;
 #[serde(deny_unknown_fields)]
 pub struct BodySpec {
     /// Principal radius of curvature in the x direction (the rolling direction, by habit), m:
-    /// positive convex, negative concave, |r| ≥ 1e-9; absent for a flat (a very large radius
-    /// works too). For a line contact: the cylinder's radius (axis along y).
-    #[schema(value_type = Option<f64>, example = 0.015)]
+    /// positive convex, negative concave, 1e-9 ≤ |r| ≤ 1e9; absent for a flat (a very large
+    /// radius works too). For a line contact: the cylinder's radius (axis along y).
+    #[schema(value_type = Option<f64>, minimum = -1e9, maximum = 1e9, example = 0.015)]
     pub radius_x_m: Option<Radius>,
     /// Principal radius of curvature in the y direction, m (same signs, absent for a flat).
     /// Must be absent for a line contact: the cylinders are straight along y.
-    #[schema(value_type = Option<f64>, example = 0.015)]
+    #[schema(value_type = Option<f64>, minimum = -1e9, maximum = 1e9, example = 0.015)]
     pub radius_y_m: Option<Radius>,
     /// Young's modulus E, Pa, 1 … 1e13 (steel 2.1e11).
     #[schema(value_type = f64, minimum = 1.0, maximum = 1e13, example = 2.1e11)]
@@ -42,7 +42,7 @@ pub struct BodySpec {
 pub struct LineSpec {
     /// Effective contact length L along the cylinder axes, m (> 0); the load is carried
     /// uniformly over it (crowned rollers: the length less the crowning and corner radii).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, example = 0.01)]
+    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.01)]
     pub length_m: Positive,
 }
 
