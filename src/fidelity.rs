@@ -3,6 +3,8 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use crate::calc::range_schemas;
+
 /// A fidelity level a calculation offers.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Serialize, Deserialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
@@ -204,8 +206,8 @@ pub enum FidelityRequest {
 #[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct CustomFidelity {
-    /// Cells [along the sliding direction, across]; see the calculation for the ranges.
-    #[schema(example = json!([96, 12]))]
+    /// Cells [along the sliding direction, across]: see [`range_schemas::grid`].
+    #[schema(schema_with = range_schemas::grid)]
     pub grid: Option<[u32; 2]>,
     /// Relative change per sweep at which the iteration stops (1e-14 … 1e-3).
     #[schema(minimum = 1e-14, maximum = 1e-3, example = 1e-8)]

@@ -14,6 +14,7 @@ pub mod surface;
 pub mod thrust;
 
 mod context;
+pub(crate) mod range_schemas;
 mod registry;
 mod schema_bounds;
 #[cfg(test)]

@@ -227,8 +227,13 @@ pub fn execute<C: Calculation>(
         Ok(case) if outside.is_empty() => case,
         Ok(_) => return Err(Failure::Invalid(outside)),
         Err(mut errors) => {
+            // A field the room already refused, or one inside it, is not named twice.
             for e in outside {
-                if !errors.iter().any(|known| known.pointer == e.pointer) {
+                let named = |known: &FieldError| {
+                    e.pointer == known.pointer
+                        || e.pointer.starts_with(&format!("{}/", known.pointer))
+                };
+                if !errors.iter().any(named) {
                     errors.push(e);
                 }
             }

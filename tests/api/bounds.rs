@@ -300,22 +300,8 @@ fn every_bound_the_document_states_is_enforced() {
     );
 }
 
-/// Numeric request fields still without a documented range on both sides (issue 12, item 2 asks
-/// for one on every input): arrays whose items the room bounds (their descriptions give the
-/// range), and numbers that share a field with a keyword (`"optimum"`). Each is
-/// validated by its room; this list may only shrink.
-const RANGE_PENDING: &[&str] = &[
-    "BearingInput/surface_roughness_ra_m[]",
-    "CustomFidelity/grid[]",
-    "HydrostaticPressureRatio",
-    "PadFilmRatio",
-    "PivotPosition",
-    "PropertiesInput/temperatures_c[]",
-    "ViscosityInput/pressures_pa[]",
-    "ViscosityInput/temperatures_c[]",
-];
-
-/// The numeric fields of `schema` (a component named `at`) with a bound missing on a side.
+/// The numeric fields of `schema` (a component named `at`) with a bound missing on a side
+/// (issue 12, item 2: every input gets a physical range, documented).
 fn unranged(doc: &Value, schema: &Value, at: &str, seen: &mut Vec<String>, out: &mut Vec<String>) {
     if let Some(r) = schema.get("$ref").and_then(Value::as_str) {
         let name = r.trim_start_matches("#/components/schemas/");
@@ -370,20 +356,8 @@ fn every_numeric_input_documents_its_range() {
     }
     found.sort();
     found.dedup();
-    let new: Vec<&String> = found
-        .iter()
-        .filter(|f| !RANGE_PENDING.contains(&f.as_str()))
-        .collect();
     assert!(
-        new.is_empty(),
-        "numeric inputs without a documented range: {new:?}"
-    );
-    let done: Vec<&&str> = RANGE_PENDING
-        .iter()
-        .filter(|p| !found.iter().any(|f| f == *p))
-        .collect();
-    assert!(
-        done.is_empty(),
-        "ranged now, strike from RANGE_PENDING: {done:?}"
+        found.is_empty(),
+        "numeric inputs without a documented range: {found:?}"
     );
 }

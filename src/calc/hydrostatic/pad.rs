@@ -15,6 +15,7 @@ use super::operating::{self, Case, Compensation, Effects, Known, Operating, Sizi
 use super::power::Motion;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{ratio_within, Celsius, NonNegative, Positive};
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{Level, SolverReport};
@@ -110,7 +111,7 @@ pub enum HydrostaticCompensationKind {
 }
 
 /// The pressure ratio: a number, or `"optimum"`.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(
     untagged,
     expecting = "a pressure ratio p_r/p_s (a number in (0, 1)) or \"optimum\""
@@ -121,6 +122,20 @@ pub enum HydrostaticPressureRatio {
     /// The stiffness-maximising ratio: ½ (capillary), 2 − √2 (orifice).
     Optimum(HydrostaticOptimum),
 }
+
+range_schemas::number_or_keyword_schema!(
+    HydrostaticPressureRatio,
+    HydrostaticOptimum,
+    "The recess-to-supply pressure ratio: a number, or `\"optimum\"`.",
+    "m = p_r/p_s, within (0, 1).",
+    range_schemas::Range {
+        minimum: None,
+        exclusive_minimum: Some(0.0),
+        maximum: None,
+        exclusive_maximum: Some(1.0),
+    },
+    "The stiffness-maximising ratio: ½ (capillary), 2 − √2 (orifice)."
+);
 
 /// The stiffness-maximising value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]

@@ -8,6 +8,7 @@ use super::model::{roelands_z_fein, wooster_alpha_1_pa, PressureLaw, Thermal};
 use super::spec::LubricantSpec;
 use super::validity;
 use crate::calc::quantity::Celsius;
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
 
@@ -21,8 +22,8 @@ pub struct Properties;
 #[serde(deny_unknown_fields)]
 pub struct PropertiesInput {
     pub lubricant: LubricantSpec,
-    /// Temperatures, °C (each −273 … 1000); 1 … 10000 values.
-    #[schema(value_type = Vec<f64>, min_items = 1, max_items = 10000, example = json!([40.0, 65.0, 100.0]))]
+    /// Temperatures, °C: see [`range_schemas::property_temperatures`].
+    #[schema(schema_with = range_schemas::property_temperatures)]
     pub temperatures_c: Vec<Celsius>,
 }
 

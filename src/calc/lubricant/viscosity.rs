@@ -8,6 +8,7 @@ use super::model::{dowson_higginson_density_ratio, Lubricant, PressureLaw};
 use super::spec::LubricantSpec;
 use super::validity;
 use crate::calc::quantity::{Celsius, NonNegative};
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::Level;
@@ -38,13 +39,12 @@ pub struct ViscosityEffects {
 #[serde(deny_unknown_fields)]
 pub struct ViscosityInput {
     pub lubricant: LubricantSpec,
-    /// Temperatures, °C (each −273 … 1000); 1 … 100000 values.
-    #[schema(value_type = Vec<f64>, min_items = 1, max_items = 100000, example = json!([40.0, 65.0, 100.0]))]
+    /// Temperatures, °C: see [`range_schemas::viscosity_temperatures`].
+    #[schema(schema_with = range_schemas::viscosity_temperatures)]
     pub temperatures_c: Vec<Celsius>,
-    /// Gauge pressures, Pa (each 0 … 5e9); default `[0]`. The result has one point per
-    /// temperature and pressure, temperatures varying slowest.
+    /// Gauge pressures, Pa: see [`range_schemas::pressures`].
     #[serde(default)]
-    #[schema(value_type = Vec<f64>, max_items = 100000, example = json!([0.0, 1.0e8]))]
+    #[schema(schema_with = range_schemas::pressures)]
     pub pressures_pa: Vec<NonNegative>,
     #[serde(default)]
     pub effects: ViscosityEffects,

@@ -15,6 +15,7 @@ use super::sector::{allowable_film_m, PadType, Sectors};
 use super::tilting_pad::PivotPosition;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{ratio_within, Celsius, Positive};
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
@@ -70,9 +71,9 @@ pub struct BearingInput {
     /// Oil inlet temperature, °C (default 40).
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 49.0)]
     pub inlet_temperature_c: Option<Celsius>,
-    /// Surface roughness Ra of the runner and of the pads, m (each 0 … 1e-4; default 0.8 µm,
-    /// a 32 µin finish): the allowable minimum film is 10 (Ra₁² + Ra₂²)^½.
-    #[schema(example = json!([0.8e-6, 0.8e-6]))]
+    /// Surface roughness Ra of the runner and of the pads, m: see
+    /// [`range_schemas::roughness_pair`].
+    #[schema(schema_with = range_schemas::roughness_pair)]
     pub surface_roughness_ra_m: Option<[f64; 2]>,
     /// The allowable minimum film, m, instead of the roughness rule.
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e-3, example = 1.2e-5)]

@@ -13,6 +13,7 @@ use super::performance::{Method, RATIOS};
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
@@ -33,7 +34,7 @@ pub enum PadProfileKind {
 }
 
 /// The film ratio: a number, or `"optimum"`.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(
     untagged,
     expecting = "a film ratio h1/h2 (a number from 1.01 to 10) or \"optimum\""
@@ -44,6 +45,20 @@ pub enum PadFilmRatio {
     /// The ratio that maximises the load at the given outlet film.
     Optimum(OptimumKeyword),
 }
+
+range_schemas::number_or_keyword_schema!(
+    PadFilmRatio,
+    OptimumKeyword,
+    "The film ratio: a number, or `\"optimum\"`.",
+    "h1/h2, 1.01 … 10.",
+    range_schemas::Range {
+        minimum: Some(1.01),
+        exclusive_minimum: None,
+        maximum: Some(10.0),
+        exclusive_maximum: None,
+    },
+    "The ratio that maximises the load at the given outlet film."
+);
 
 /// The load-maximising value.
 #[derive(Debug, Clone, Copy, PartialEq, Eq, Deserialize, ToSchema)]

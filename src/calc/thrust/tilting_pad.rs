@@ -15,13 +15,14 @@ use super::pivot::Pivot;
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
 pub struct TiltingPad;
 
 /// Where the pivot is: a number, or `"optimum"`.
-#[derive(Debug, Clone, Copy, PartialEq, Deserialize, ToSchema)]
+#[derive(Debug, Clone, Copy, PartialEq, Deserialize)]
 #[serde(
     untagged,
     expecting = "a pivot position x/B from the leading edge (a number above 0.5, at most 0.95) or \"optimum\""
@@ -32,6 +33,20 @@ pub enum PivotPosition {
     /// Where the centre of pressure lies at the load-maximising film ratio (about 0.58).
     Optimum(OptimumKeyword),
 }
+
+range_schemas::number_or_keyword_schema!(
+    PivotPosition,
+    OptimumKeyword,
+    "Where the pivot is: a number, or `\"optimum\"`.",
+    "x/B from the leading edge, within (0, 0.95] (above 0.5 to carry load).",
+    range_schemas::Range {
+        minimum: None,
+        exclusive_minimum: Some(0.0),
+        maximum: Some(0.95),
+        exclusive_maximum: None,
+    },
+    "Where the centre of pressure lies at the load-maximising film ratio (about 0.58)."
+);
 
 /// Request.
 #[derive(Debug, Clone, Deserialize, ToSchema)]
