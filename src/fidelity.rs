@@ -77,7 +77,14 @@ pub struct SolverReport {
     pub evaluations: Option<u32>,
     /// Why the solve stopped.
     pub stop_reason: StopReason,
-    /// Final residual, where the method iterates.
+    /// The method's convergence measure at the end, where the method iterates; what it
+    /// measures depends on `method` (docs/solver-report.md has the table). Mostly dimensionless
+    /// and relative — a scaled equation residual, a load or force imbalance over the load, a
+    /// relative change or a relative error estimate — and within the method's tolerance when
+    /// `stop_reason` is `converged`. It says how well the iterate solves the discrete
+    /// equations, not how accurate the result is: that is `error_estimate`. The point-contact
+    /// EHL multigrid reports its Reynolds defect over the central film, which is not its
+    /// convergence test and may be of order 1 on a converged fine grid.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub residual: Option<f64>,
     /// Estimated relative error of the headline result, where known.
@@ -217,5 +224,76 @@ pub struct CustomFidelity {
 impl Default for FidelityRequest {
     fn default() -> Self {
         FidelityRequest::Level(Level::Standard)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use std::path::{Path, PathBuf};
+
+    /// The method name of every `Driver::new(` in the non-test code of `text`: a string literal,
+    /// or a constant of the same file holding one.
+    fn driver_methods(text: &str, file: &Path) -> Vec<String> {
+        let code = text.split("#[cfg(test)]").next().unwrap_or(text);
+        let mut names = Vec::new();
+        for (at, _) in code.match_indices("Driver::new(") {
+            let rest = code[at + "Driver::new(".len()..].trim_start();
+            let name = if let Some(literal) = rest.strip_prefix('"') {
+                literal[..literal.find('"').unwrap()].to_owned()
+            } else {
+                let ident: String = rest
+                    .chars()
+                    .take_while(|c| c.is_alphanumeric() || *c == '_')
+                    .collect();
+                let constant = format!("const {ident}: &str = \"");
+                let Some(start) = code.find(&constant) else {
+                    panic!(
+                        "{}: Driver::new({ident}, …) is neither a literal nor a &str constant of the file",
+                        file.display()
+                    );
+                };
+                let value = &code[start + constant.len()..];
+                value[..value.find('"').unwrap()].to_owned()
+            };
+            names.push(name);
+        }
+        names
+    }
+
+    fn rust_files(dir: &Path, out: &mut Vec<PathBuf>) {
+        for entry in std::fs::read_dir(dir).unwrap() {
+            let path = entry.unwrap().path();
+            if path.is_dir() {
+                rust_files(&path, out);
+            } else if path.extension().is_some_and(|e| e == "rs") {
+                out.push(path);
+            }
+        }
+    }
+
+    /// docs/solver-report.md names every method the solver driver runs, so that its table of
+    /// what `residual` means cannot fall behind the code.
+    #[test]
+    fn the_solver_report_doc_names_every_driver_method() {
+        let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+        let doc = std::fs::read_to_string(root.join("docs/solver-report.md")).unwrap();
+        let mut files = Vec::new();
+        rust_files(&root.join("src"), &mut files);
+        let mut methods = Vec::new();
+        for file in &files {
+            let text = std::fs::read_to_string(file).unwrap();
+            methods.extend(driver_methods(&text, file));
+        }
+        methods.sort();
+        methods.dedup();
+        assert!(methods.len() >= 20, "found only {methods:?}");
+        let missing: Vec<&String> = methods
+            .iter()
+            .filter(|m| !doc.contains(&format!("`{m}`")))
+            .collect();
+        assert!(
+            missing.is_empty(),
+            "docs/solver-report.md does not name {missing:?}"
+        );
     }
 }

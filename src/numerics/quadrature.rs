@@ -76,7 +76,7 @@ pub struct Tolerance {
 
 /// An adaptive integral: its value, the estimated absolute error, the panels it was summed
 /// over (a, b, ∫ₐᵇ f) in order of a, and the driver's report (iterations: panels built;
-/// evaluations: integrand calls).
+/// evaluations: integrand calls; residual: the estimated error relative to the value).
 #[derive(Debug, Clone, PartialEq)]
 #[must_use]
 pub struct Integral {
@@ -187,10 +187,13 @@ pub fn adaptive_gauss_kronrod<E>(
         if !(value.is_finite() && error.is_finite()) {
             return Verdict::Diverged(f64::NAN);
         }
+        // The report's residual is the error relative to the integral (the absolute one has
+        // the integrand's units times the variable's).
+        let residual = relative_error(error, value);
         if error <= (tolerance.relative * value.abs()).max(tolerance.absolute) {
-            Verdict::Converged((value, error), error)
+            Verdict::Converged((value, error), residual)
         } else {
-            Verdict::Continue(error)
+            Verdict::Continue(residual)
         }
     });
     match (run, failure) {
@@ -207,6 +210,17 @@ pub fn adaptive_gauss_kronrod<E>(
             })
         }
         (Err(stopped), None) => Err(IntegralError::Stopped(stopped)),
+    }
+}
+
+/// |error/value|, or the absolute error where the integral is 0 or so small that the ratio
+/// would not be finite.
+fn relative_error(error: f64, value: f64) -> f64 {
+    let relative = error / value.abs();
+    if relative.is_finite() {
+        relative
+    } else {
+        error
     }
 }
 
@@ -241,6 +255,12 @@ mod tests {
         assert!(((i.value - exact) / exact).abs() < 1e-11, "{}", i.value);
         assert!(i.error <= 1e-12 * exact);
         assert!(i.report.iterations > 1);
+        // The report's residual is the relative error estimate.
+        assert_eq!(i.report.residual, Some(i.error / i.value));
+        assert_eq!(
+            (relative_error(1e-3, 0.0), relative_error(0.0, 0.0)),
+            (1e-3, 0.0)
+        );
         // The panels tile [0, 0.999] in order and sum to the value.
         assert_eq!(
             (i.panels[0].0, i.panels[i.panels.len() - 1].1),
