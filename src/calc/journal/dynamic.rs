@@ -34,6 +34,10 @@ const MAX_RATIO: f64 = 100.0;
 const MAX_MASS_KG: f64 = 1e6;
 /// The longest run, in journal revolutions.
 const MAX_REVOLUTIONS: f64 = 20_000.0;
+/// Revolutions a run to a target eccentricity may take before it says the target is not
+/// reached (a whirl that grows reaches it within tens; a settled orbit never does, and 20 000
+/// revolutions of it outlast any deadline).
+const MAX_TARGET_REVOLUTIONS: f64 = 200.0;
 /// Load periods a steady orbit may take to settle.
 const MAX_PERIODS: u32 = 400;
 /// The largest target eccentricity ratio.
@@ -214,7 +218,7 @@ pub struct UntilTime {
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct UntilEccentricity {
-    /// (0, 0.999]; the run also stops after 20 000 revolutions.
+    /// (0, 0.999]; the run also stops after 200 revolutions.
     #[schema(exclusive_minimum = 0.0, maximum = 0.999)]
     pub eccentricity_ratio: f64,
 }
@@ -859,7 +863,10 @@ impl Calculation for DynamicJournal {
                 max_periods: MAX_PERIODS.min((horizon / period).floor().max(1.0) as u32),
             },
             UntilRun::Time(t) => Until::Time(t),
-            UntilRun::Eccentricity(e) => Until::Eccentricity { target: e, horizon },
+            UntilRun::Eccentricity(e) => Until::Eccentricity {
+                target: e,
+                horizon: MAX_TARGET_REVOLUTIONS * 2.0 * PI,
+            },
         };
         let samples = if case.include_orbit { ORBIT_POINTS } else { 0 };
         let orbit = orbit::run(
@@ -923,7 +930,7 @@ impl Calculation for DynamicJournal {
             UntilRun::Eccentricity(e) => match orbit.time_to_target {
                 Some(t) => format!("ε reached {e} at t = {:.6e} s", t / w),
                 None => format!(
-                    "ε did not reach {e} within {MAX_REVOLUTIONS} revolutions (largest {:.4})",
+                    "ε did not reach {e} within {MAX_TARGET_REVOLUTIONS} revolutions (largest {:.4})",
                     orbit.peak_eccentricity
                 ),
             },
