@@ -4,7 +4,7 @@
 use std::borrow::Cow;
 use std::collections::BTreeMap;
 use std::sync::atomic::AtomicBool;
-use std::sync::Arc;
+use std::sync::{Arc, OnceLock};
 use std::time::Instant;
 
 use serde::Serialize;
@@ -222,7 +222,7 @@ pub fn execute<C: Calculation>(
     // come first where both name a field).
     let sent: serde_json::Value =
         serde_json::from_slice(body).map_err(|e| Failure::Unreadable(e.to_string()))?;
-    let outside = super::schema_bounds::violations(&C::Input::name(), &sent);
+    let outside = super::schema_bounds::violations(schema_components(), &C::Input::name(), &sent);
     let case = match input.validate() {
         Ok(case) if outside.is_empty() => case,
         Ok(_) => return Err(Failure::Invalid(outside)),
@@ -257,6 +257,21 @@ pub fn execute<C: Calculation>(
     };
     let body = finite_json::to_vec(&envelope).map_err(Failure::Calc)?;
     Ok(Executed { body, solver_ms })
+}
+
+/// Every component schema of every room, as JSON, built once (what the ranges are checked
+/// against).
+pub(crate) fn schema_components() -> &'static BTreeMap<String, serde_json::Value> {
+    static COMPONENTS: OnceLock<BTreeMap<String, serde_json::Value>> = OnceLock::new();
+    COMPONENTS.get_or_init(|| {
+        let mut all = Vec::new();
+        for entry in REGISTRY {
+            (entry.schemas)(&mut all);
+        }
+        all.into_iter()
+            .filter_map(|(name, schema)| Some((name, serde_json::to_value(schema).ok()?)))
+            .collect()
+    })
 }
 
 /// Deserialize with the path of the first error kept, so a 422 names its field.

@@ -9,32 +9,21 @@
 //! and leaves the value to the room.
 
 use std::collections::BTreeMap;
-use std::sync::OnceLock;
 
 use serde_json::Value;
 
-use super::registry::REGISTRY;
 use super::FieldError;
 
-/// Every component schema of every room, as JSON, built once.
-fn components() -> &'static BTreeMap<String, Value> {
-    static COMPONENTS: OnceLock<BTreeMap<String, Value>> = OnceLock::new();
-    COMPONENTS.get_or_init(|| {
-        let mut all = Vec::new();
-        for entry in REGISTRY {
-            (entry.schemas)(&mut all);
-        }
-        all.into_iter()
-            .filter_map(|(name, schema)| Some((name, serde_json::to_value(schema).ok()?)))
-            .collect()
-    })
-}
-
-/// The numbers of `request` outside the ranges its input schema `input` states.
-pub fn violations(input: &str, request: &Value) -> Vec<FieldError> {
+/// The numbers of `request` outside the ranges its input schema `input` states, the schema and
+/// those it references looked up in `components` (by name, as JSON).
+pub fn violations(
+    components: &BTreeMap<String, Value>,
+    input: &str,
+    request: &Value,
+) -> Vec<FieldError> {
     let mut out = Vec::new();
     let root = serde_json::json!({ "$ref": format!("#/components/schemas/{input}") });
-    walk(components(), &root, request, "", &mut out);
+    walk(components, &root, request, "", &mut out);
     out
 }
 
@@ -193,16 +182,29 @@ mod tests {
         // The EHL film's load: 1e-6 … 1e12 N.
         use crate::calc::{contact::ehl::film::EhlFilm, Calculation};
         let mut body: Value = serde_json::from_str(EhlFilm::EXAMPLE).unwrap();
-        assert!(violations("EhlFilmInput", &body).is_empty());
+        assert!(violations(
+            crate::calc::registry::schema_components(),
+            "EhlFilmInput",
+            &body
+        )
+        .is_empty());
         body["load_n"] = json!(2e12);
-        let v = violations("EhlFilmInput", &body);
+        let v = violations(
+            crate::calc::registry::schema_components(),
+            "EhlFilmInput",
+            &body,
+        );
         assert_eq!(v.len(), 1, "{v:?}");
         assert_eq!(v[0].pointer, "/load_n");
         assert!(v[0].message.contains("≤ 1e12"), "{}", v[0].message);
         // Nested, through a `$ref`: a body's Poisson ratio (−1, 0.5].
         body["load_n"] = json!(10.0);
         body["body1"]["poisson_ratio"] = json!(0.7);
-        let v = violations("EhlFilmInput", &body);
+        let v = violations(
+            crate::calc::registry::schema_components(),
+            "EhlFilmInput",
+            &body,
+        );
         assert_eq!(v[0].pointer, "/body1/poisson_ratio", "{v:?}");
     }
 }
