@@ -133,8 +133,13 @@ pub enum Until {
     SteadyOrbit { tolerance: f64, max_periods: u32 },
     /// A time τ.
     Time(f64),
-    /// The eccentricity ratio reaches this value (or the time τ passes).
-    Eccentricity { target: f64, horizon: f64 },
+    /// The eccentricity ratio reaches `target`, or the orbit settles below it (one load period
+    /// maps onto itself within `settled_within`, in r̄: it never will), or τ passes `horizon`.
+    Eccentricity {
+        target: f64,
+        horizon: f64,
+        settled_within: f64,
+    },
 }
 
 /// The initial state (r̄, dr̄/dτ).
@@ -173,12 +178,14 @@ pub struct Orbit {
     /// τ and state at the end.
     pub end: f64,
     pub position: [f64; 2],
+    /// The orbit repeated: a steady-orbit run that settled, or a run to a target that settled
+    /// below it.
     pub steady: bool,
     /// Periods integrated (for a steady orbit: until it repeated).
     pub periods: u32,
     /// τ at which the target eccentricity was reached.
     pub time_to_target: Option<f64>,
-    /// The last period map's change |Δr̄| (steady orbit runs).
+    /// The last period map's change |Δr̄| (steady orbit runs; a run to a target that settled).
     pub period_residual: Option<f64>,
     pub report: SolverReport,
 }
@@ -320,6 +327,16 @@ struct Leg<const N: usize> {
     window: Window,
     kept: Vec<Step<N>>,
     reached: bool,
+    /// The period map's change when a run to a target settled below it.
+    settled: Option<f64>,
+}
+
+/// A run's target eccentricity, and the period map's change below which it has settled short
+/// of it.
+#[derive(Debug, Clone, Copy)]
+struct Target {
+    eccentricity: f64,
+    settled_within: f64,
 }
 
 /// Running statistics of one window.
@@ -423,15 +440,22 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     let mut leg = |t: f64,
                    y: SVector<f64, N>,
                    t_end: f64,
-                   target: Option<f64>,
+                   target: Option<Target>,
                    tally: &mut Tally,
                    peak: &mut (f64, f64)|
      -> Result<Leg<N>, OrbitError> {
         let mut tracker = Tracker::new(t, &problem.film);
         let mut kept: Vec<Step<N>> = Vec::new();
         let mut reached = false;
+        // The settling test of a run to a target: the position at each period's end.
+        let mut mark = (t + period, [y[0], y[1]]);
+        let mut settled = None;
         let observe = |step: &Step<N>| {
-            if let Some(target) = target {
+            if let Some(Target {
+                eccentricity: target,
+                settled_within,
+            }) = target
+            {
                 if eccentricity(&step.y1) >= target {
                     let (tt, _) = brent_minimise(
                         |s| (eccentricity(&step.at(s)) - target).abs(),
@@ -447,6 +471,24 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
                     tracker.add(&cut);
                     reached = true;
                     return Flow::StopAt(tt);
+                }
+                while step.t1 >= mark.0 {
+                    let at = step.at(mark.0);
+                    let change = (at[0] - mark.1[0]).hypot(at[1] - mark.1[1]);
+                    if change <= settled_within {
+                        let cut = Step {
+                            t1: mark.0,
+                            y1: at,
+                            ..*step
+                        };
+                        tracker.add(&cut);
+                        if samples > 0 {
+                            kept.push(cut);
+                        }
+                        settled = Some(change);
+                        return Flow::StopAt(mark.0);
+                    }
+                    mark = (mark.0 + period, [at[0], at[1]]);
                 }
             }
             tracker.add(step);
@@ -477,6 +519,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             window,
             kept,
             reached,
+            settled,
         })
     };
     let (window, kept) = match until {
@@ -486,10 +529,20 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             periods = (end / period).ceil() as u32;
             (l.window, l.kept)
         }
-        Until::Eccentricity { target, horizon } => {
+        Until::Eccentricity {
+            target,
+            horizon,
+            settled_within,
+        } => {
+            let target = Target {
+                eccentricity: target,
+                settled_within,
+            };
             let l = leg(t, y, horizon, Some(target), &mut tally, &mut peak)?;
             (t, y) = (l.t, l.y);
             time_to_target = l.reached.then_some(l.t);
+            steady = l.settled.is_some();
+            residual = l.settled;
             periods = (l.t / period).ceil() as u32;
             (l.window, l.kept)
         }
@@ -682,6 +735,7 @@ mod tests {
             Until::Eccentricity {
                 target: 0.95,
                 horizon: 2000.0,
+                settled_within: 1e-7,
             },
             1e-8,
             0,
