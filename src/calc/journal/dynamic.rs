@@ -10,7 +10,9 @@ use utoipa::ToSchema;
 use std::sync::Arc;
 
 use super::film::Mesh;
-use super::finite_moving_film::{FiniteSqueezeFilm, ImpedanceTable, TableDensity};
+use super::finite_moving_film::{
+    FiniteSqueezeFilm, ImpedanceTable, TableDensity, TOP as FINITE_TOP,
+};
 use super::load_law::{Engine, LoadLaw};
 use super::moving_film::{squeeze_vector, ShortArc, ShortFilm};
 use super::orbit::{self, OrbitError, OrbitFilm, Problem, Scales, Start, Until};
@@ -290,25 +292,6 @@ enum FilmChoice {
     Short(ShortArc),
     Finite { mesh: Mesh, density: TableDensity },
 }
-
-/// The impedance table's density at a fidelity level (see `dynamic.md`: the interpolation error
-/// measured against direct film solves stays below the grid's discretisation error).
-fn table_density(level: Level) -> TableDensity {
-    let (step, columns) = match level {
-        Level::Fast => (0.12, 36),
-        // A denser table on the finest grid would take longer than the deadline allows.
-        Level::High => (0.1, 40),
-        _ => (0.08, 48),
-    };
-    TableDensity {
-        step,
-        columns,
-        top: FINITE_TOP,
-    }
-}
-
-/// The largest ε the finite film's table reaches (h_min = 0.005 C).
-const FINITE_TOP: f64 = 0.995;
 
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum InitialStart {
@@ -646,7 +629,7 @@ impl Validate for DynamicJournalInput {
                     });
                 FilmChoice::Finite {
                     mesh,
-                    density: table_density(level),
+                    density: TableDensity::at(level),
                 }
             }
         };

@@ -36,6 +36,7 @@ use std::f64::consts::PI;
 use super::film::{self, Film, FilmModel, Mesh};
 use super::moving_film::{line_of_centres, mobility_squeeze};
 use crate::calc::{Budget, CalcError};
+use crate::fidelity::Level;
 use crate::numerics::reynolds::Stopping;
 
 /// A film solve's stopping (the cavitated film is solved directly by its active set; the
@@ -112,6 +113,28 @@ pub struct TableDensity {
     pub columns: usize,
     /// The largest ε the table answers for; beyond it the film model refuses the state.
     pub top: f64,
+}
+
+/// The largest ε the rooms' tables reach (h_min = 0.005 C).
+pub const TOP: f64 = 0.995;
+
+impl TableDensity {
+    /// The table's density at a fidelity level, up to [`TOP`] (see the `/dynamic` room's
+    /// `dynamic.md`: the interpolation error measured against direct film solves stays below the
+    /// grid's discretisation error).
+    pub fn at(level: Level) -> TableDensity {
+        let (step, columns) = match level {
+            Level::Fast => (0.12, 36),
+            // A denser table on the finest grid would take longer than the deadline allows.
+            Level::High => (0.1, 40),
+            _ => (0.08, 48),
+        };
+        TableDensity {
+            step,
+            columns,
+            top: TOP,
+        }
+    }
 }
 
 /// G(ε, α) and the peak pressure on a grid in (s = atanh ε, α), interpolated bicubically (see

@@ -2,11 +2,16 @@
 //! journal bearing — the threshold mass at a given speed, or the threshold speed of a given
 //! mass — with the linearised stiffness and damping (model: `journal::threshold`).
 
+use std::sync::Arc;
+
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::dynamics::Coefficients;
-use super::moving_film::ShortArc;
+use super::film::Mesh;
+use super::finite_moving_film::{FiniteSqueezeFilm, ImpedanceTable, TableDensity};
+use super::moving_film::{ShortArc, ShortFilm};
+use super::orbit::OrbitFilm;
 use super::performance::Method;
 use super::plain::{grid_mesh, DynamicCoefficients, GeometrySpec};
 use super::threshold::{Rotor, SpeedThreshold, WhirlFilm};
@@ -14,7 +19,7 @@ use super::whirl_confirm;
 use crate::calc::lubricant::model::TemperatureLaw;
 use crate::calc::lubricant::{validity, LubricantSpec};
 use crate::calc::quantity::{Celsius, Positive};
-use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
+use crate::calc::{Budget, CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::{FidelityRequest, Level};
 
 pub struct Whirl;
@@ -82,10 +87,40 @@ pub struct WhirlInput {
     pub fidelity: FidelityRequest,
     /// Confirm the threshold by simulation: the nonlinear orbit of rotors 0.8 and 1.25 times
     /// the threshold mass, disturbed from equilibrium, with their measured growth rates beside
-    /// the eigenvalues' (short π film and fixed arc; default false).
+    /// the eigenvalues' (short π film, fixed arc, or the finite film through its impedance
+    /// table at the request's fidelity; the full film has no threshold; default false).
     #[serde(default)]
     #[schema(example = false)]
     pub confirm: bool,
+}
+
+/// The film a confirmation's orbits run on.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ConfirmFilm {
+    /// The short film's closed forms on this arc.
+    Short(ShortArc),
+    /// The finite film's impedance table on the rotor's mesh.
+    Finite { mesh: Mesh, density: TableDensity },
+}
+
+impl ConfirmFilm {
+    /// The orbit's film for a bearing of `l_over_d` (the finite film's table is built here).
+    fn orbit_film(self, l_over_d: f64, budget: &Budget) -> Result<OrbitFilm, CalcError> {
+        Ok(match self {
+            ConfirmFilm::Short(arc) => OrbitFilm::Short(ShortFilm {
+                arc,
+                speed_sum: 1.0,
+            }),
+            ConfirmFilm::Finite { mesh, density } => OrbitFilm::Finite {
+                table: Arc::new(ImpedanceTable::build(
+                    FiniteSqueezeFilm { l_over_d, mesh },
+                    density,
+                    budget,
+                )?),
+                speed_sum: 1.0,
+            },
+        })
+    }
 }
 
 /// The validated request.
@@ -94,8 +129,8 @@ pub struct WhirlCase {
     pub rotor: Rotor,
     pub speed_rpm: Option<f64>,
     pub mass_kg: Option<f64>,
-    /// Simulate the orbit on this arc below and above the threshold.
-    pub confirm: Option<ShortArc>,
+    /// Simulate the orbit on this film below and above the threshold.
+    pub confirm: Option<ConfirmFilm>,
     /// The lubricant's parsing assumptions and validity warnings.
     pub assumptions: Vec<(&'static str, String)>,
 }
@@ -197,13 +232,20 @@ impl Validate for WhirlInput {
             },
         };
         let confirm = match (self.confirm, film) {
-            (false, _) => None,
-            (true, Some(WhirlFilm::ShortPiFilm)) => Some(ShortArc::PiFilm),
-            (true, Some(WhirlFilm::ShortFixedArc)) => Some(ShortArc::FixedArc),
-            (true, _) => {
+            (false, _) | (true, None) => None,
+            (true, Some(WhirlFilm::ShortPiFilm)) => Some(ConfirmFilm::Short(ShortArc::PiFilm)),
+            (true, Some(WhirlFilm::ShortFixedArc)) => Some(ConfirmFilm::Short(ShortArc::FixedArc)),
+            (true, Some(WhirlFilm::Finite(Method::Numerical { level, mesh, .. }))) => {
+                Some(ConfirmFilm::Finite {
+                    mesh,
+                    density: TableDensity::at(level),
+                })
+            }
+            (true, Some(WhirlFilm::Finite(Method::ClosedForm(_)))) => None,
+            (true, Some(WhirlFilm::ShortFull)) => {
                 errors.push(FieldError::new(
                     "/confirm",
-                    "the nonlinear confirmation runs on the short π film or fixed arc (film_model short_pi_film or short_fixed_arc): the full film has no threshold to confirm, and the finite film has no moving-film model here",
+                    "the full film has no threshold to confirm (a rotor of any mass whirls on it): choose film_model finite, short_pi_film or short_fixed_arc",
                 ));
                 None
             }
@@ -518,7 +560,7 @@ impl Calculation for Whirl {
                 "the full (Sommerfeld) film has no direct stiffness: Lund's equivalent stiffness is 0 and a rotor of any mass whirls at half speed at every speed; the threshold is 0",
             );
         }
-        if let Some(arc) = case.confirm {
+        if let Some(confirm) = case.confirm {
             // The threshold to confirm: the mass at the speed, or the speed of the mass.
             let around = match (&at_speed, &by_mass) {
                 (Some(at), _) => at.threshold_mass_kg.map(|m| (at.state, m)),
@@ -527,8 +569,9 @@ impl Calculation for Whirl {
             };
             match around {
                 Some((state, threshold)) if threshold > 0.0 => {
+                    let film = confirm.orbit_film(rotor.l_over_d(), &budget)?;
                     let [below, above] =
-                        whirl_confirm::confirm(&rotor, arc, &state, threshold, &budget)?;
+                        whirl_confirm::confirm(&rotor, &film, &state, threshold, &budget)?;
                     let agrees = below.simulated_growth_rate_per_s < 0.0
                         && above.simulated_growth_rate_per_s > 0.0;
                     statements.push(format!(
