@@ -24,7 +24,7 @@
 //! - **Steady orbit**: period by period (each period one integration landing on its end), until
 //!   the state at the period's end — position and ξ — repeats within the tolerance.
 //!
-//! The integrator is `numerics::ode`'s L-stable SDIRK. A journal at or beyond contact
+//! The integrator is `numerics::ode`'s Radau IIA. A journal at or beyond contact
 //! (ε ≥ 1 − 10⁻⁹) is outside the film model: the integrator retries smaller, and a journal that
 //! still reaches the wall halts there (the caller reports contact).
 

@@ -37,7 +37,7 @@ use super::split::{split, Operating};
 use crate::calc::CalcError;
 use crate::fidelity::{SolverReport, TimeIntegration};
 use crate::numerics::driver::Budget;
-use crate::numerics::ode::{self, Failure, Flow, RateError, Settings, Step};
+use crate::numerics::ode::{self, Failure, Flow, Method, RateError, Settings, Step};
 
 /// The integrator's tolerances on the sleeve speed over the final journal speed.
 const RELATIVE_TOLERANCE: f64 = 1e-8;
@@ -388,7 +388,9 @@ pub fn simulate(s: &StartUp, budget: &Budget, samples: usize) -> Result<Simulati
                    record: &mut Record,
                    report: &mut Option<SolverReport>|
      -> Result<SVector<f64, 1>, StartError> {
+        // The sleeve's scalar equation is mildly stiff: SDIRK's single N × N stages suffice.
         let settings = Settings {
+            method: Method::Sdirk4,
             relative: RELATIVE_TOLERANCE,
             absolute: ABSOLUTE_TOLERANCE,
             max_step: (to - from) / 20.0,

@@ -880,7 +880,7 @@ impl Calculation for DynamicJournal {
         let mut report = orbit.report.clone().at(case.level);
         if let FilmChoice::Finite { mesh, .. } = case.film {
             report = report
-                .named("sdirk4_l_stable_on_finite_volume_active_set_impedance_table")
+                .named("radau_iia5_on_finite_volume_active_set_impedance_table")
                 .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
                 .with_film_solves(budget.field_solves());
         }

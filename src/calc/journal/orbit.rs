@@ -1,6 +1,6 @@
 //! The journal's orbit under a dynamic load: Newton's law for the journal centre with the short
 //! film's force (`moving_film`) or the finite film's (`finite_moving_film`, an impedance table
-//! from the Reynolds solver), integrated by the stiff SDIRK integrator (`numerics::ode`)
+//! from the Reynolds solver), integrated by the stiff Radau IIA integrator (`numerics::ode`)
 //! until the orbit repeats itself over a load period, for a set time, or until an eccentricity
 //! is reached (Harnoy §18.5, Eqs 18-29 to 18-34 in Cartesian form, spec B.1.3–B.1.5).
 //!
@@ -33,7 +33,7 @@ use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortFilm};
 use crate::calc::Budget;
 use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
-use crate::numerics::ode::{self, Failure, Flow, Halted, Rate, RateError, Settings, Step};
+use crate::numerics::ode::{self, Failure, Flow, Halted, Method, Rate, RateError, Settings, Step};
 use crate::numerics::optimise::brent_minimise;
 
 /// The film an orbit runs on: the short film's closed forms, or the finite film's impedance
@@ -219,6 +219,7 @@ impl OrbitError {
 /// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen.
 pub(crate) fn settings(relative: f64) -> Settings {
     Settings {
+        method: Method::RadauIia5,
         relative,
         absolute: relative,
         max_step: 2.0 * PI / 50.0,
@@ -566,7 +567,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     };
     let sampled = sample(&kept, &window, samples);
     let report = SolverReport {
-        method: "sdirk4_l_stable".to_owned(),
+        method: settings.method.name().to_owned(),
         fidelity: crate::fidelity::Level::Standard,
         grid: None,
         iterations: tally.steps,
