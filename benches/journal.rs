@@ -6,7 +6,9 @@
 //!   ≤ 5 ms, high ≤ 40 ms;
 //! - a steady orbit of the short-bearing models (the README's `/dynamic` request): under 50 ms;
 //!   of the finite film at `fast`: under 2 s;
-//! - a whirl threshold (the README's `/whirl` request on the short film): under 5 ms.
+//! - a whirl threshold (the README's `/whirl` request on the short film): under 5 ms;
+//! - the composite bearing's locus beside the held sleeve's (the README's
+//!   `/composite-bearings/orbit` request, Harnoy Fig 18-9, `standard`).
 //!
 //! `cargo bench --bench journal`.
 
@@ -125,6 +127,17 @@ fn journal(c: &mut Criterion) {
             },
         );
     }
+    let composite = stribeck::calc::find("/v1/composite-bearings/orbit").unwrap();
+    let request = r#"{"journal_radius_m": 0.05, "sleeve_length_m": 0.02, "radial_clearance_m": 5e-5, "lubricant": {"viscosity_pa_s": 0.01}, "journal_speed_rpm": 3000, "journal_mass_kg": 5092.96, "sleeve_inertia_kg_m2": 1.5915e-5, "restraint_coefficient_kg_m2": 1.5915e-5, "load": {"kind": "sinusoidal", "static_n": 50265.5, "amplitude_n": 50265.5, "frequency_ratio": 2, "direction_deg": -90}, "film_model": "short_fixed_arc"}"#;
+    c.bench_function(
+        "README /composite-bearings/orbit request (Harnoy Fig 18-9), standard: both loci",
+        |b| {
+            b.iter(|| {
+                let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                (composite.execute)(black_box(request.as_bytes()), far, Default::default()).unwrap()
+            })
+        },
+    );
 }
 
 criterion_group!(benches, journal);
