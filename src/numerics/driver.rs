@@ -59,6 +59,12 @@ impl Budget {
         self.field_solves.load(Ordering::Relaxed)
     }
 
+    /// True when work expected to take `duration` would end before the deadline (always
+    /// without one): a solver that may go on to a costlier step asks first.
+    pub fn allows(&self, duration: std::time::Duration) -> bool {
+        self.deadline.is_none_or(|d| Instant::now() + duration < d)
+    }
+
     /// True while the request is neither late nor cancelled.
     pub fn alive(&self) -> bool {
         let cancelled = self

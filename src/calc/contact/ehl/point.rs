@@ -24,7 +24,7 @@
 //! the coarse-grid correction. Full multigrid from a 16-cell grid started from the Hertz
 //! pressure; the coarsest and the intermediate levels only start the next (a capped number of
 //! sweeps or cycles), the last two are converged, so their films serve Richardson's
-//! extrapolation.
+//! extrapolation, and the third-finest too where it can, for the films' observed order.
 
 use super::corrections::fully_flooded_meniscus;
 use super::fluid::Fluid;
@@ -461,8 +461,9 @@ impl Grid {
 impl PointProblem {
     /// Full multigrid from [`COARSEST_CELLS`] up to `cells` per direction (a power of two ≥
     /// [`MIN_CELLS`]).
-    /// Returns the converged solutions of the second-finest and the finest level, for
-    /// Richardson's extrapolation.
+    /// Returns the converged solutions, coarsest first, of the third-finest level (when it is
+    /// above the coarsest and its cycles settle), the second-finest and the finest, for
+    /// Richardson's extrapolation and the films' observed order.
     ///
     /// `accuracy` is the relative error asked of the film: a limit cycle may span
     /// [`WANDER_SHARE`] of it.
@@ -543,10 +544,14 @@ impl PointProblem {
                 coarser_film: coarse.central_film(),
                 accuracy,
             };
-            // Levels below the last two only start the next one: they end, without failing,
+            // Levels below the last three only start the next one: they end, without failing,
             // after [`START_CYCLES`] cycles. The last two converge ([`History::settled`]) within
-            // [`MAX_CYCLES`]; their converged verdict carries the Reynolds residual.
+            // [`MAX_CYCLES`]; their converged verdict carries the Reynolds residual. The third
+            // finest (above the coarsest) converges if it can, for the observed order of the
+            // films: if its cycles do not settle it only starts the next, from where it began.
             let resolved = level + 2 >= grids.len();
+            let third = level + 3 == grids.len();
+            let start = third.then(|| (grids[level].pressure.clone(), grids[level].h00));
             let run = Driver::new(
                 "fas_multigrid_finite_difference",
                 IterationUnit::MultigridCycles,
@@ -562,7 +567,7 @@ impl PointProblem {
                     return Verdict::Diverged(f64::NAN);
                 }
                 let load_error = (g.load() / g.load_target - 1.0).abs();
-                if resolved && load_error > DIVERGED_LOAD_ERROR {
+                if (resolved || third) && load_error > DIVERGED_LOAD_ERROR {
                     return Verdict::Diverged(load_error);
                 }
                 let change =
@@ -570,25 +575,31 @@ impl PointProblem {
                 history.films.push(film);
                 history.load_errors.push(load_error);
                 if let Some(error) = history.settled() {
-                    if !resolved {
-                        return Verdict::Converged(error, change);
-                    }
                     let residual = g.residual_norm(kappa2) / film_scale(film);
                     return Verdict::Converged(error, residual);
                 }
-                if !resolved && cycles >= START_CYCLES {
+                if !resolved && !third && cycles >= START_CYCLES {
                     return Verdict::Converged(f64::NAN, change);
                 }
                 Verdict::Continue(change)
             });
-            let run = match run {
-                Ok(run) => run,
-                Err(stopped) => {
+            let run = match (run, start) {
+                (Ok(run), _) => run,
+                (Err(stopped), Some((pressure, h00)))
+                    if stopped.reason() != StopReason::Deadline =>
+                {
+                    let g = &mut grids[level];
+                    g.pressure = pressure;
+                    g.h00 = h00;
+                    g.update(self);
+                    continue;
+                }
+                (Err(stopped), _) => {
                     let cycles = stopped.report.iterations;
                     return Err(failure(stopped, &grids[level], kappa2, cycles));
                 }
             };
-            if resolved {
+            if resolved || (third && !run.value.is_nan()) {
                 solved.push(grids[level].solution(run.report, run.value));
             }
         }
