@@ -169,7 +169,8 @@ pub struct PointSolution {
     pub pressure: Vec<f64>,
     pub film: Vec<f64>,
     /// The driver's report of the cycles on this grid (`multigrid_cycles`); its residual is the
-    /// mean |residual| of the Reynolds equation over the interior, relative to the central film.
+    /// mean pressure change a relaxation step would make (the Reynolds residual over the
+    /// operator's diagonal, in units of p_h) over the interior.
     pub report: SolverReport,
     /// The central film's relative change over its last cycle, or its spread over a limit
     /// cycle (see [`History::settled`]).
@@ -380,10 +381,25 @@ impl Grid {
         r
     }
 
-    /// Mean |residual| over the interior.
+    /// The mean change of P (in units of p_h) a point relaxation step would make over the
+    /// interior: each node's residual over the operator's diagonal there, D_p + W (the
+    /// Poiseuille and the elastic wedge's, as [`Grid::relax`] divides by) — scaled as the line
+    /// solver's residual is, so that it does not grow like 1/h² with the grid.
     fn residual_norm(&self, kappa2: f64) -> f64 {
         let r = self.residuals(kappa2);
-        r.iter().map(|v| v.abs()).sum::<f64>() / ((self.nx - 2) * (self.ny - 2)) as f64
+        let l = self.local;
+        let mut sum = 0.0;
+        for j in 1..self.ny - 1 {
+            for i in 1..self.nx - 1 {
+                let k = j * self.nx + i;
+                if r[k] != 0.0 {
+                    let diagonal =
+                        self.operator(i, j, kappa2).1 + self.wedge_diagonal(i, k, |d| l[d][0]);
+                    sum += (r[k] / diagonal).abs();
+                }
+            }
+        }
+        sum / ((self.nx - 2) * (self.ny - 2)) as f64
     }
 
     /// The elastic wedge's diagonal: ∂(Couette)/∂(change at the node) for a point change
@@ -575,8 +591,7 @@ impl PointProblem {
                 history.films.push(film);
                 history.load_errors.push(load_error);
                 if let Some(error) = history.settled() {
-                    let residual = g.residual_norm(kappa2) / film_scale(film);
-                    return Verdict::Converged(error, residual);
+                    return Verdict::Converged(error, g.residual_norm(kappa2));
                 }
                 if !resolved && !third && cycles >= START_CYCLES {
                     return Verdict::Converged(f64::NAN, change);
@@ -669,7 +684,7 @@ fn failure(stopped: Stopped, g: &Grid, kappa2: f64, cycles: u32) -> PointFailure
 }
 
 fn not_converged(g: &Grid, kappa2: f64, cycles: u32) -> PointFailure {
-    let residual = g.residual_norm(kappa2) / g.central_film().abs().max(FILM_FLOOR);
+    let residual = g.residual_norm(kappa2);
     PointFailure::NotConverged {
         residual: if residual.is_finite() {
             residual
