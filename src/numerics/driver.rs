@@ -269,6 +269,18 @@ mod tests {
     }
 
     #[test]
+    fn a_budget_allows_work_that_ends_before_its_deadline() {
+        use std::time::Duration;
+        assert!(Budget::unlimited().allows(Duration::from_secs(1_000_000)));
+        let budget = Budget::new(
+            Instant::now() + Duration::from_secs(60),
+            Arc::new(AtomicBool::new(false)),
+        );
+        assert!(budget.allows(Duration::from_secs(1)));
+        assert!(!budget.allows(Duration::from_secs(120)));
+    }
+
+    #[test]
     fn counts_iterations_and_reports_convergence() {
         let mut x = 1.0f64;
         let run = driver(100)
