@@ -1,6 +1,7 @@
 //! The numerical EHL room's solves (model): the line contact's Newton solves on nested grids,
 //! refined with Richardson's estimate under [`refine`], and the point contact's multigrid with
-//! its fall-back to coarser grids under the solver driver. Warnings are returned as data; the
+//! its fall-back to coarser grids under the solver driver and its step-up to finer ones while
+//! the films' estimated errors exceed the level's tolerances. Warnings are returned as data; the
 //! reports are the drivers'.
 
 use super::line::{LineProblem, LineSolution};
