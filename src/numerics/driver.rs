@@ -59,6 +59,12 @@ impl Budget {
         self.field_solves.load(Ordering::Relaxed)
     }
 
+    /// True when work expected to take `duration` would end before the deadline (always
+    /// without one): a solver that may go on to a costlier step asks first.
+    pub fn allows(&self, duration: std::time::Duration) -> bool {
+        self.deadline.is_none_or(|d| Instant::now() + duration < d)
+    }
+
     /// True while the request is neither late nor cancelled.
     pub fn alive(&self) -> bool {
         let cancelled = self
@@ -260,6 +266,18 @@ mod tests {
 
     fn driver(cap: u32) -> Driver {
         Driver::new("halving", IterationUnit::Sweeps, cap, &Budget::unlimited())
+    }
+
+    #[test]
+    fn a_budget_allows_work_that_ends_before_its_deadline() {
+        use std::time::Duration;
+        assert!(Budget::unlimited().allows(Duration::from_secs(1_000_000)));
+        let budget = Budget::new(
+            Instant::now() + Duration::from_secs(60),
+            Arc::new(AtomicBool::new(false)),
+        );
+        assert!(budget.allows(Duration::from_secs(1)));
+        assert!(!budget.allows(Duration::from_secs(120)));
     }
 
     #[test]

@@ -527,15 +527,7 @@ const ESTIMATE_SAFETY: f64 = 1.25;
 /// Against a converged reference over ε 0.1–0.99 and L/D 0.25–2 it bounds the error of every
 /// level (docs/accuracy.md).
 fn three_mesh_estimate([fine, middle, coarse]: [f64; 3], r: f64, of_middle: bool) -> f64 {
-    let (d1, d2) = ((fine - middle).abs(), (middle - coarse).abs());
-    let p = if d1 > 0.0 && d2 > 0.0 {
-        ((d2 / d1).ln() / r.ln()).clamp(1.0, 2.0)
-    } else {
-        2.0
-    };
-    let rp = r.powf(p);
-    // The error of the fine value, from either pair.
-    let of_fine = (d1 / (rp - 1.0)).max(d2 / (rp * (rp - 1.0)));
+    let (of_fine, rp) = richardson::observed_order_error(coarse, middle, fine, r);
     let (error, value) = if of_middle {
         (of_fine * rp, middle)
     } else {

@@ -5,8 +5,8 @@
 //!   calculation itself is [`closed_form`] (`closed_form::solve(&FilmCase) -> FilmSolution`),
 //!   which composed rooms call typed.
 //! - [`numerical`]: wire of `POST /v1/contacts/ehl`; its model [`solve`] drives the solvers
-//!   (the line grids refined under `numerics::refine`, the point grid fall-back, Richardson's
-//!   films and the reports): [`line`] (coupled Newton on one grid, under `numerics::newton`),
+//!   (the line grids refined under `numerics::refine`, the point grid fall-back and step-up,
+//!   Richardson's films with the point films' error estimates, and the reports): [`line`] (coupled Newton on one grid, under `numerics::newton`),
 //!   [`point`] (FAS multigrid, its cycles under the solver driver), [`fluid`]
 //!   (viscosity and density in the solvers' units), [`traction`] (sliding traction of the
 //!   converged film).

@@ -22,7 +22,7 @@ use super::formulas::{
 };
 use super::line::LineProblem;
 use super::point::{HertzEllipse, PointProblem};
-use super::solve::{solve_line, solve_point, Cells};
+use super::solve::{solve_line, solve_point, Cells, PointGrids};
 use super::traction::{self, ShearLaw, TractionLaw};
 use crate::calc::contact::hertz::{
     contact_of, BodySpec, Contact, LineSpec, MajorAxis, Method, Solution,
@@ -40,16 +40,19 @@ pub struct Ehl;
 /// hydrodynamic one (no EHL), above 10⁴ the Hertz zone is beyond any affordable grid.
 const MOES_M_RANGE: (f64, f64) = (0.1, 1e4);
 /// The point solver's range of M (its definition W(2U)^(−3/4)): below 1 the film is many
-/// times the Hertz radius's gap (rigid–hydrodynamic); above 2000 the Hertz zone needs more
-/// than 512 cells across.
-const POINT_MOES_M_RANGE: (f64, f64) = (1.0, 2000.0);
-/// Cells per direction of the point solver's finest grid per fidelity level (fast,
-/// standard, high), and the explicit range.
+/// times the Hertz radius's gap (rigid–hydrodynamic); above 5000 the Hertz zone needs more
+/// than 1024 cells across.
+const POINT_MOES_M_RANGE: (f64, f64) = (1.0, 5000.0);
+/// Cells per direction of the point solver's first grid per fidelity level (fast, standard,
+/// high), and of the finest it steps up to; the explicit range.
 const POINT_CELLS: [usize; 3] = [64, 128, 256];
-/// Estimated relative error of the fine grid's central film (a bound on the extrapolated
-/// film's) above which a point solution is warned about, per level.
-const POINT_WARN_ABOVE: [f64; 3] = [0.1, 0.03, 0.01];
-const POINT_CUSTOM_CELLS: (u32, u32) = (64, 512);
+const POINT_FINEST_CELLS: [usize; 3] = [128, 512, 1024];
+/// Estimated relative errors of the fine grid's central and minimum films (bounds on the
+/// extrapolated films') above which a point solve steps up to a grid twice as fine, and on its
+/// finest grid is warned about, per level.
+const POINT_CENTRAL_TOLERANCE: [f64; 3] = [0.1, 0.03, 0.01];
+const POINT_MIN_TOLERANCE: [f64; 3] = [0.1, 0.02, 0.005];
+const POINT_CUSTOM_CELLS: (u32, u32) = (64, 1024);
 /// Moes' material parameter range (L = 0 is isoviscous; the Moes map ends at about 25).
 const MOES_L_MAX: f64 = 50.0;
 /// Cells (coarse, fine) of the nested grids per fidelity level.
@@ -148,9 +151,12 @@ pub struct NumericalEhlInput {
     /// 256/512 cells with Richardson extrapolation, refined further while the estimated error
     /// of the fine grid's central film exceeds 5 %, 1 % or 0.2 %; or `{"grid": [cells, 1]}`
     /// for an explicit fine grid (32 … 2048 cells, the coarse grid half of it). Point: 64²,
-    /// 128² or 256² cells (65², 129², 257² nodes) extrapolated with the grid of half as many,
-    /// a warning when the estimated error exceeds the level's 10 %, 3 % or 1 %; or
-    /// `{"grid": [n, n]}` with n a power of two, 64 … 512.
+    /// 128² or 256² cells (65², 129², 257² nodes) extrapolated with the grids of half and a
+    /// quarter as many, stepped up to grids twice as fine (up to 128², 512² or 1024²) while the
+    /// estimated error of the central or the minimum film exceeds the level's 10 %/10 %,
+    /// 3 %/2 % or 1 %/0.5 % (warnings `grid_stepped_up`, and `grid_limited` when the finest
+    /// grid or the deadline leaves it above); or `{"grid": [n, n]}` with n a power of two,
+    /// 64 … 1024, not stepped up.
     #[serde(default)]
     pub fidelity: FidelityRequest,
     /// Return the pressure and film profiles along x as `profiles` (default false; the name
@@ -179,16 +185,12 @@ pub struct NumericalEhlCase {
     effects: NumericalEhlEffects,
 }
 
-/// The grids a request asks for: the line solver's nested pairs, or the point solver's finest
-/// grid with the level's error tolerance.
+/// The grids a request asks for: the line solver's nested pairs, or the point solver's grids
+/// with the level's error tolerances.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Grids {
     Line(Cells),
-    Point {
-        level: Level,
-        cells: usize,
-        tolerance: f64,
-    },
+    Point(PointGrids),
 }
 
 impl Validate for NumericalEhlInput {
@@ -337,11 +339,13 @@ fn refuse_closed_form(errors: &mut Vec<FieldError>) {
 /// The point solver's grid for a fidelity request.
 fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Option<Grids> {
     let level = |level: Level, i: usize| {
-        Some(Grids::Point {
+        Some(Grids::Point(PointGrids {
             level,
             cells: POINT_CELLS[i],
-            tolerance: POINT_WARN_ABOVE[i],
-        })
+            finest: POINT_FINEST_CELLS[i],
+            central_tolerance: POINT_CENTRAL_TOLERANCE[i],
+            min_tolerance: POINT_MIN_TOLERANCE[i],
+        }))
     };
     match fidelity {
         FidelityRequest::Level(Level::Fast) => level(Level::Fast, 0),
@@ -364,11 +368,13 @@ fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Optio
                     && n.is_power_of_two()
                     && (POINT_CUSTOM_CELLS.0..=POINT_CUSTOM_CELLS.1).contains(&n) =>
             {
-                Some(Grids::Point {
+                Some(Grids::Point(PointGrids {
                     level: Level::Standard,
                     cells: n as usize,
-                    tolerance: POINT_WARN_ABOVE[1],
-                })
+                    finest: n as usize,
+                    central_tolerance: POINT_CENTRAL_TOLERANCE[1],
+                    min_tolerance: POINT_MIN_TOLERANCE[1],
+                }))
             }
             _ => {
                 errors.push(FieldError::new(
@@ -432,6 +438,15 @@ pub struct NumericalEhlOutput {
     /// Smallest film, m (in the outlet constriction under heavy load; in a point contact the
     /// horseshoe's side lobes).
     pub min_film_thickness_m: f64,
+    /// Point contact: the estimated relative error of the central film (the fine grid's, from
+    /// the levels' films with their observed order, plus what the multigrid cycles left; it
+    /// bounds the extrapolated film's).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub central_film_error_estimate: Option<f64>,
+    /// Point contact: the estimated relative error of the minimum film, as the central's.
+    /// `solver.error_estimate` is the larger of the two.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub min_film_error_estimate: Option<f64>,
     /// Point contact: the lateral position y of the smallest film, m (one of the two
     /// symmetric side lobes).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -537,14 +552,7 @@ impl Calculation for Ehl {
             (Grids::Line(cells), Some(length)) => {
                 line_contact(&case, &hertz, fluid, alpha, cells, length, ctx)
             }
-            (
-                Grids::Point {
-                    level,
-                    cells,
-                    tolerance,
-                },
-                None,
-            ) => point_contact(&case, &hertz, fluid, alpha, (level, cells, tolerance), ctx),
+            (Grids::Point(grids), None) => point_contact(&case, &hertz, fluid, alpha, grids, ctx),
             _ => Err(CalcError::Internal(
                 "the grids do not match the contact".to_owned(),
             )),
@@ -631,6 +639,8 @@ fn line_contact(
         contact: "line".to_owned(),
         central_film_thickness_m: central,
         min_film_thickness_m: min,
+        central_film_error_estimate: None,
+        min_film_error_estimate: None,
         min_film_position_y_m: None,
         max_pressure_pa: p_max * ph,
         max_pressure_position_m: fine.x[p_index] * b,
@@ -669,7 +679,7 @@ fn point_contact(
     hertz: &Solution,
     fluid: Fluid,
     alpha: f64,
-    (level, cells, tolerance): (Level, usize, f64),
+    grids: PointGrids,
     ctx: &mut Context,
 ) -> Result<NumericalEhlOutput, CalcError> {
     let (e, rx, ph) = (
@@ -695,7 +705,7 @@ fn point_contact(
     if !(POINT_MOES_M_RANGE.0..=POINT_MOES_M_RANGE.1).contains(&m) || l > MOES_L_MAX {
         return Err(CalcError::impossible(
             "/load_n",
-            format!("Moes' M = {m:.4e} and L = {l:.4e} (point contact: M = W(2U)^−¾) are outside the point solver's map (M {}…{}, L ≤ {MOES_L_MAX}): below M = 1 the contact is rigid–hydrodynamic, above 2000 the Hertz zone cannot be resolved", POINT_MOES_M_RANGE.0, POINT_MOES_M_RANGE.1),
+            format!("Moes' M = {m:.4e} and L = {l:.4e} (point contact: M = W(2U)^−¾) are outside the point solver's map (M {}…{}, L ≤ {MOES_L_MAX}): below M = 1 the contact is rigid–hydrodynamic, above 5000 the Hertz zone cannot be resolved", POINT_MOES_M_RANGE.0, POINT_MOES_M_RANGE.1),
         ));
     }
     let k = b / a;
@@ -723,7 +733,7 @@ fn point_contact(
         e_prime: e,
     };
     let problem = PointProblem::new(fluid, &ellipse, case.speed_m_s, film_guess);
-    let run = solve_point(&problem, (level, cells, tolerance), &ctx.budget())?;
+    let run = solve_point(&problem, grids, &ctx.budget())?;
     for w in &run.warnings {
         ctx.warn(w.code, w.message.clone());
     }
@@ -791,6 +801,8 @@ fn point_contact(
         contact: "point".to_owned(),
         central_film_thickness_m: film_m(central),
         min_film_thickness_m: film_m(min),
+        central_film_error_estimate: Some(run.central_error),
+        min_film_error_estimate: Some(run.min_error),
         min_film_position_y_m: Some(min_y * b),
         max_pressure_pa: p_max * ph,
         max_pressure_position_m: fine.x[p_index % nx] * a,

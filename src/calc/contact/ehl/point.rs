@@ -24,7 +24,7 @@
 //! the coarse-grid correction. Full multigrid from a 16-cell grid started from the Hertz
 //! pressure; the coarsest and the intermediate levels only start the next (a capped number of
 //! sweeps or cycles), the last two are converged, so their films serve Richardson's
-//! extrapolation.
+//! extrapolation, and the third-finest too where it can, for the films' observed order.
 
 use super::corrections::fully_flooded_meniscus;
 use super::fluid::Fluid;
@@ -169,7 +169,8 @@ pub struct PointSolution {
     pub pressure: Vec<f64>,
     pub film: Vec<f64>,
     /// The driver's report of the cycles on this grid (`multigrid_cycles`); its residual is the
-    /// mean |residual| of the Reynolds equation over the interior, relative to the central film.
+    /// mean pressure change a relaxation step would make (the Reynolds residual over the
+    /// operator's diagonal, in units of p_h) over the interior.
     pub report: SolverReport,
     /// The central film's relative change over its last cycle, or its spread over a limit
     /// cycle (see [`History::settled`]).
@@ -380,10 +381,25 @@ impl Grid {
         r
     }
 
-    /// Mean |residual| over the interior.
+    /// The mean change of P (in units of p_h) a point relaxation step would make over the
+    /// interior: each node's residual over the operator's diagonal there, D_p + W (the
+    /// Poiseuille and the elastic wedge's, as [`Grid::relax`] divides by) — scaled as the line
+    /// solver's residual is, so that it does not grow like 1/h² with the grid.
     fn residual_norm(&self, kappa2: f64) -> f64 {
         let r = self.residuals(kappa2);
-        r.iter().map(|v| v.abs()).sum::<f64>() / ((self.nx - 2) * (self.ny - 2)) as f64
+        let l = self.local;
+        let mut sum = 0.0;
+        for j in 1..self.ny - 1 {
+            for i in 1..self.nx - 1 {
+                let k = j * self.nx + i;
+                if r[k] != 0.0 {
+                    let diagonal =
+                        self.operator(i, j, kappa2).1 + self.wedge_diagonal(i, k, |d| l[d][0]);
+                    sum += (r[k] / diagonal).abs();
+                }
+            }
+        }
+        sum / ((self.nx - 2) * (self.ny - 2)) as f64
     }
 
     /// The elastic wedge's diagonal: ∂(Couette)/∂(change at the node) for a point change
@@ -461,8 +477,9 @@ impl Grid {
 impl PointProblem {
     /// Full multigrid from [`COARSEST_CELLS`] up to `cells` per direction (a power of two ≥
     /// [`MIN_CELLS`]).
-    /// Returns the converged solutions of the second-finest and the finest level, for
-    /// Richardson's extrapolation.
+    /// Returns the converged solutions, coarsest first, of the third-finest level (when it is
+    /// above the coarsest and its cycles settle), the second-finest and the finest, for
+    /// Richardson's extrapolation and the films' observed order.
     ///
     /// `accuracy` is the relative error asked of the film: a limit cycle may span
     /// [`WANDER_SHARE`] of it.
@@ -543,10 +560,14 @@ impl PointProblem {
                 coarser_film: coarse.central_film(),
                 accuracy,
             };
-            // Levels below the last two only start the next one: they end, without failing,
+            // Levels below the last three only start the next one: they end, without failing,
             // after [`START_CYCLES`] cycles. The last two converge ([`History::settled`]) within
-            // [`MAX_CYCLES`]; their converged verdict carries the Reynolds residual.
+            // [`MAX_CYCLES`]; their converged verdict carries the Reynolds residual. The third
+            // finest (above the coarsest) converges if it can, for the observed order of the
+            // films: if its cycles do not settle it only starts the next, from where it began.
             let resolved = level + 2 >= grids.len();
+            let third = level + 3 == grids.len();
+            let start = third.then(|| (grids[level].pressure.clone(), grids[level].h00));
             let run = Driver::new(
                 "fas_multigrid_finite_difference",
                 IterationUnit::MultigridCycles,
@@ -562,7 +583,7 @@ impl PointProblem {
                     return Verdict::Diverged(f64::NAN);
                 }
                 let load_error = (g.load() / g.load_target - 1.0).abs();
-                if resolved && load_error > DIVERGED_LOAD_ERROR {
+                if (resolved || third) && load_error > DIVERGED_LOAD_ERROR {
                     return Verdict::Diverged(load_error);
                 }
                 let change =
@@ -570,25 +591,30 @@ impl PointProblem {
                 history.films.push(film);
                 history.load_errors.push(load_error);
                 if let Some(error) = history.settled() {
-                    if !resolved {
-                        return Verdict::Converged(error, change);
-                    }
-                    let residual = g.residual_norm(kappa2) / film_scale(film);
-                    return Verdict::Converged(error, residual);
+                    return Verdict::Converged(error, g.residual_norm(kappa2));
                 }
-                if !resolved && cycles >= START_CYCLES {
+                if !resolved && !third && cycles >= START_CYCLES {
                     return Verdict::Converged(f64::NAN, change);
                 }
                 Verdict::Continue(change)
             });
-            let run = match run {
-                Ok(run) => run,
-                Err(stopped) => {
+            let run = match (run, start) {
+                (Ok(run), _) => run,
+                (Err(stopped), Some((pressure, h00)))
+                    if stopped.reason() != StopReason::Deadline =>
+                {
+                    let g = &mut grids[level];
+                    g.pressure = pressure;
+                    g.h00 = h00;
+                    g.update(self);
+                    continue;
+                }
+                (Err(stopped), _) => {
                     let cycles = stopped.report.iterations;
                     return Err(failure(stopped, &grids[level], kappa2, cycles));
                 }
             };
-            if resolved {
+            if resolved || (third && !run.value.is_nan()) {
                 solved.push(grids[level].solution(run.report, run.value));
             }
         }
@@ -658,7 +684,7 @@ fn failure(stopped: Stopped, g: &Grid, kappa2: f64, cycles: u32) -> PointFailure
 }
 
 fn not_converged(g: &Grid, kappa2: f64, cycles: u32) -> PointFailure {
-    let residual = g.residual_norm(kappa2) / g.central_film().abs().max(FILM_FLOOR);
+    let residual = g.residual_norm(kappa2);
     PointFailure::NotConverged {
         residual: if residual.is_finite() {
             residual

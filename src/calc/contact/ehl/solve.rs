@@ -1,6 +1,7 @@
 //! The numerical EHL room's solves (model): the line contact's Newton solves on nested grids,
 //! refined with Richardson's estimate under [`refine`], and the point contact's multigrid with
-//! its fall-back to coarser grids under the solver driver. Warnings are returned as data; the
+//! its fall-back to coarser grids under the solver driver and its step-up to finer ones while
+//! the films' estimated errors exceed the level's tolerances. Warnings are returned as data; the
 //! reports are the drivers'.
 
 use super::line::{LineProblem, LineSolution};
@@ -11,6 +12,7 @@ use crate::numerics::driver::{Driver, Stopped, Verdict};
 use crate::numerics::interpolate::linear;
 use crate::numerics::refine::{refine, Judgement, RefineError, Refined};
 use crate::numerics::richardson;
+use std::time::Instant;
 
 /// The grid every line solve starts on (from the Hertz pressure).
 pub const FIRST_CELLS: usize = 32;
@@ -189,76 +191,221 @@ pub fn solve_line(
     })
 }
 
+/// The point solver's grids: the first, the finest a step-up may reach, and the relative errors
+/// of the central and the minimum film above which the solve steps up to a grid twice as fine.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PointGrids {
+    pub level: Level,
+    pub cells: usize,
+    pub finest: usize,
+    pub central_tolerance: f64,
+    pub min_tolerance: f64,
+}
+
 /// The point contact's result: the finest level's field, the Richardson-extrapolated central
-/// and minimum films (H = hR_x/a²) with the minimum's Y, the report (the finest level's cycles,
-/// with the estimated error) and the warnings.
+/// and minimum films (H = hR_x/a²) with the minimum's Y and their estimated relative errors, the
+/// report (the finest level's cycles, with the larger estimate) and the warnings.
 pub struct PointRun {
     pub fine: PointSolution,
     pub central: f64,
     pub min: f64,
     pub min_y: f64,
+    pub central_error: f64,
+    pub min_error: f64,
     pub report: SolverReport,
     pub warnings: Vec<Warning>,
 }
 
-/// The point problem solved on `cells` per direction and the grid of half as many
-/// ([`solve_levels`]), the films extrapolated, and the central film's error estimated:
-/// Richardson's plus what the cycles left (a limit cycle's spread, or the last cycle's change),
-/// weighted as in (4c₁ − c₀)/3; a warning when it exceeds `tolerance`.
+/// The films of one solve on `cells`² cells: extrapolated, with their estimated errors.
+struct Films {
+    cells: usize,
+    fine: PointSolution,
+    central: f64,
+    min: f64,
+    min_y: f64,
+    /// Relative errors of the films: the grid's (see [`film_error`]) plus what the cycles left.
+    central_error: f64,
+    min_error: f64,
+    /// The central film's share of the grid and of the cycles, for the warning.
+    discretisation: f64,
+    cycles_left: f64,
+    /// The second-finest level closed the minimum film: it is the finest level's, not extrapolated.
+    min_extrapolated: bool,
+}
+
+/// A film's estimated relative error on the finest level (of `films`, coarsest first), which
+/// bounds that of the extrapolated `value`: with three levels the observed order's
+/// ([`richardson::observed_order_error`]), with two Richardson's third of the difference; a
+/// coarser film that closes (≤ 0) is not in the asymptotic range, so then first order (the
+/// finest pair's whole difference). On a heavily loaded contact the minimum (in the outlet's
+/// side lobes) converges at first order on coarse grids where the central film is already
+/// second-order.
+fn film_error(films: &[f64], value: f64) -> f64 {
+    let n = films.len();
+    let (middle, fine) = (films[n - 2], films[n - 1]);
+    let error = match films.get(n.wrapping_sub(3)) {
+        _ if middle <= 0.0 => (fine - middle).abs(),
+        Some(&coarse) if coarse > 0.0 => {
+            richardson::observed_order_error(coarse, middle, fine, 2.0).0
+        }
+        Some(_) => (fine - middle).abs(),
+        None => richardson::fine_error(middle, fine).abs(),
+    };
+    error / value.abs()
+}
+
+impl Films {
+    /// The films of the converged levels (coarsest first) on `cells`² cells, or the refusal
+    /// when the finest level does not resolve them (a film closes).
+    fn of(mut solved: Vec<PointSolution>, cells: usize) -> Result<Films, CalcError> {
+        let central_films: Vec<f64> = solved.iter().map(PointSolution::central_film).collect();
+        let mins: Vec<(f64, f64, f64)> = solved.iter().map(PointSolution::min_film).collect();
+        let min_films: Vec<f64> = mins.iter().map(|m| m.0).collect();
+        let n = solved.len();
+        let (c0, c1) = (central_films[n - 2], central_films[n - 1]);
+        let (m0, (m1, _, min_y)) = (min_films[n - 2], mins[n - 1]);
+        let central = richardson::extrapolate(c0, c1);
+        if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
+            return Err(CalcError::impossible(
+                "/load_n",
+                format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
+            ));
+        }
+        // The minimum (a parabola's vertex between nodes) converges like the film, so it is
+        // extrapolated too — unless the coarser level closes it.
+        let extrapolated = richardson::extrapolate(m0, m1);
+        let min_extrapolated = m0 > 0.0 && extrapolated > 0.0;
+        let min = if min_extrapolated { extrapolated } else { m1 };
+        let fine = solved.pop().expect("the two finest levels");
+        let coarse = solved.pop().expect("the two finest levels");
+        let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
+        let discretisation = film_error(&central_films, central);
+        Ok(Films {
+            cells,
+            central_error: discretisation + cycles_left,
+            min_error: film_error(&min_films, min) + cycles_left,
+            discretisation,
+            cycles_left,
+            fine,
+            central,
+            min,
+            min_y,
+            min_extrapolated,
+        })
+    }
+
+    fn within(&self, grids: &PointGrids) -> bool {
+        self.central_error <= grids.central_tolerance && self.min_error <= grids.min_tolerance
+    }
+}
+
+/// The point problem solved on `grids.cells` per direction with the coarser levels
+/// ([`solve_levels`]), the films extrapolated and their errors estimated ([`Films`]); while an
+/// estimate exceeds its tolerance (or a film closes) the solve steps up to a grid twice as
+/// fine, up to `grids.finest`, if the budget allows the step (about four times the last
+/// solve's time): the warnings `grid_stepped_up`, and `grid_limited` when the finest grid
+/// tried, or the deadline, leaves an estimate above its tolerance.
 pub fn solve_point(
     problem: &PointProblem,
-    (level, cells, tolerance): (Level, usize, f64),
+    grids: PointGrids,
     budget: &Budget,
 ) -> Result<PointRun, CalcError> {
-    let (mut solved, cells, mut warnings) = solve_levels(problem, cells, tolerance, budget)?;
-    let fine = solved.pop().expect("the two finest levels");
-    let coarse = solved.pop().expect("the two finest levels");
-    let (c0, c1) = (coarse.central_film(), fine.central_film());
-    let ((m0, ..), (m1, _, min_y)) = (coarse.min_film(), fine.min_film());
-    let central = richardson::extrapolate(c0, c1);
-    if !(c0 > 0.0 && c1 > 0.0 && m1 > 0.0 && central > 0.0) {
-        return Err(CalcError::impossible(
-            "/load_n",
-            format!("the film is not resolved on {cells}² cells (central {c1:.3e}, minimum {m1:.3e} in units of a²/R_x): the load is too heavy for this grid; give a finer fidelity"),
-        ));
-    }
-    // The minimum (a parabola's vertex between nodes) converges like the film, so it is
-    // extrapolated too — unless the coarser grid closes it.
-    let extrapolated = richardson::extrapolate(m0, m1);
-    let min = if m0 > 0.0 && extrapolated > 0.0 {
-        extrapolated
+    let started = Instant::now();
+    let (solved, cells, mut warnings) =
+        solve_levels(problem, grids.cells, grids.central_tolerance, budget)?;
+    let first = cells;
+    // A grid the first solve fell back from is not tried again.
+    let finest = if cells < grids.cells {
+        cells
     } else {
+        grids.finest
+    };
+    let mut films = Films::of(solved, cells);
+    let mut last_time = started.elapsed();
+    let first_errors = films.as_ref().ok().map(|f| (f.central_error, f.min_error));
+    let mut cells = cells;
+    // Why the step-up ended short of the tolerances, when it did.
+    let mut limited_by = None;
+    while !films.as_ref().is_ok_and(|f| f.within(&grids)) && 2 * cells <= finest {
+        let next = 2 * cells;
+        if !budget.allows(last_time.mul_f64(STEP_UP_COST)) {
+            limited_by = Some(format!(
+                "the deadline leaves too little time for {next}² cells"
+            ));
+            break;
+        }
+        let step = Instant::now();
+        match problem.solve(next, grids.central_tolerance, budget) {
+            Ok(solved) => {
+                films = Films::of(solved, next);
+                cells = next;
+                last_time = step.elapsed();
+            }
+            Err(PointFailure::DeadlineExceeded) => return Err(CalcError::DeadlineExceeded),
+            Err(PointFailure::NotConverged {
+                residual, cycles, ..
+            }) => {
+                limited_by = Some(format!("the multigrid cycles on {next}² cells stalled or diverged after {cycles} cycles with scaled residual {residual:.3e}"));
+                break;
+            }
+        }
+    }
+    let films = films?;
+    if films.cells != first {
+        let before = first_errors.map_or_else(
+            || "a film closed".to_owned(),
+            |(c, m)| {
+                format!(
+                    "the estimated errors were {:.2} % (central) and {:.2} % (minimum)",
+                    c * 100.0,
+                    m * 100.0
+                )
+            },
+        );
+        warnings.push(Warning {
+            code: "grid_stepped_up",
+            message: format!("on {first}² cells {before}, above the level's {:.1} % and {:.1} %: the solve stepped up to {}² cells", grids.central_tolerance * 100.0, grids.min_tolerance * 100.0, films.cells),
+        });
+    }
+    if !films.min_extrapolated {
         warnings.push(Warning {
             code: "min_film_not_extrapolated",
-            message: format!("the minimum film closes on {}² cells, so the {cells}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", cells / 2),
+            message: format!("the minimum film closes on {}² cells, so the {}² cells' minimum is reported without Richardson's extrapolation: it may be off by tens of per cent; a higher fidelity resolves it", films.cells / 2, films.cells),
         });
-        m1
-    };
-    let discretisation = (richardson::fine_error(c0, c1) / central).abs();
-    let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
-    let error = discretisation + cycles_left;
-    let report = fine
+    }
+    if !films.within(&grids) {
+        let why = limited_by.map_or_else(
+            || format!("on {}² cells, the finest this level tries", films.cells),
+            |why| format!("on {}² cells ({why})", films.cells),
+        );
+        warnings.push(Warning {
+            code: "grid_limited",
+            message: format!("the films' estimated errors, central {:.2} % ({:.2} % the grid's, {:.2} % the cycles') and minimum {:.2} %, exceed the level's {:.1} % and {:.1} % {why}: the Hertz zone is thin for this grid; a higher fidelity resolves it", films.central_error * 100.0, films.discretisation * 100.0, films.cycles_left * 100.0, films.min_error * 100.0, grids.central_tolerance * 100.0, grids.min_tolerance * 100.0),
+        });
+    }
+    let report = films
+        .fine
         .report
         .clone()
         .named("fas_multigrid_finite_difference_richardson")
-        .at(level)
-        .on_grid(vec![cells as u32, cells as u32])
-        .with_error_estimate(Some(error));
-    if error > tolerance {
-        warnings.push(Warning {
-            code: "grid_limited",
-            message: format!("the central film's estimated error {:.2} % ({:.2} % the grid's, {:.2} % the cycles') exceeds the level's {:.1} % on {cells}² cells: the Hertz zone is thin for this grid; a higher fidelity resolves it", error * 100.0, discretisation * 100.0, cycles_left * 100.0, tolerance * 100.0),
-        });
-    }
+        .at(grids.level)
+        .on_grid(vec![films.cells as u32, films.cells as u32])
+        .with_error_estimate(Some(films.central_error.max(films.min_error)));
     Ok(PointRun {
-        fine,
-        central,
-        min,
-        min_y,
+        fine: films.fine,
+        central: films.central,
+        min: films.min,
+        min_y: films.min_y,
+        central_error: films.central_error,
+        min_error: films.min_error,
         report,
         warnings,
     })
 }
+
+/// A step up to a grid twice as fine costs about four times the last solve (four times the
+/// nodes, the same cycles): the step is taken only when the budget allows this multiple.
+const STEP_UP_COST: f64 = 4.5;
 
 /// The point problem's two finest levels on `cells` per direction, or on half as many (and so
 /// on, down to [`point::MIN_CELLS`]) when the finest level's cycles stall or diverge (strongly
