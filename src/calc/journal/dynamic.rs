@@ -878,11 +878,50 @@ impl Calculation for DynamicJournal {
             OrbitError::Stopped(report) => Stopped { report }.into(),
         })?;
         let mut report = orbit.report.clone().at(case.level);
-        if let FilmChoice::Finite { mesh, .. } = case.film {
+        if let FilmChoice::Finite { mesh, density } = case.film {
+            // The grid's error: the same run on the table of the half mesh, the minimum films'
+            // difference over 3 (Richardson, second order) when the mesh halves exactly, else
+            // the whole difference, times the journal room's safety factor 1.25; relative to
+            // the minimum film. None when the coarse film cannot carry the cycle.
+            let coarse = FiniteSqueezeFilm {
+                l_over_d,
+                mesh: mesh.coarse(),
+            };
+            let coarse_film = OrbitFilm::Finite {
+                table: Arc::new(ImpedanceTable::build(coarse, density, &budget)?),
+                speed_sum: 1.0,
+            };
+            let coarse_orbit = orbit::run(
+                &Problem {
+                    film: coarse_film,
+                    ..problem.clone()
+                },
+                Start {
+                    position: start,
+                    velocity,
+                },
+                until,
+                case.tolerance,
+                0,
+                &budget,
+            );
+            let estimate = coarse_orbit.ok().map(|coarse| {
+                let (fine_film, coarse_film) = (
+                    1.0 - orbit.window.max_eccentricity,
+                    1.0 - coarse.window.max_eccentricity,
+                );
+                let share = if mesh.halves_exactly() {
+                    1.25 / 3.0
+                } else {
+                    1.25
+                };
+                share * (fine_film - coarse_film).abs() / fine_film
+            });
             report = report
                 .named("radau_iia5_on_finite_volume_active_set_impedance_table")
                 .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
-                .with_film_solves(budget.field_solves());
+                .with_film_solves(budget.field_solves())
+                .with_error_estimate(estimate);
         }
         report.elapsed_ms = started.elapsed().as_secs_f64() * 1e3;
         ctx.report(report);
@@ -1069,6 +1108,34 @@ mod tests {
         let v = ok::<DynamicJournal>(&body);
         assert!(result_field(&v, "time_to_target_s") > 0.0);
         assert_eq!(v["result"]["steady_orbit"], json!(false));
+    }
+
+    #[test]
+    fn the_finite_films_error_estimate_bounds_the_error_of_its_minimum_film() {
+        // The grid's error from the half mesh's table (Richardson): against `high` (192 × 24,
+        // four times finer than `fast`), `fast`'s and `standard`'s estimates bound their
+        // minimum films' errors, and `high`'s is the smallest.
+        let mut body = example();
+        body["film_model"] = json!("finite");
+        let run = |fidelity: &str| {
+            let mut b = body.clone();
+            b["fidelity"] = json!(fidelity);
+            let v = ok::<DynamicJournal>(&b);
+            (
+                result_field(&v, "min_film_m"),
+                v["solver"]["error_estimate"].as_f64().unwrap(),
+            )
+        };
+        let (reference, high) = run("high");
+        let mut last = f64::INFINITY;
+        for fidelity in ["fast", "standard"] {
+            let (film, estimate) = run(fidelity);
+            let error = (film / reference - 1.0).abs();
+            assert!(error <= estimate, "{fidelity}: {error} > {estimate}");
+            assert!(estimate < last);
+            last = estimate;
+        }
+        assert!(high < last, "{high} {last}");
     }
 
     #[test]
