@@ -6,7 +6,14 @@
 //! cargo bench --bench http_load                           # every workload at 1, 16, 64 clients
 //! cargo bench --bench http_load -- --seconds 5 --clients 1,16,64,128
 //! cargo bench --bench http_load -- --url http://host:8080 # a server that is already running
+//! cargo bench --bench http_load -- --overload --seconds 5   # twice capacity (below)
 //! ```
+//!
+//! `--overload` measures the service at twice its capacity: for each numerical workload it first
+//! finds the capacity (as many closed-loop clients as the machine has cores, served/s), then
+//! sends requests open-loop at twice that rate, each with a client deadline
+//! (`x-stribeck-deadline-ms`, 1 s) and no retry, and reports the goodput (answers 200 within the
+//! deadline, per second), the shed rate (503 share), the 504 share and the p99 of the served.
 //!
 //! A client that is shed waits the `Retry-After` delay, as a well-behaved client does; one that
 //! retried at once would measure the load generator, not the service. The clients share the
@@ -101,6 +108,7 @@ struct Tally {
 
 struct Args {
     seconds: f64,
+    overload: bool,
     clients: Vec<usize>,
     url: Option<String>,
     only: Option<String>,
@@ -109,6 +117,7 @@ struct Args {
 fn args() -> Args {
     let mut a = Args {
         seconds: 3.0,
+        overload: false,
         clients: vec![1, 16, 64],
         url: None,
         only: None,
@@ -126,6 +135,7 @@ fn args() -> Args {
                     .collect();
             }
             "--url" => a.url = it.next(),
+            "--overload" => a.overload = true,
             "--only" => a.only = it.next(),
             // `cargo bench` passes `--bench`; a filter word may follow.
             "--bench" => {}
@@ -267,6 +277,116 @@ async fn run(
     out
 }
 
+/// The client deadline of the overload rows.
+const CLIENT_DEADLINE: Duration = Duration::from_millis(1000);
+
+/// What the open-loop requests of an overload row saw.
+#[derive(Default)]
+struct Open {
+    sent: u64,
+    /// Latencies of the answers 200 (within the client deadline or not).
+    served: Vec<Duration>,
+    shed: u64,
+    late: u64,
+    other: u64,
+}
+
+/// Send `kind` open-loop at `rate` per second for `seconds`: one request per tick whatever the
+/// answers, each under the client deadline, none retried.
+async fn open_loop(
+    client: &reqwest::Client,
+    url: &str,
+    kind: &Kind,
+    rate: f64,
+    seconds: f64,
+) -> Open {
+    let start = Instant::now();
+    let n = (rate * seconds).round() as u64;
+    let mut tasks = tokio::task::JoinSet::new();
+    for i in 0..n {
+        let at = start + Duration::from_secs_f64(i as f64 / rate);
+        tokio::time::sleep_until(at.into()).await;
+        let req = client
+            .post(format!("{url}{}", kind.path))
+            .header("content-type", "application/json")
+            .header(
+                "x-stribeck-deadline-ms",
+                CLIENT_DEADLINE.as_millis().to_string(),
+            )
+            .timeout(CLIENT_DEADLINE + Duration::from_secs(5))
+            .body(kind.body.as_ref().clone());
+        tasks.spawn(async move {
+            let sent = Instant::now();
+            let res = req.send().await;
+            let status = match res {
+                Ok(r) => {
+                    let s = r.status().as_u16();
+                    if r.bytes().await.is_ok() {
+                        s
+                    } else {
+                        0
+                    }
+                }
+                Err(_) => 0,
+            };
+            (status, sent.elapsed())
+        });
+    }
+    let mut o = Open {
+        sent: n,
+        ..Open::default()
+    };
+    while let Some(done) = tasks.join_next().await {
+        match done.expect("a request task") {
+            (200, took) => o.served.push(took),
+            (503, _) => o.shed += 1,
+            (504, _) => o.late += 1,
+            _ => o.other += 1,
+        }
+    }
+    o.served.sort();
+    o
+}
+
+/// The overload table: capacity, then twice capacity, per numerical workload.
+async fn overload(client: &reqwest::Client, url: &str, seconds: f64, cores: usize) {
+    println!("| requests | capacity /s | offered /s | goodput /s | 503 % | 504 % | p99 served ms | other |");
+    println!("|---|--:|--:|--:|--:|--:|--:|--:|");
+    let heavy = ["standard", "high"].map(|f| Kind {
+        name: if f == "standard" {
+            "journal, standard"
+        } else {
+            "journal, high"
+        },
+        path: JOURNAL_PATH,
+        body: Arc::new(journal(f)),
+    });
+    for kind in heavy {
+        let w = Workload {
+            name: "capacity",
+            kinds: vec![kind.clone()],
+        };
+        run(client, url, &w, cores, 0.3).await;
+        let measured = run(client, url, &w, cores, seconds).await;
+        let capacity = measured[0].2.served.len() as f64 / seconds;
+        let rate = 2.0 * capacity;
+        let o = open_loop(client, url, &kind, rate, seconds).await;
+        let good = o.served.iter().filter(|&&t| t <= CLIENT_DEADLINE).count();
+        let share = |k: u64| 100.0 * k as f64 / o.sent.max(1) as f64;
+        println!(
+            "| {} | {:.0} | {:.0} | {:.0} | {:.1} | {:.1} | {} | {} |",
+            kind.name,
+            capacity,
+            o.sent as f64 / seconds,
+            good as f64 / seconds,
+            share(o.shed),
+            share(o.late),
+            percentile(&o.served, 0.99),
+            o.other,
+        );
+    }
+}
+
 /// The `p` quantile of sorted latencies in ms ("–" when nothing was served).
 fn percentile(sorted: &[Duration], p: f64) -> String {
     if sorted.is_empty() {
@@ -298,6 +418,10 @@ fn main() {
             "HTTP load against {url}: {cores} cores shared by server and clients, {} s per row\n",
             args.seconds
         );
+        if args.overload {
+            overload(&client, &url, args.seconds, cores.max(1)).await;
+            return;
+        }
         println!("| workload | requests | clients | served/s | p50 ms | p99 ms | 503 % | other |");
         println!("|---|---|--:|--:|--:|--:|--:|--:|");
         for w in workloads() {

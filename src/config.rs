@@ -35,11 +35,25 @@ pub struct Config {
     pub queue_wait: Duration,
     /// `STRIBECK_WORKERS`, default 2 × cores: threads of the blocking pool that runs solvers.
     pub workers: usize,
+    /// `STRIBECK_HEADER_TIMEOUT_MS`, default 10 000: a connection whose request head is not
+    /// whole this long after it began is closed (a slow-header client holds no socket for long).
+    pub header_timeout: Duration,
+    /// `STRIBECK_BODY_TIMEOUT_MS`, default 30 000: a request body not whole this long after the
+    /// handler began reading it answers 408.
+    pub body_timeout: Duration,
+    /// `STRIBECK_DRAIN_MS`, default 30 000: after SIGTERM/SIGINT, how long in-flight requests may
+    /// finish (`/ready` answers 503 meanwhile); then every solve still running or queued is
+    /// cancelled and answered 503 `shutting-down`.
+    pub drain: Duration,
     /// `STRIBECK_LOG`: `text` (default) or `json`.
     pub log: LogFormat,
 }
 
 impl Default for Config {
+    /// The counts scale with the cores this process may use: on Linux,
+    /// `std::thread::available_parallelism` honours the cgroup CPU quota (`cpu.max`, v1
+    /// `cpu.cfs_quota_us`) and the affinity mask, so a container limited to `cpus: 2` on a
+    /// 64-core host gets 2 solver permits, not 64.
     fn default() -> Self {
         let cores = std::thread::available_parallelism().map_or(2, |n| n.get());
         Config {
@@ -51,6 +65,9 @@ impl Default for Config {
             heavy_queue: 4 * cores,
             queue_wait: Duration::from_millis(250),
             workers: 2 * cores,
+            header_timeout: Duration::from_secs(10),
+            body_timeout: Duration::from_secs(30),
+            drain: Duration::from_secs(30),
             log: LogFormat::Text,
         }
     }
@@ -106,6 +123,15 @@ impl Config {
         if let Some(n) = parse::<usize>("STRIBECK_WORKERS", get("STRIBECK_WORKERS"))? {
             c.workers = n.max(1);
         }
+        for (name, slot) in [
+            ("STRIBECK_HEADER_TIMEOUT_MS", &mut c.header_timeout),
+            ("STRIBECK_BODY_TIMEOUT_MS", &mut c.body_timeout),
+            ("STRIBECK_DRAIN_MS", &mut c.drain),
+        ] {
+            if let Some(ms) = parse::<u64>(name, get(name))? {
+                *slot = Duration::from_millis(ms.max(1));
+            }
+        }
         match get("STRIBECK_LOG").as_deref().map(str::trim) {
             None | Some("") | Some("text") => {}
             Some("json") => c.log = LogFormat::Json,
@@ -136,6 +162,9 @@ mod tests {
                     "STRIBECK_HEAVY_QUEUE" => "0",
                     "STRIBECK_QUEUE_WAIT_MS" => "40",
                     "STRIBECK_WORKERS" => "5",
+                    "STRIBECK_HEADER_TIMEOUT_MS" => "300",
+                    "STRIBECK_BODY_TIMEOUT_MS" => "400",
+                    "STRIBECK_DRAIN_MS" => "500",
                     "STRIBECK_LOG" => "json",
                     _ => return None,
                 }
@@ -149,6 +178,14 @@ mod tests {
         assert_eq!((c.heavy_permits, c.heavy_queue), (1, 0));
         assert_eq!(c.queue_wait, Duration::from_millis(40));
         assert_eq!(c.log, LogFormat::Json);
+        assert_eq!(
+            (c.header_timeout, c.body_timeout, c.drain),
+            (
+                Duration::from_millis(300),
+                Duration::from_millis(400),
+                Duration::from_millis(500)
+            )
+        );
     }
 
     #[test]

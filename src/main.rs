@@ -5,11 +5,9 @@
 //! - `stribeck openapi [--version 3.0]`: the OpenAPI document (what `openapi/openapi.json`
 //!   holds; its 3.0 rendering `openapi/openapi-3.0.json`).
 
-use std::future::IntoFuture;
 use std::io::{Read, Write};
 use std::process::ExitCode;
-use std::sync::atomic::Ordering;
-use std::time::{Duration, Instant};
+use std::time::Instant;
 
 use clap::{Parser, Subcommand};
 use stribeck::calc::{self, Failure};
@@ -174,38 +172,15 @@ fn serve(config: Config) -> ExitCode {
     }
 }
 
-/// How long in-flight requests may take to drain after SIGINT/SIGTERM.
-const DRAIN: Duration = Duration::from_secs(30);
-
 async fn serve_async(config: Config) -> Result<(), String> {
     let addr = config.addr;
     let listener = tokio::net::TcpListener::bind(addr)
         .await
         .map_err(|e| format!("binding {addr}: {e}"))?;
     tracing::info!(%addr, docs = %format!("http://{addr}/docs"), "stribeck listening");
-    let state = AppState::new(config);
-    let ready = state.ready.clone();
-    let app = http::router_with_state(state);
-    let (stop_tx, stop_rx) = tokio::sync::oneshot::channel::<()>();
-    let server = axum::serve(listener, app).with_graceful_shutdown(async {
-        let _ = stop_rx.await;
-    });
-    let mut server = std::pin::pin!(server.into_future());
-    tokio::select! {
-        r = &mut server => return r.map_err(|e| e.to_string()),
-        _ = shutdown_signal() => {}
-    }
-    // Stop taking traffic, let in-flight requests finish, but never hang on them.
-    ready.store(false, Ordering::Relaxed);
-    tracing::info!("shutting down: draining for at most {DRAIN:?}");
-    let _ = stop_tx.send(());
-    match tokio::time::timeout(DRAIN, server).await {
-        Ok(r) => r.map_err(|e| e.to_string()),
-        Err(_) => {
-            tracing::warn!("drain took longer than {DRAIN:?}; exiting");
-            Ok(())
-        }
-    }
+    http::serve::run(listener, AppState::new(config), shutdown_signal()).await;
+    tracing::info!("stopped");
+    Ok(())
 }
 
 async fn shutdown_signal() {

@@ -1,12 +1,14 @@
-//! The generic handler: content type, body, admission by cost (`admission`), the blocking pool
-//! under a deadline, and the mapping of every outcome to a response.
+//! The generic handler: content type, body (read under `body_timeout`), admission by cost
+//! (`admission`), the blocking pool under a deadline, and the mapping of every outcome to a
+//! response. A solve is cancelled (its flag set) when its deadline passes, when the drain time
+//! is up at shutdown (503 `shutting-down`), and when its client goes away (the handler future is
+//! dropped), so no core keeps working for nobody.
 
 use std::sync::atomic::{AtomicBool, Ordering};
 use std::sync::Arc;
 use std::time::{Duration, Instant};
 
-use axum::body::Bytes;
-use axum::extract::rejection::BytesRejection;
+use axum::body::{Body, Bytes};
 use axum::extract::State;
 use axum::http::{header, HeaderMap, HeaderValue, StatusCode};
 use axum::response::{IntoResponse, Response};
@@ -23,8 +25,9 @@ pub async fn run(
     entry: &'static Entry,
     State(state): State<AppState>,
     headers: HeaderMap,
-    body: Result<Bytes, BytesRejection>,
+    body: Body,
 ) -> Response {
+    let _in_flight = state.drain.enter();
     if !is_json(&headers) {
         return Problem::new(
             StatusCode::UNSUPPORTED_MEDIA_TYPE,
@@ -34,26 +37,9 @@ pub async fn run(
         )
         .into_response();
     }
-    let body = match body {
+    let body = match read_body(body, &state).await {
         Ok(b) => b,
-        Err(rejection) if rejection.status() == StatusCode::PAYLOAD_TOO_LARGE => {
-            return Problem::new(
-                StatusCode::PAYLOAD_TOO_LARGE,
-                "body-too-large",
-                "Request body too large",
-                format!("the body exceeds {} bytes", state.config.max_body_bytes),
-            )
-            .into_response()
-        }
-        Err(rejection) => {
-            return Problem::new(
-                StatusCode::BAD_REQUEST,
-                "unreadable",
-                "Unreadable request body",
-                rejection.body_text(),
-            )
-            .into_response()
-        }
+        Err(problem) => return problem.into_response(),
     };
     // The deadline runs from arrival: time spent waiting for a solver permit counts against it.
     let arrived = Instant::now();
@@ -70,7 +56,11 @@ pub async fn run(
         }
     };
     let cost = entry.cost(&body);
-    let ticket = match state.admission.admit(cost, deadline).await {
+    let admitted = tokio::select! {
+        admitted = state.admission.admit(cost, deadline) => admitted,
+        () = state.drain.cancelled() => return Problem::shutting_down().into_response(),
+    };
+    let ticket = match admitted {
         Ok(ticket) => ticket,
         Err(refusal) => {
             state
@@ -87,8 +77,8 @@ pub async fn run(
     }
     let remaining = deadline.saturating_duration_since(Instant::now());
 
-    let cancelled = Arc::new(AtomicBool::new(false));
-    let flag = cancelled.clone();
+    let cancelled = CancelOnDrop(Arc::new(AtomicBool::new(false)));
+    let flag = cancelled.0.clone();
     let span = tracing::Span::current();
     // The ticket moves into the task: a request that timed out still holds its permit until its
     // solver has seen the cancellation, so admission counts real work.
@@ -96,14 +86,12 @@ pub async fn run(
         let _ticket = ticket;
         span.in_scope(|| (entry.execute)(&body, deadline, flag))
     });
-    let outcome = tokio::time::timeout(remaining, task)
-        .instrument(tracing::Span::current())
-        .await;
+    let outcome = tokio::select! {
+        outcome = tokio::time::timeout(remaining, task).instrument(tracing::Span::current()) => outcome,
+        () = state.drain.cancelled() => return Problem::shutting_down().into_response(),
+    };
     match outcome {
-        Err(_elapsed) => {
-            cancelled.store(true, Ordering::Relaxed);
-            Problem::deadline().into_response()
-        }
+        Err(_elapsed) => Problem::deadline().into_response(),
         Ok(Err(join)) => {
             let mut res = Problem::internal().into_response();
             res.extensions_mut()
@@ -128,6 +116,40 @@ pub async fn run(
             }
             res
         }
+    }
+}
+
+/// Sets a solve's cancel flag when the handler ends, however it ends: with a response, or
+/// dropped because the client went away or the drain time is up. The solver sees it at its next
+/// budget check and gives its permit back.
+struct CancelOnDrop(Arc<AtomicBool>);
+
+impl Drop for CancelOnDrop {
+    fn drop(&mut self) {
+        self.0.store(true, Ordering::Relaxed);
+    }
+}
+
+/// The whole body, at most `max_body_bytes` (else 413), within `body_timeout` (else 408).
+async fn read_body(body: Body, state: &AppState) -> Result<Bytes, Problem> {
+    use http_body_util::{BodyExt, LengthLimitError, Limited};
+    let limit = state.config.max_body_bytes;
+    let read = Limited::new(body, limit).collect();
+    match tokio::time::timeout(state.config.body_timeout, read).await {
+        Err(_elapsed) => Err(Problem::body_timeout(state.config.body_timeout)),
+        Ok(Ok(collected)) => Ok(collected.to_bytes()),
+        Ok(Err(e)) if e.is::<LengthLimitError>() => Err(Problem::new(
+            StatusCode::PAYLOAD_TOO_LARGE,
+            "body-too-large",
+            "Request body too large",
+            format!("the body exceeds {limit} bytes"),
+        )),
+        Ok(Err(e)) => Err(Problem::new(
+            StatusCode::BAD_REQUEST,
+            "unreadable",
+            "Unreadable request body",
+            format!("reading the body failed: {e}"),
+        )),
     }
 }
 

@@ -1,8 +1,6 @@
 //! The service's own endpoints: health, readiness, metrics, the calculation listing, and the
 //! problem answers for unknown routes and methods.
 
-use std::sync::atomic::Ordering;
-
 use axum::extract::State;
 use axum::http::{header, StatusCode, Uri};
 use axum::response::{IntoResponse, Response};
@@ -37,7 +35,7 @@ pub async fn health() -> Json<HealthStatus> {
 
 /// `GET /ready`: the replica takes traffic (503 once shutdown has begun).
 pub async fn ready(State(state): State<AppState>) -> Response {
-    if state.ready.load(Ordering::Relaxed) {
+    if !state.drain.is_draining() {
         Json(ReadyStatus { status: "ready" }).into_response()
     } else {
         Problem::new(

@@ -3,13 +3,15 @@
 
 pub mod admission;
 mod calculate;
+pub mod drain;
 mod meta;
 pub mod metrics;
 pub mod openapi;
 pub mod openapi30;
 mod problem;
+pub mod serve;
 
-use std::sync::atomic::{AtomicBool, AtomicU64, Ordering};
+use std::sync::atomic::{AtomicU64, Ordering};
 use std::sync::Arc;
 use std::time::Instant;
 
@@ -31,6 +33,7 @@ pub use problem::{InternalCause, Problem};
 use crate::calc::{Entry, REGISTRY};
 use crate::config::Config;
 use admission::Admission;
+use drain::Drain;
 use metrics::Metrics;
 
 /// Shared state of one server.
@@ -40,8 +43,9 @@ pub struct AppState {
     pub metrics: Arc<Metrics>,
     /// Which calculations run now, wait, or are shed with 503 (by cost).
     pub admission: Arc<Admission>,
-    /// False once shutdown has begun: `/ready` then answers 503 so balancers drain this replica.
-    pub ready: Arc<AtomicBool>,
+    /// Shutdown: `/ready` answers 503 once it has begun, so balancers drain this replica; the
+    /// binary cancels what is still in flight when the drain time is up.
+    pub drain: Arc<Drain>,
 }
 
 impl AppState {
@@ -50,7 +54,7 @@ impl AppState {
             admission: Arc::new(Admission::new(&config)),
             config: Arc::new(config),
             metrics: Arc::new(Metrics::default()),
-            ready: Arc::new(AtomicBool::new(true)),
+            drain: Arc::new(Drain::default()),
         }
     }
 }
@@ -60,7 +64,7 @@ pub fn router(config: Config) -> Router {
     router_with_state(AppState::new(config))
 }
 
-/// The whole service around an existing state (the binary keeps a handle to flip `ready`).
+/// The whole service around an existing state (the binary keeps a handle to drain it).
 pub fn router_with_state(state: AppState) -> Router {
     router_with(state, REGISTRY)
 }

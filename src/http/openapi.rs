@@ -247,7 +247,7 @@ fn effect_decisions(entries: &[Entry]) -> Schema {
 
 /// The 503 of a calculation, as its admission class has it (`http::admission`).
 fn shed_text(entry: &Entry) -> String {
-    let retry = "Retry after the Retry-After delay (seconds).";
+    let retry = "Or the replica is shutting down and cancelled the calculation at the end of its drain (`shutting-down`). Retry after the Retry-After delay (seconds).";
     match entry.costing {
         Costing::Light => {
             format!("The replica is full: too many calculations are in progress. {retry}")
@@ -264,7 +264,7 @@ fn shed_text(entry: &Entry) -> String {
 }
 
 /// A calculation's shed answer: problem+json with the `Retry-After` header `Problem::overloaded`
-/// sets.
+/// and `Problem::shutting_down` set.
 fn shed_response(entry: &Entry) -> ResponseBuilder {
     problem_response(&shed_text(entry)).header(
         "Retry-After",
@@ -323,6 +323,7 @@ fn calculation_operation(entry: &Entry, input: &str, envelope_name: &str) -> Ope
         .request_body(Some(body))
         .response("200", json_response("The result in its envelope.", schema_ref(envelope_name)))
         .response("400", problem_response("The body is not JSON, or the deadline header is not a whole number of milliseconds."))
+        .response("408", problem_response("The body did not arrive whole within the body timeout (STRIBECK_BODY_TIMEOUT_MS)."))
         .response("413", problem_response("The body exceeds the size limit."))
         .response("415", problem_response("The body is not sent as application/json."))
         .response("422", problem_response("Invalid input (each field named by a JSON pointer), a physically impossible case, or a solver that did not converge."))

@@ -82,6 +82,32 @@ impl Problem {
         p
     }
 
+    /// 503: the replica shut down before the calculation finished (it was cancelled at the
+    /// end of the drain); another replica can take the retry.
+    pub fn shutting_down() -> Problem {
+        let mut p = Problem::new(
+            StatusCode::SERVICE_UNAVAILABLE,
+            "shutting-down",
+            "Shutting down",
+            "this replica shut down before the calculation finished; retry, another replica will take it",
+        );
+        p.retry_after_s = Some(1);
+        p
+    }
+
+    /// 408: the request body did not arrive whole within `STRIBECK_BODY_TIMEOUT_MS`.
+    pub fn body_timeout(limit: std::time::Duration) -> Problem {
+        Problem::new(
+            StatusCode::REQUEST_TIMEOUT,
+            "body-timeout",
+            "Request body timeout",
+            format!(
+                "the request body did not arrive whole within {} ms",
+                limit.as_millis()
+            ),
+        )
+    }
+
     pub fn internal() -> Problem {
         Problem::new(
             StatusCode::INTERNAL_SERVER_ERROR,

@@ -266,3 +266,21 @@ async fn a_queued_solve_is_shed_when_no_permit_frees_before_its_deadline_or_the_
     let r = solve(&app, 302, &[]).await;
     assert_eq!(r.status, 200, "{}", r.text);
 }
+
+/// A client that goes away mid-solve frees its solver (issue 12, item 11: dropping the handler
+/// never set the cancel flag, so the solve kept its permit and a core until its own deadline).
+#[tokio::test]
+async fn an_abandoned_solve_frees_its_permit() {
+    let app = spawn_with(one_permit(0), Some(ROOMS)).await;
+    // Gate 401 never opens: only a cancellation ends this solve before its 600 s deadline.
+    let abandoned = spawn_solve(&app, 401);
+    until(&app, "stribeck_heavy_running", 1).await;
+    abandoned.abort();
+    assert!(matches!(abandoned.await, Err(e) if e.is_cancelled()));
+    until(&app, "stribeck_heavy_running", 0).await;
+
+    // The permit serves the next client.
+    open(402);
+    let next = solve(&app, 402, &[]).await;
+    assert_eq!(next.status, 200, "{}", next.text);
+}

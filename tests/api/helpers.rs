@@ -33,12 +33,15 @@ pub async fn spawn_app() -> TestApp {
 pub async fn spawn_with(config: Config, calculations: Option<&'static [Entry]>) -> TestApp {
     let listener = tokio::net::TcpListener::bind("127.0.0.1:0").await.unwrap();
     let base = format!("http://{}", listener.local_addr().unwrap());
+    let header_timeout = config.header_timeout;
     let state = AppState::new(config);
     let app = match calculations {
         Some(list) => http::router_with(state, list),
         None => http::router_with_state(state),
     };
-    tokio::spawn(async move { axum::serve(listener, app).await.unwrap() });
+    // The binary's own accept loop (header timeout included), never stopped.
+    let forever = std::future::pending();
+    tokio::spawn(http::serve::serve(listener, app, header_timeout, forever));
     TestApp {
         base,
         client: reqwest::Client::new(),

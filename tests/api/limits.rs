@@ -1,5 +1,6 @@
 //! The service protects itself: a late calculation is stopped (504), a flood is shed (503), a
-//! panicking or non-finite calculation answers 500 without internals, and the server keeps serving.
+//! panicking or non-finite calculation answers 500 without internals, a slow client's connection
+//! is closed (head) or answered 408 (body), and the server keeps serving.
 
 use serde::{Deserialize, Serialize};
 use serde_json::json;
@@ -251,4 +252,85 @@ async fn stribeck_run_uses_the_same_path() {
         (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()).unwrap();
     let direct: serde_json::Value = serde_json::from_slice(&direct.body).unwrap();
     assert_eq!(http.body["result"], direct["result"]);
+}
+
+/// A raw connection to the test server that sent `bytes` and then stalls.
+async fn stalled_client(app: &crate::helpers::TestApp, bytes: &str) -> tokio::net::TcpStream {
+    use tokio::io::AsyncWriteExt;
+    let addr = app.base.trim_start_matches("http://");
+    let mut stream = tokio::net::TcpStream::connect(addr).await.unwrap();
+    stream.write_all(bytes.as_bytes()).await.unwrap();
+    stream
+}
+
+/// Everything the server sends until it closes the connection (or 20 s pass: a failure).
+async fn read_until_closed(stream: &mut tokio::net::TcpStream) -> String {
+    use tokio::io::AsyncReadExt;
+    let mut reply = Vec::new();
+    let read = tokio::time::timeout(
+        std::time::Duration::from_secs(20),
+        stream.read_to_end(&mut reply),
+    )
+    .await;
+    assert!(read.is_ok(), "the connection is still open after 20 s");
+    String::from_utf8_lossy(&reply).into_owned()
+}
+
+/// A request head that never ends is cut off after the header timeout (issue 12, item 13: 300
+/// such connections stayed open for over 35 s).
+#[tokio::test]
+async fn a_partial_request_head_is_closed_after_the_header_timeout() {
+    let app = spawn_with(
+        Config {
+            header_timeout: std::time::Duration::from_millis(300),
+            ..test_config()
+        },
+        None,
+    )
+    .await;
+    let started = std::time::Instant::now();
+    let mut stream = stalled_client(
+        &app,
+        "POST /v1/lubricants/viscosity HTTP/1.1\r\nhost: x\r\n",
+    )
+    .await;
+    let reply = read_until_closed(&mut stream).await;
+    assert!(
+        started.elapsed() >= std::time::Duration::from_millis(250),
+        "closed before the timeout"
+    );
+    assert!(
+        reply.is_empty() || reply.starts_with("HTTP/1.1 408"),
+        "{reply}"
+    );
+    // The server still serves.
+    assert_eq!(app.get("/health").await.status, 200);
+}
+
+/// A body that stops short of its Content-Length answers 408 after the body timeout.
+#[tokio::test]
+async fn a_partial_body_answers_408_after_the_body_timeout() {
+    let app = spawn_with(
+        Config {
+            body_timeout: std::time::Duration::from_millis(300),
+            ..test_config()
+        },
+        None,
+    )
+    .await;
+    let started = std::time::Instant::now();
+    let mut stream = stalled_client(
+        &app,
+        "POST /v1/lubricants/viscosity HTTP/1.1\r\nhost: x\r\ncontent-type: application/json\r\ncontent-length: 100\r\n\r\n{\"lubricant\"",
+    )
+    .await;
+    let reply = read_until_closed(&mut stream).await;
+    assert!(
+        started.elapsed() >= std::time::Duration::from_millis(250),
+        "answered before the timeout"
+    );
+    assert!(reply.starts_with("HTTP/1.1 408"), "{reply}");
+    assert!(reply.contains("application/problem+json"), "{reply}");
+    assert!(reply.contains("problems/body-timeout"), "{reply}");
+    assert!(reply.contains("300 ms"), "{reply}");
 }

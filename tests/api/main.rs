@@ -4,7 +4,8 @@
 //! - `admission`: admission by cost: closed forms beside busy solvers, the solvers' queue.
 //! - `composite`: the composite bearing: its 422s, the speed split and the start-up over their ranges.
 //! - `contract`: the envelope, every error status and its problem+json, request ids.
-//! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500).
+//! - `limits`: deadline (504), load shedding (503), panics and non-finite results (500), slow
+//!   clients (header timeout, 408 body timeout).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
 //! - `gas`: gas journal and slider: their 422s with reasons and their ranges.
 //! - `hydrostatic`: hydrostatic pads and design: examples, 422s naming the field, the optima.
@@ -18,6 +19,8 @@
 //! - `squeeze`: squeeze-film rooms' 422s and the squeezed journal over its range.
 //! - `whirl`: the whirl room's 422s, its README example, and finite answers over its range.
 //! - `service`: health, readiness, metrics, the listing, the OpenAPI document and the docs UI.
+//! - `shutdown`: the real binary on SIGTERM: the drain, `/ready` and `/health` during it, the
+//!   cancelled solve's 503, exit 0.
 
 mod admission;
 mod bounds;
@@ -32,6 +35,7 @@ mod lubricants;
 mod openapi_document;
 mod reference_cases;
 mod service;
+mod shutdown;
 mod squeeze;
 mod sweep;
 mod thrust;
