@@ -10,15 +10,19 @@
 //!   budget bounds memory and the blocking pool's queue, not the cores.
 //! - **heavy** requests take one of `heavy_permits` (one core each). One that finds none free
 //!   joins a short queue (at most `heavy_queue` long) and waits, first come first served, at
-//!   most `queue_wait` and never past its own deadline; then it is shed. A short wait absorbs a
-//!   burst; a long one would only turn a 503 the client can retry elsewhere into a 504.
+//!   most `queue_wait` and never past its latest possible start: its deadline less the running
+//!   average solve time of its calculation and fidelity; then it is shed. One whose latest start
+//!   has already passed cannot finish in time and is shed at once (`shed_deadline`). A short
+//!   wait absorbs a burst; a long one would only turn a 503 the client can retry elsewhere into
+//!   a 504.
 //!
 //! A permit is held until the calculation ends, not the response: a request that passed its
 //! deadline keeps its permit until its solver has seen the cancellation, so the count is of
 //! real work.
 
+use std::collections::HashMap;
 use std::fmt::Write;
-use std::sync::Arc;
+use std::sync::{Arc, Mutex};
 use std::time::{Duration, Instant};
 
 use tokio::sync::{OwnedSemaphorePermit, Semaphore, TryAcquireError};
@@ -37,7 +41,12 @@ pub struct Admission {
     heavy_permits: usize,
     heavy_queue: usize,
     queue_wait: Duration,
+    /// Running average solve time by calculation and fidelity ([`Admission::record`]).
+    solve_times: Mutex<HashMap<String, Duration>>,
 }
+
+/// Weight of the newest solve in the running average of solve times.
+const NEWEST_WEIGHT: f64 = 0.2;
 
 /// A request let in. Dropping it frees its slot or permit.
 #[derive(Debug)]
@@ -56,8 +65,11 @@ pub enum Outcome {
     Queued,
     /// Shed at once: the light budget was spent, or the heavy queue was full.
     ShedFull,
-    /// Shed after waiting in the heavy queue until `queue_wait` or the deadline.
+    /// Shed after waiting in the heavy queue until `queue_wait` or the latest start.
     ShedWaited,
+    /// Shed at once from the heavy queue: its solve, at the running average time, would not
+    /// finish before its deadline.
+    ShedDeadline,
 }
 
 impl Outcome {
@@ -67,6 +79,7 @@ impl Outcome {
             Outcome::Queued => "queued",
             Outcome::ShedFull => "shed_full",
             Outcome::ShedWaited => "shed_waited",
+            Outcome::ShedDeadline => "shed_deadline",
         }
     }
 }
@@ -104,12 +117,29 @@ impl Admission {
             heavy_permits,
             heavy_queue,
             queue_wait: config.queue_wait,
+            solve_times: Mutex::new(HashMap::new()),
         }
     }
 
-    /// Let a request of `cost` in, waiting (if heavy) at most `queue_wait` and never past
-    /// `deadline`. Cancel-safe: a client that goes away while waiting leaves the queue.
-    pub async fn admit(&self, cost: Cost, deadline: Instant) -> Result<Ticket, Refusal> {
+    /// Fold a finished solve of `key` (calculation and fidelity) into its running average.
+    pub fn record(&self, key: &str, took: Duration) {
+        let mut times = self.solve_times.lock().unwrap_or_else(|e| e.into_inner());
+        let average = times.get(key).map_or(took, |&old| {
+            old.mul_f64(1.0 - NEWEST_WEIGHT) + took.mul_f64(NEWEST_WEIGHT)
+        });
+        times.insert(key.to_owned(), average);
+    }
+
+    /// The running average solve time of `key` (zero before its first solve).
+    fn expected(&self, key: &str) -> Duration {
+        let times = self.solve_times.lock().unwrap_or_else(|e| e.into_inner());
+        times.get(key).copied().unwrap_or_default()
+    }
+
+    /// Let a request of `cost` in, waiting (if heavy) at most `queue_wait` and never past its
+    /// latest start (`deadline` less the average solve time of `key`, its calculation and
+    /// fidelity). Cancel-safe: a client that goes away while waiting leaves the queue.
+    pub async fn admit(&self, cost: Cost, deadline: Instant, key: &str) -> Result<Ticket, Refusal> {
         let ticket = |permit, outcome| Ticket {
             _permit: permit,
             outcome,
@@ -140,9 +170,23 @@ impl Admission {
                 ),
             });
         };
+        let expected = self.expected(key);
+        let Some(latest_start) = deadline
+            .checked_sub(expected)
+            .filter(|&t| t > Instant::now())
+        else {
+            return Err(Refusal {
+                outcome: Outcome::ShedDeadline,
+                detail: format!(
+                    "all {} numerical solvers are busy and this solve takes about {} ms, more than is left of its deadline; retry after the given delay",
+                    self.heavy_permits,
+                    expected.as_millis()
+                ),
+            });
+        };
         let wait = self
             .queue_wait
-            .min(deadline.saturating_duration_since(Instant::now()));
+            .min(latest_start.saturating_duration_since(Instant::now()));
         match tokio::time::timeout(wait, self.heavy.clone().acquire_owned()).await {
             Ok(Ok(p)) => Ok(ticket(p, Outcome::Queued)),
             Ok(Err(_closed)) => unreachable!("the semaphores are never closed"),
@@ -208,41 +252,87 @@ mod tests {
     #[tokio::test]
     async fn light_requests_ignore_the_heavy_pool() {
         let a = admission(2, 1, 0, 0);
-        let _solving = a.admit(Cost::Heavy, far()).await.unwrap();
-        let one = a.admit(Cost::Light, far()).await.unwrap();
-        let _two = a.admit(Cost::Light, far()).await.unwrap();
+        let _solving = a.admit(Cost::Heavy, far(), "k").await.unwrap();
+        let one = a.admit(Cost::Light, far(), "k").await.unwrap();
+        let _two = a.admit(Cost::Light, far(), "k").await.unwrap();
         assert_eq!(one.outcome, Outcome::Admitted);
-        let third = a.admit(Cost::Light, far()).await.unwrap_err();
+        let third = a.admit(Cost::Light, far(), "k").await.unwrap_err();
         assert_eq!(third.outcome, Outcome::ShedFull);
         drop(one);
-        assert!(a.admit(Cost::Light, far()).await.is_ok());
+        assert!(a.admit(Cost::Light, far(), "k").await.is_ok());
     }
 
     #[tokio::test]
     async fn a_heavy_request_waits_for_a_freed_permit() {
         let a = Arc::new(admission(8, 1, 1, 60_000));
-        let solving = a.admit(Cost::Heavy, far()).await.unwrap();
+        let solving = a.admit(Cost::Heavy, far(), "k").await.unwrap();
         let waiter = tokio::spawn({
             let a = a.clone();
-            async move { a.admit(Cost::Heavy, far()).await.map(|t| t.outcome) }
+            async move { a.admit(Cost::Heavy, far(), "k").await.map(|t| t.outcome) }
         });
         // The queue holds one; the next is shed at once.
         while a.queue.available_permits() > 0 {
             tokio::task::yield_now().await;
         }
-        let full = a.admit(Cost::Heavy, far()).await.unwrap_err();
+        let full = a.admit(Cost::Heavy, far(), "k").await.unwrap_err();
         assert_eq!(full.outcome, Outcome::ShedFull);
         drop(solving);
         assert_eq!(waiter.await.unwrap(), Ok(Outcome::Queued));
     }
 
     #[tokio::test]
+    async fn a_queued_solve_that_cannot_finish_in_time_is_shed_at_once() {
+        let a = admission(8, 1, 4, 60_000);
+        a.record("slow", Duration::from_millis(500));
+        let _solving = a.admit(Cost::Heavy, far(), "slow").await.unwrap();
+        let soon = Instant::now() + Duration::from_millis(200);
+        let shed = a.admit(Cost::Heavy, soon, "slow").await.unwrap_err();
+        assert_eq!(shed.outcome, Outcome::ShedDeadline);
+        assert!(shed.detail.contains("500 ms"), "{}", shed.detail);
+        // A calculation with no record yet waits for its deadline as before.
+        let unknown = a.admit(Cost::Heavy, soon, "new").await.unwrap_err();
+        assert_eq!(unknown.outcome, Outcome::ShedWaited);
+        assert!(
+            Instant::now() + Duration::from_millis(5) >= soon,
+            "it waited until its deadline"
+        );
+    }
+
+    #[tokio::test]
+    async fn a_queued_solve_waits_only_until_its_latest_start() {
+        let a = admission(8, 1, 4, 60_000);
+        a.record("k", Duration::from_millis(400));
+        let _solving = a.admit(Cost::Heavy, far(), "k").await.unwrap();
+        let started = Instant::now();
+        let deadline = started + Duration::from_millis(600);
+        let shed = a.admit(Cost::Heavy, deadline, "k").await.unwrap_err();
+        assert_eq!(shed.outcome, Outcome::ShedWaited);
+        let waited = started.elapsed();
+        assert!(waited >= Duration::from_millis(190), "{waited:?}");
+        assert!(
+            Instant::now() < deadline,
+            "{waited:?}: waited past the latest start"
+        );
+    }
+
+    #[test]
+    fn the_running_average_leans_on_the_past() {
+        let a = admission(8, 1, 4, 0);
+        a.record("k", Duration::from_millis(100));
+        assert_eq!(a.expected("k"), Duration::from_millis(100));
+        a.record("k", Duration::from_millis(600));
+        let avg = a.expected("k").as_secs_f64();
+        assert!((avg - 0.2).abs() < 1e-9, "{avg}");
+        assert_eq!(a.expected("other"), Duration::ZERO);
+    }
+
+    #[tokio::test]
     async fn a_heavy_request_waits_no_longer_than_its_deadline() {
         let a = admission(8, 1, 4, 60_000);
-        let _solving = a.admit(Cost::Heavy, far()).await.unwrap();
+        let _solving = a.admit(Cost::Heavy, far(), "k").await.unwrap();
         let started = Instant::now();
         let soon = started + Duration::from_millis(20);
-        let shed = a.admit(Cost::Heavy, soon).await.unwrap_err();
+        let shed = a.admit(Cost::Heavy, soon, "k").await.unwrap_err();
         assert_eq!(shed.outcome, Outcome::ShedWaited);
         assert!(started.elapsed() < Duration::from_secs(30));
         assert_eq!(

@@ -56,8 +56,9 @@ pub async fn run(
         }
     };
     let cost = entry.cost(&body);
+    let key = solve_key(entry, &body);
     let admitted = tokio::select! {
-        admitted = state.admission.admit(cost, deadline) => admitted,
+        admitted = state.admission.admit(cost, deadline, &key) => admitted,
         () = state.drain.cancelled() => return Problem::shutting_down().into_response(),
     };
     let ticket = match admitted {
@@ -99,6 +100,9 @@ pub async fn run(
             res
         }
         Ok(Ok(Ok(done))) => {
+            state
+                .admission
+                .record(&key, Duration::from_secs_f64(done.solver_ms.max(0.0) / 1e3));
             let mut res = (StatusCode::OK, done.body).into_response();
             res.headers_mut().insert(
                 header::CONTENT_TYPE,
@@ -151,6 +155,19 @@ async fn read_body(body: Body, state: &AppState) -> Result<Bytes, Problem> {
             format!("reading the body failed: {e}"),
         )),
     }
+}
+
+/// What the admission averages solve times by: the calculation and the body's `fidelity`.
+fn solve_key(entry: &Entry, body: &[u8]) -> String {
+    #[derive(serde::Deserialize)]
+    struct Fidelity {
+        fidelity: Option<serde_json::Value>,
+    }
+    let fidelity = serde_json::from_slice::<Fidelity>(body)
+        .ok()
+        .and_then(|f| f.fidelity)
+        .map_or_else(String::new, |f| f.to_string());
+    format!("{} {fidelity}", entry.path)
 }
 
 fn is_json(headers: &HeaderMap) -> bool {
