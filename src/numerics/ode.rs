@@ -555,6 +555,31 @@ impl IterationMatrix {
     }
 }
 
+/// Where a simplified Newton solve stands after an iterate.
+enum Newton {
+    /// Diverging or too slow (contraction ≥ 0.9), or not finite: retry the step.
+    Failed,
+    /// The remaining error, estimated from the contraction, is below 3 % of the tolerance.
+    Settled,
+    Going,
+}
+
+/// The verdict on an iterate whose correction had weighted size `size`, `previous` the last
+/// one's (Hairer & Wanner §IV.8's stopping rule: η = θ/(1 − θ), η·size < κ = 0.03; the first
+/// iterate settles below 10⁻³).
+fn newton_progress(previous: &mut Option<f64>, size: f64) -> Newton {
+    if !size.is_finite() {
+        return Newton::Failed;
+    }
+    let contraction = previous.replace(size).map(|p| size / p);
+    match contraction {
+        Some(r) if r >= 0.9 => Newton::Failed,
+        Some(r) if r / (1.0 - r) * size < 0.03 => Newton::Settled,
+        None if size < 1e-3 => Newton::Settled,
+        _ => Newton::Going,
+    }
+}
+
 /// One attempted step of size h from (t, y) with rate f there.
 #[allow(clippy::too_many_arguments)]
 fn sdirk_step<const N: usize, R: Rate<N>>(
@@ -593,22 +618,14 @@ fn sdirk_step<const N: usize, R: Rate<N>>(
             let residual = stage - base - fy * hg;
             let delta = -lu.solve(&residual).unwrap_or(residual * f64::NAN);
             let size = norm(&delta, &stage, settings);
-            if !size.is_finite() {
-                return Ok(Attempt::NewtonFailed);
-            }
             stage += delta;
-            let rate_of_convergence = previous.map(|p| size / p);
-            if rate_of_convergence.is_some_and(|r| r >= 0.9) {
-                return Ok(Attempt::NewtonFailed);
-            }
-            let settled = match rate_of_convergence {
-                Some(r) => r / (1.0 - r) * size < 0.03,
-                None => size < 1e-3,
-            };
-            previous = Some(size);
-            if settled {
-                converged = true;
-                break;
+            match newton_progress(&mut previous, size) {
+                Newton::Failed => return Ok(Attempt::NewtonFailed),
+                Newton::Settled => {
+                    converged = true;
+                    break;
+                }
+                Newton::Going => {}
             }
         }
         if !converged {
@@ -759,24 +776,16 @@ fn radau_step<const N: usize, R: Rate<N>>(
             .sum::<f64>()
             / 3.0)
             .sqrt();
-        if !size.is_finite() {
-            return Ok(Attempt::NewtonFailed);
-        }
         for (zi, d) in z.iter_mut().zip(&delta) {
             *zi -= d;
         }
-        let rate_of_convergence = previous.map(|p| size / p);
-        if rate_of_convergence.is_some_and(|r| r >= 0.9) {
-            return Ok(Attempt::NewtonFailed);
-        }
-        let settled = match rate_of_convergence {
-            Some(r) => r / (1.0 - r) * size < 0.03,
-            None => size < 1e-3,
-        };
-        previous = Some(size);
-        if settled {
-            converged = true;
-            break;
+        match newton_progress(&mut previous, size) {
+            Newton::Failed => return Ok(Attempt::NewtonFailed),
+            Newton::Settled => {
+                converged = true;
+                break;
+            }
+            Newton::Going => {}
         }
     }
     if !converged {

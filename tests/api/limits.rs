@@ -9,7 +9,7 @@ use stribeck::config::Config;
 use stribeck::fidelity::Level;
 use utoipa::ToSchema;
 
-use crate::helpers::{spawn_app, spawn_with, test_config};
+use crate::helpers::{spawn_app, spawn_with, test_config, TestApp};
 
 const PATH: &str = "/v1/lubricants/viscosity";
 
@@ -276,27 +276,30 @@ async fn read_until_closed(stream: &mut tokio::net::TcpStream) -> String {
     String::from_utf8_lossy(&reply).into_owned()
 }
 
+/// A server on `config` sent `start` and then nothing: its reply up to the close, and how long
+/// that took.
+async fn stall(config: Config, start: &str) -> (TestApp, String, std::time::Duration) {
+    let app = spawn_with(config, None).await;
+    let started = std::time::Instant::now();
+    let mut stream = stalled_client(&app, start).await;
+    let reply = read_until_closed(&mut stream).await;
+    (app, reply, started.elapsed())
+}
+
 /// A request head that never ends is cut off after the header timeout (issue 12, item 13: 300
 /// such connections stayed open for over 35 s).
 #[tokio::test]
 async fn a_partial_request_head_is_closed_after_the_header_timeout() {
-    let app = spawn_with(
+    let (app, reply, took) = stall(
         Config {
             header_timeout: std::time::Duration::from_millis(300),
             ..test_config()
         },
-        None,
-    )
-    .await;
-    let started = std::time::Instant::now();
-    let mut stream = stalled_client(
-        &app,
         "POST /v1/lubricants/viscosity HTTP/1.1\r\nhost: x\r\n",
     )
     .await;
-    let reply = read_until_closed(&mut stream).await;
     assert!(
-        started.elapsed() >= std::time::Duration::from_millis(250),
+        took >= std::time::Duration::from_millis(250),
         "closed before the timeout"
     );
     assert!(
@@ -310,23 +313,16 @@ async fn a_partial_request_head_is_closed_after_the_header_timeout() {
 /// A body that stops short of its Content-Length answers 408 after the body timeout.
 #[tokio::test]
 async fn a_partial_body_answers_408_after_the_body_timeout() {
-    let app = spawn_with(
+    let (_app, reply, took) = stall(
         Config {
             body_timeout: std::time::Duration::from_millis(300),
             ..test_config()
         },
-        None,
-    )
-    .await;
-    let started = std::time::Instant::now();
-    let mut stream = stalled_client(
-        &app,
         "POST /v1/lubricants/viscosity HTTP/1.1\r\nhost: x\r\ncontent-type: application/json\r\ncontent-length: 100\r\n\r\n{\"lubricant\"",
     )
     .await;
-    let reply = read_until_closed(&mut stream).await;
     assert!(
-        started.elapsed() >= std::time::Duration::from_millis(250),
+        took >= std::time::Duration::from_millis(250),
         "answered before the timeout"
     );
     assert!(reply.starts_with("HTTP/1.1 408"), "{reply}");

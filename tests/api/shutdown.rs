@@ -62,6 +62,16 @@ fn heavy_running(port: u16) -> bool {
 }
 
 /// Wait for the process to end (at most 60 s).
+/// Send SIGTERM to the server; the time it was sent.
+fn sigterm(server: &Child) -> Instant {
+    let status = Command::new("kill")
+        .args(["-TERM", &server.id().to_string()])
+        .status()
+        .unwrap();
+    assert!(status.success());
+    Instant::now()
+}
+
 fn exit_code(server: &mut Child) -> Option<i32> {
     let started = Instant::now();
     while started.elapsed() < Duration::from_secs(60) {
@@ -95,12 +105,7 @@ fn sigterm_drains_then_cancels_the_solve_still_running_and_exits_0() {
         );
         std::thread::sleep(Duration::from_millis(10));
     }
-    let status = Command::new("kill")
-        .args(["-TERM", &server.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(status.success());
-    let signalled = Instant::now();
+    let signalled = sigterm(&server);
 
     // Draining: still accepting; not ready, but alive.
     std::thread::sleep(Duration::from_millis(100));
@@ -139,12 +144,7 @@ fn sigterm_drains_then_cancels_the_solve_still_running_and_exits_0() {
 #[test]
 fn sigterm_with_nothing_in_flight_exits_0_at_once() {
     let (mut server, _port) = start();
-    let status = Command::new("kill")
-        .args(["-TERM", &server.id().to_string()])
-        .status()
-        .unwrap();
-    assert!(status.success());
-    let signalled = Instant::now();
+    let signalled = sigterm(&server);
     assert_eq!(exit_code(&mut server), Some(0));
     assert!(
         signalled.elapsed() < DRAIN,
