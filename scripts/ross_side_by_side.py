@@ -13,7 +13,9 @@ the stiffness and damping:
 
 Runs are interleaved (each round: Stribeck, then each ROSS grid, at each eccentricity).
 Accuracy is against Stribeck at `{"grid": [384, 48]}` (load Richardson-extrapolated from the
-half mesh), in the Sommerfeld number S = mu N_s L D (R/C)^2 / W and the direct stiffness along
+half mesh) with the same film model: ROSS's FluidFlow clips the full film's negative pressures
+(Gumbel's half-Sommerfeld film), so it is measured against Stribeck's `half_sommerfeld` film, and
+Stribeck runs both that and its default Reynolds-condition film. Errors are in the Sommerfeld number S = mu N_s L D (R/C)^2 / W and the direct stiffness along
 the load k_xx C / W. ROSS's K is in its own x-y frame (load along -y, rotation counter-clockwise);
 it is rotated into Stribeck's (x along the load, y 90 deg ahead in the direction of rotation)
 using ROSS's own film force.
@@ -44,7 +46,7 @@ OMEGA = 2 * np.pi * N_S
 R = D / 2
 EPSILONS = [0.8, 0.95]
 STRIBECK_REPS = 5
-ROSS_GRIDS = [((11, 101), 5), ((21, 201), 3), ((31, 301), 1)]  # (nz, ntheta), repetitions
+ROSS_GRIDS = [((11, 101), 5), ((21, 201), 3), ((31, 301), 1), ((51, 501), 1)]  # (nz, ntheta), repetitions
 
 
 def import_ross():
@@ -76,14 +78,18 @@ def sommerfeld(load_n):
     return MU * N_S * L * D / load_n * (R / C) ** 2
 
 
-def stribeck(eps, fidelity):
-    """One Stribeck request: (S, k_xx C/W, elapsed ms, wall ms)."""
+MODELS = ["reynolds", "half_sommerfeld"]
+
+
+def stribeck(eps, fidelity, model):
+    """One Stribeck request with cavitation model `model`: (S, k_xx C/W, elapsed ms, wall ms)."""
     request = {
         "geometry": {"diameter_m": D, "length_m": L, "radial_clearance_m": C},
         "speed_rpm": RPM,
         "lubricant": {"viscosity_pa_s": MU},
         "eccentricity_ratio": eps,
         "fidelity": fidelity,
+        "effects": {"cavitation": model},
     }
     t0 = time.perf_counter()
     out = subprocess.run(
@@ -125,16 +131,19 @@ def main():
     print(f"ROSS {ROSS_VERSION}, Stribeck {STRIBECK}", flush=True)
     reference = {}
     for eps in EPSILONS:
-        s, kxx, ms, _ = stribeck(eps, {"grid": [384, 48]})
-        reference[eps] = (s, kxx)
-        print(f"reference eps={eps}: S={s:.6g} k_xx={kxx:.6g} ({ms:.0f} ms)", flush=True)
+        for model in MODELS:
+            s, kxx, ms, _ = stribeck(eps, {"grid": [384, 48]}, model)
+            reference[(eps, model)] = (s, kxx)
+            print(f"reference eps={eps} {model}: S={s:.6g} k_xx={kxx:.6g} ({ms:.0f} ms)", flush=True)
 
     runs = {}  # (eps, tool, settings) -> list of (S, kxx, ms, wall ms or None)
     rounds = max([STRIBECK_REPS] + [reps for _, reps in ROSS_GRIDS])
     for r in range(rounds):
         for eps in EPSILONS:
             if r < STRIBECK_REPS:
-                runs.setdefault((eps, "Stribeck", "standard (96 x 12)"), []).append(stribeck(eps, "standard"))
+                for model in MODELS:
+                    runs.setdefault((eps, "Stribeck", f"standard (96 x 12), {model}"), []).append(
+                        stribeck(eps, "standard", model))
             for (nz, nt), reps in ROSS_GRIDS:
                 if r < reps:
                     s, kxx, ms = ross(eps, nz, nt)
@@ -145,11 +154,14 @@ def main():
     print("| ε | tool | settings | median time | S error vs reference | k_xx error vs reference | ROSS / Stribeck |")
     print("|---|---|---|---|---|---|---|")
     for eps in EPSILONS:
-        s_ref, k_ref = reference[eps]
-        base = statistics.median(x[2] for x in runs[(eps, "Stribeck", "standard (96 x 12)")])
+        base = statistics.median(
+            x[2] for x in runs[(eps, "Stribeck", "standard (96 x 12), half_sommerfeld")])
         for (e, tool, settings), xs in runs.items():
             if e != eps:
                 continue
+            # Each against the reference of its own film model; ROSS's is the half film.
+            model = "reynolds" if settings.endswith("reynolds") else "half_sommerfeld"
+            s_ref, k_ref = reference[(eps, model)]
             t = statistics.median(x[2] for x in xs)
             if tool == "Stribeck":
                 wall = statistics.median(x[3] for x in xs)

@@ -257,6 +257,11 @@ pub struct FilmModel {
     /// Reynolds cavitation (p ≥ 0); false keeps the full (Sommerfeld) film with its negative
     /// pressures.
     pub cavitation: bool,
+    /// Gümbel's half-Sommerfeld film (with `cavitation` false): the full film is solved and its
+    /// negative pressures are set to zero afterwards, so the film carries only its positive
+    /// part (the model of ROSS's `FluidFlow` and of the short bearing's closed form). It does
+    /// not conserve mass at the rupture; the Reynolds condition is the physical one.
+    pub half_sommerfeld: bool,
     /// Turbulent film by the linearised Ng–Pan model (Khonsari & Booser Eq. 6.26–6.31), with the
     /// Reynolds number ρ U C/μ at the clearance; local Re = Re_C h̄. None: laminar.
     pub turbulence_reynolds: Option<f64>,
@@ -332,6 +337,7 @@ impl FilmModel {
     /// Laminar with Reynolds cavitation: the base model (Table 8.6).
     pub const REYNOLDS: FilmModel = FilmModel {
         cavitation: true,
+        half_sommerfeld: false,
         turbulence_reynolds: None,
         arc: None,
         misalignment: None,
@@ -543,7 +549,17 @@ pub fn solve(
         .filter(|s| s.len() == n)
         .unwrap_or_else(|| vec![0.0; n]);
     let solved = reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?;
-    Ok((integrate(&g, &p, &film, solved, None), p))
+    let solution = if film.physics.half_sommerfeld {
+        integrate(&g, &positive_part(&p), &film, solved, None)
+    } else {
+        integrate(&g, &p, &film, solved, None)
+    };
+    Ok((solution, p))
+}
+
+/// The half-Sommerfeld film's pressures: the full film's, negatives set to zero.
+pub fn positive_part(p: &[f64]) -> Vec<f64> {
+    p.iter().map(|v| v.max(0.0)).collect()
 }
 
 /// The film's five-point stencil on `g`: h̄, the squeeze source of a moving film, the Ng–Pan
@@ -633,12 +649,17 @@ pub fn perturbation_step(eccentricity_ratio: f64) -> f64 {
 /// The film's linear response about a converged Reynolds-condition field: the load's
 /// derivative with respect to a parameter of the film (its shape or motion), from one
 /// factorisation of the free nodes' operator ([`reynolds::Linearised`]) — Lund's perturbation
-/// of the Reynolds equation, on the same grid, stencil and cavitated region as the field.
+/// of the Reynolds equation, on the same grid, stencil and cavitated region as the field. A
+/// half-Sommerfeld film perturbs its full film (every node free) and counts the change where
+/// the full film's pressure is positive.
 pub struct Response {
     film: Film,
     grid: Grid,
     field: Vec<f64>,
     operator: Linearised,
+    /// The nodes the operator solves for: the field's positive ones, or every node (1) of a
+    /// half-Sommerfeld film's full film.
+    free: Vec<f64>,
 }
 
 impl Response {
@@ -647,13 +668,35 @@ impl Response {
     pub fn at(film: &Film, mesh: Mesh, field: Vec<f64>) -> Result<Response, NotPositiveDefinite> {
         debug_assert!(!film.physics.has_content());
         let grid = grid(mesh, film);
-        let operator = Linearised::at(&assemble(film, &grid, None), &field)?;
+        let free = if film.physics.half_sommerfeld {
+            vec![1.0; field.len()]
+        } else {
+            field.clone()
+        };
+        let operator = Linearised::at(&assemble(film, &grid, None), &free)?;
         Ok(Response {
             film: *film,
             grid,
             field,
             operator,
+            free,
         })
+    }
+
+    /// The load's change from the equations' residual change: the field's response, counted
+    /// where the film carries pressure.
+    fn load_change(&self, residual_change: &[f64]) -> [f64; 2] {
+        let dp = self.operator.response(residual_change, &self.free);
+        if self.film.physics.half_sommerfeld {
+            let counted: Vec<f64> = dp
+                .iter()
+                .zip(&self.field)
+                .map(|(d, p)| if *p > 0.0 { *d } else { 0.0 })
+                .collect();
+            load(&self.grid, &counted)
+        } else {
+            load(&self.grid, &dp)
+        }
     }
 
     /// ∂(load)/∂A (`cos`: h̄ gains A cos θ) or ∂(load)/∂B (sin θ). The stencil is linear in its
@@ -703,7 +746,7 @@ impl Response {
                 .map(|(a, b)| (a - b) / (2.0 * delta))
                 .collect()
         };
-        load(&self.grid, &self.operator.response(&change, &self.field))
+        self.load_change(&change)
     }
 
     /// ∂(load)/∂Ȧ (`cos`) or ∂(load)/∂Ḃ: the rate enters only the squeeze source
@@ -718,7 +761,7 @@ impl Response {
                 change[at(g, i, j)] = weight * g.cv_y(j);
             }
         }
-        load(g, &self.operator.response(&change, &self.field))
+        self.load_change(&change)
     }
 }
 

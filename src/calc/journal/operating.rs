@@ -96,6 +96,8 @@ pub enum Cavitation {
     Reynolds,
     /// Mass-conserving Jakobsson–Floberg–Olsson cavitation.
     Jfo,
+    /// Gümbel's half-Sommerfeld film: the full film with its negative pressures set to zero.
+    HalfSommerfeld,
 }
 
 impl Cavitation {
@@ -140,8 +142,12 @@ impl Case {
         let g = self.geometry;
         mu * self.speed_rps() * g.length_m * g.diameter_m * g.r_over_c().powi(2)
     }
+    /// Whether the film ruptures (any model but the full film).
     fn cavitation(&self) -> bool {
         self.effects.cavitation != Cavitation::Off
+    }
+    fn half_sommerfeld(&self) -> bool {
+        self.effects.cavitation == Cavitation::HalfSommerfeld
     }
 
     /// The misalignment the film is solved with: the request's, unless the effect is off.
@@ -244,7 +250,8 @@ impl Case {
     /// The film model at oil temperature t.
     fn physics(&self, t: f64) -> FilmModel {
         FilmModel {
-            cavitation: self.cavitation(),
+            cavitation: self.cavitation() && !self.half_sommerfeld(),
+            half_sommerfeld: self.half_sommerfeld(),
             turbulence_reynolds: self.turbulent.then(|| self.film_reynolds(t)),
             arc: self.arc,
             misalignment: self.tilt(),

@@ -344,7 +344,8 @@ fn from_film(eps: EccentricityRatio, f: &FilmSolution, physics: FilmModel) -> Po
         friction_parameter: friction_parameter(f),
         max_pressure_nd: f.max_pressure_nd,
         max_pressure_angle: f.max_pressure_angle,
-        cavitation_angle: physics.cavitation.then_some(f.cavitation_angle),
+        cavitation_angle: (physics.cavitation || physics.half_sommerfeld)
+            .then_some(f.cavitation_angle),
         side_leakage_nd: f.side_leakage_nd,
         inlet_flow_nd: Some(f.inlet_flow_nd),
         min_film_nd: f.min_thickness,
@@ -405,7 +406,7 @@ fn at_eccentricity_from(
     budget: &Budget,
 ) -> Result<Point, CalcError> {
     match method {
-        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, physics.cavitation)),
+        Method::ClosedForm(approx) => Ok(closed(eps, l_over_d, approx, physics)),
         Method::Numerical {
             mesh,
             stop,
@@ -536,31 +537,24 @@ fn three_mesh_estimate([fine, middle, coarse]: [f64; 3], r: f64, of_middle: bool
     ESTIMATE_SAFETY * error / value.abs()
 }
 
+/// The closed form of `physics`'s film: the Reynolds condition (the short bearing has only
+/// the half-Sommerfeld one), Gümbel's half-Sommerfeld film, or the full film.
 fn closed(
     eccentricity: EccentricityRatio,
     l_over_d: f64,
     approx: Approximation,
-    cavitation: bool,
+    physics: FilmModel,
 ) -> Point {
     let eps = eccentricity.get();
+    let boundary = match (physics.cavitation, physics.half_sommerfeld) {
+        (true, _) if approx == Approximation::Long => Boundary::Reynolds,
+        (true, _) | (false, true) => Boundary::HalfSommerfeld,
+        (false, false) => Boundary::FullSommerfeld,
+    };
     let p = match approx {
-        Approximation::Long => closed_form::long_bearing(
-            eps,
-            if cavitation {
-                Boundary::Reynolds
-            } else {
-                Boundary::FullSommerfeld
-            },
-        ),
-        Approximation::Short => {
-            let boundary = if cavitation {
-                Boundary::HalfSommerfeld
-            } else {
-                Boundary::FullSommerfeld
-            };
-            closed_form::short_bearing(eps, l_over_d, boundary)
-                .expect("the short bearing has full and half films")
-        }
+        Approximation::Long => closed_form::long_bearing(eps, boundary),
+        Approximation::Short => closed_form::short_bearing(eps, l_over_d, boundary)
+            .expect("the short bearing has full and half films"),
     };
     Point {
         eccentricity_ratio: eccentricity,
@@ -739,9 +733,7 @@ impl Searcher<'_> {
         *self.evaluations += 1;
         let eps = to_eps(u)?;
         let point = match method {
-            Method::ClosedForm(approx) => {
-                closed(eps, self.l_over_d, approx, self.physics.cavitation)
-            }
+            Method::ClosedForm(approx) => closed(eps, self.l_over_d, approx, self.physics),
             Method::Numerical {
                 richardson: true, ..
             } => at_eccentricity_from(
@@ -814,12 +806,7 @@ impl Searcher<'_> {
     fn closed_form_start(&self, (lo, hi): (f64, f64)) -> Option<Start> {
         let residual = |u: f64| -> f64 {
             let Ok(eps) = to_eps(u) else { return f64::NAN };
-            let point = closed(
-                eps,
-                self.l_over_d,
-                Approximation::Short,
-                self.physics.cavitation,
-            );
+            let point = closed(eps, self.l_over_d, Approximation::Short, self.physics);
             self.target.residual(&point).unwrap_or(f64::NAN)
         };
         let root = brent(

@@ -111,6 +111,8 @@ pub enum CavitationMode {
     Reynolds,
     /// Mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod–Adams film content).
     Jfo,
+    /// Gümbel's half-Sommerfeld film: the full film, its negative pressures set to zero.
+    HalfSommerfeld,
 }
 
 impl From<CavitationMode> for Cavitation {
@@ -121,6 +123,7 @@ impl From<CavitationMode> for Cavitation {
             CavitationMode::Off => Cavitation::Off,
             CavitationMode::Reynolds => Cavitation::Reynolds,
             CavitationMode::Jfo => Cavitation::Jfo,
+            CavitationMode::HalfSommerfeld => Cavitation::HalfSommerfeld,
         }
     }
 }
@@ -137,7 +140,10 @@ pub struct JournalEffects {
     /// The cavitation model: `auto`, `on` and `reynolds` apply the Reynolds (Swift–Stieber)
     /// condition p ≥ 0 (the film ruptures where the pressure and its gradient vanish and refills
     /// wherever the pressure would rise: mass is not conserved across the cavitated zone; the
-    /// Table 8.6 model). `jfo` applies mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod
+    /// Table 8.6 model). `half_sommerfeld` is Gümbel's film: the full film solved and its
+    /// negative pressures set to zero afterwards (the legacy model of ROSS's `FluidFlow`; the
+    /// short bearing's closed form; not mass-conserving), with stiffness and damping from the full
+    /// film's response counted where it is positive. `jfo` applies mass-conserving Jakobsson–Floberg–Olsson cavitation (Elrod
     /// and Adams' film content θ_f ∈ [0, 1], complementarity p (1 − θ_f) = 0, upwind Couette
     /// fluxes): the film ruptures as with the Reynolds condition and reforms only where the
     /// streamers fill the gap again; it is fed flooded (θ_f = 1, at the edges' pressure) along a

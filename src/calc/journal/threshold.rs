@@ -69,7 +69,9 @@ pub fn coefficients(
     let eps = eccentricity.get();
     match method {
         Method::ClosedForm(Approximation::Short) => {
-            let (boundary, (stiffness, damping)) = if physics.cavitation {
+            // The short bearing's cavitated film is the half-Sommerfeld one.
+            let (boundary, (stiffness, damping)) = if physics.cavitation || physics.half_sommerfeld
+            {
                 (
                     Boundary::HalfSommerfeld,
                     closed_form::short_bearing_dynamic_coefficients(eps),

@@ -361,3 +361,80 @@ fn clustered_nodes_from_any_start() {
         circumferential_nodes(48, 0.5)
     );
 }
+
+/// Gümbel's half-Sommerfeld film: the full film's field (returned whole, negatives kept),
+/// integrated over its positive part only; its linear response (the full film's, counted where
+/// the pressure is positive) is the derivative of the half film's load, checked against
+/// central differences of whole solves; and as L/D → 0 it tends to the short bearing's
+/// half-Sommerfeld closed form (Table 8.5: at L/D = 0.05, S within 1.5 % to ε = 0.6, 3 % at 0.9).
+#[test]
+fn the_half_sommerfeld_film_is_the_positive_part_of_the_full_film() {
+    let mesh = Mesh {
+        circumferential: 96,
+        axial_half: 12,
+    };
+    let gumbel = FilmModel {
+        cavitation: false,
+        half_sommerfeld: true,
+        ..FilmModel::REYNOLDS
+    };
+    let film = |eps: f64, cos_offset: f64, physics: FilmModel| Film {
+        cos_offset,
+        physics,
+        ..Film::steady(eps, 0.5)
+    };
+    let budget = Budget::unlimited();
+    let (half, field) = solve(film(0.6, 0.0, gumbel), mesh, STOP, None, &budget).unwrap();
+    let full_model = FilmModel {
+        half_sommerfeld: false,
+        ..gumbel
+    };
+    let (full, full_field) = solve(film(0.6, 0.0, full_model), mesh, STOP, None, &budget).unwrap();
+    assert_eq!(field, full_field);
+    assert!(field.iter().any(|&p| p < 0.0));
+    // The full film's load is along the line of centres' normal (φ = 90°); the half film's
+    // positive lobe also pushes along it.
+    assert!(full.load_radial.abs() < 1e-6 * full.load_tangential.abs());
+    assert!(half.load_radial > 0.1 * half.load_tangential);
+    assert_eq!(half.max_pressure_nd, full.max_pressure_nd);
+
+    let response = Response::at(&film(0.6, 0.0, gumbel), mesh, field).unwrap();
+    let delta = 1e-4;
+    let load = |offset: f64| {
+        let (s, _) = solve(film(0.6, offset, gumbel), mesh, STOP, None, &budget).unwrap();
+        [s.load_radial, s.load_tangential]
+    };
+    let (plus, minus) = (load(delta), load(-delta));
+    let derivative = response.shape_derivative(true);
+    for k in 0..2 {
+        let differenced = (plus[k] - minus[k]) / (2.0 * delta);
+        // The rupture line moves with the shape (the held region does not): a node's worth.
+        assert!(
+            (derivative[k] - differenced).abs() < 0.01 * differenced.abs().max(derivative[k].abs()),
+            "{k}: {} against {differenced}",
+            derivative[k]
+        );
+    }
+
+    let short = |eps: f64| {
+        let at = EccentricityRatio::new(eps).unwrap();
+        let numerical = positioned_film(at, 0.05, gumbel, mesh, STOP, None, &budget)
+            .unwrap()
+            .1;
+        let closed = crate::calc::journal::closed_form::short_bearing(
+            eps,
+            0.05,
+            crate::calc::journal::closed_form::Boundary::HalfSommerfeld,
+        )
+        .unwrap();
+        (numerical.sommerfeld_number(), closed.sommerfeld_number)
+    };
+    // Ocvirk's film overrates the load increasingly with ε (closed_form.rs).
+    for (eps, within) in [(0.3, 0.015), (0.6, 0.015), (0.9, 0.03)] {
+        let (numerical, closed) = short(eps);
+        assert!(
+            ((numerical - closed) / closed).abs() < within,
+            "ε {eps}: {numerical} against {closed}"
+        );
+    }
+}

@@ -76,7 +76,9 @@ pub(super) fn approximation_name(case: &Case) -> Option<&'static str> {
         } else {
             "short_full_sommerfeld"
         }),
-        Method::ClosedForm(Approximation::Long) => Some(if cav {
+        Method::ClosedForm(Approximation::Long) => Some(if case.half_sommerfeld() {
+            "long_half_sommerfeld"
+        } else if cav {
             "long_reynolds"
         } else {
             "long_full_sommerfeld"
@@ -145,6 +147,7 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
         mode: case.effects.cavitation.mode(),
         reason: match (case.cavitation(), case.supply(temperature_c)) {
             (false, _) => "requested off: full Sommerfeld film, negative pressures kept".into(),
+            (true, None) if case.half_sommerfeld() => "Gümbel's half-Sommerfeld film: the full film solved, its negative pressures set to zero afterwards (the model of legacy codes and of the short bearing's closed form; it does not conserve mass at the rupture: `reynolds` is the physical condition)".into(),
             (true, None) => "Reynolds (Swift–Stieber) condition: p ≥ 0, the film ruptures where the pressure and its gradient vanish (auto keeps it; `jfo` conserves mass through rupture and reformation)".into(),
             (true, Some(supply)) => format!(
                 "mass-conserving JFO cavitation (Elrod–Adams film content, finite volumes): rupture and reformation conserve mass; fed {}",
@@ -165,9 +168,13 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
             ),
         },
         criterion: None,
-        model: case
-            .cavitation()
-            .then_some(if case.mass_conserving() { "jfo" } else { "reynolds" }),
+        model: case.cavitation().then_some(if case.mass_conserving() {
+            "jfo"
+        } else if case.half_sommerfeld() {
+            "half_sommerfeld"
+        } else {
+            "reynolds"
+        }),
     };
     if case.mass_conserving() && matches!(case.feed, Some(Feed::CircumferentialGroove { .. })) {
         notes.warn("jfo_circumferential_groove", "circumferential groove: each land's mass-conserving film is fed along a line at h_max at the edges' pressure, as the Reynolds model is; the groove's supply pressure is not applied at the land's edge");

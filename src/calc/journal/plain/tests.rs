@@ -110,3 +110,40 @@ fn the_heat_balance_holds_or_the_load_is_refused() {
     }
     assert!(refused > 0 && refused < 41, "{refused} of 41 refused");
 }
+
+/// `half_sommerfeld` is Gümbel's film at every fidelity: the closed forms' half-Sommerfeld
+/// boundaries (Table 8.5 short, Table 8.2 long: φ = atan[π√(1 − ε²)/(2ε)]), and the numerical film
+/// carrying less than the Reynolds condition (it drops the pressure the Reynolds film builds up
+/// to its rupture line); the effect names the model.
+#[test]
+fn half_sommerfeld_is_guembel_s_film_at_every_fidelity() {
+    let body = |ld: f64, fidelity: &str, model: &str| {
+        serde_json::json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1 * ld, "radial_clearance_m": 1e-4},
+            "speed_rpm": 3000, "lubricant": {"viscosity_pa_s": 0.02}, "eccentricity_ratio": 0.6,
+            "fidelity": fidelity, "effects": {"cavitation": model}
+        })
+    };
+    let long = testing::ok::<PlainJournal>(&body(4.0, "closed_form", "half_sommerfeld"));
+    assert_eq!(long["result"]["approximation"], "long_half_sommerfeld");
+    assert_eq!(long["effects"]["cavitation"]["model"], "half_sommerfeld");
+    let phi = (std::f64::consts::PI * (1.0f64 - 0.36).sqrt())
+        .atan2(1.2)
+        .to_degrees();
+    testing::assert_rel(
+        testing::result_field(&long, "attitude_angle_deg"),
+        phi,
+        1e-9,
+        "long half-Sommerfeld φ",
+    );
+    let short = testing::ok::<PlainJournal>(&body(0.25, "closed_form", "half_sommerfeld"));
+    assert_eq!(short["result"]["approximation"], "short_half_sommerfeld");
+    let s = |model: &str| {
+        testing::result_field(
+            &testing::ok::<PlainJournal>(&body(1.0, "fast", model)),
+            "sommerfeld_number",
+        )
+    };
+    let (gumbel, reynolds) = (s("half_sommerfeld"), s("reynolds"));
+    assert!(gumbel > 1.1 * reynolds, "{gumbel} {reynolds}");
+}
