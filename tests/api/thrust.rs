@@ -305,3 +305,85 @@ fn bad_requests_name_the_field() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The turbulent pad film (Ng–Pan, Khonsari & Booser Eq. 6.26–6.31 and §7.11): `auto` applies
+/// it above a pad-average Reynolds number of 580 and reports why, with the number and the
+/// trailing-edge Re₂ it was solved at; `off` is the laminar pad bit for bit (its dimensionless
+/// numbers are those of the same pad at a creeping speed); at the same film the turbulent pad
+/// carries more load and loses more power; as Re → 0 `on` tends to the laminar pad.
+#[test]
+fn turbulent_pad_film_is_decided_reported_and_tends_to_laminar() {
+    let pad = |mode: &str, speed: f64, viscosity: f64| {
+        json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3},
+            "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": speed,
+            "lubricant": {"viscosity_pa_s": viscosity, "density_15c_kg_m3": 870.0},
+            "outlet_film_m": 1e-4, "effects": {"turbulence": mode, "thermal": "off"},
+        })
+    };
+    let turbulent = run(FIXED, &pad("auto", 80.0, 0.005)).unwrap();
+    let laminar = run(FIXED, &pad("off", 80.0, 0.005)).unwrap();
+    let d = &turbulent["effects"]["turbulence"];
+    assert_eq!(d["applied"], true, "{d}");
+    assert_eq!(d["model"], "ng_pan", "{d}");
+    let criterion = number(d, "/criterion/value");
+    assert!(criterion > 580.0, "{d}");
+    assert_eq!(criterion, number(&turbulent, "/result/reynolds_number"));
+    // ρ U h2/μ with ρ at 40 °C a little under its 15 °C value: about 1.4e3.
+    let re2 = number(&turbulent, "/result/outlet_reynolds_number");
+    assert!((1.3e3..1.4e3).contains(&re2), "Re₂ {re2}");
+    let reason = d["reason"].as_str().unwrap();
+    assert!(reason.contains(&format!("{re2:.4e}")), "{reason}");
+    assert!(reason.contains(&format!("{criterion:.4e}")), "{reason}");
+    let off = &laminar["effects"]["turbulence"];
+    assert_eq!(off["applied"], false, "{off}");
+    assert_eq!(number(off, "/criterion/value"), criterion);
+    let (t, l) = (&turbulent["result"], &laminar["result"]);
+    assert!(number(t, "/load_n") > 1.2 * number(l, "/load_n"));
+    assert!(number(t, "/power_loss_w") > 1.5 * number(l, "/power_loss_w"));
+    // Off: the laminar pad, bit for bit (W̄ and K_f do not depend on speed when laminar).
+    let creeping = run(FIXED, &pad("auto", 1e-3, 0.005)).unwrap();
+    assert_eq!(creeping["effects"]["turbulence"]["applied"], false);
+    assert_eq!(l["coefficients"], creeping["result"]["coefficients"]);
+    // Re ≈ 0.02: the Ng–Pan factors are 1 to 1e-4.
+    let on = run(FIXED, &pad("on", 1.0, 5.0)).unwrap();
+    assert_eq!(on["effects"]["turbulence"]["applied"], true);
+    for field in ["load", "k_f", "k_q"] {
+        let (a, b) = (
+            number(&on, &format!("/result/coefficients/{field}")),
+            number(&creeping, &format!("/result/coefficients/{field}")),
+        );
+        assert!((a / b - 1.0).abs() < 1e-4, "{field}: {a} vs {b}");
+    }
+}
+
+/// At a fixed film, the turbulent pad's W̄ rises monotonically with the speed's Reynolds
+/// number (the laminar W̄ would not change), and a tilting pad in a turbulent film still
+/// balances its load and its moment about the pivot.
+#[test]
+fn turbulent_load_rises_with_reynolds_number_and_tilting_pads_balance() {
+    let mut last = 0.0;
+    for speed in [1.0, 10.0, 30.0, 60.0, 100.0, 200.0] {
+        let body = json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3},
+            "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": speed,
+            "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
+            "outlet_film_m": 1e-4, "effects": {"turbulence": "on", "thermal": "off"},
+        });
+        let v = run(FIXED, &body).unwrap();
+        let load = number(&v, "/result/coefficients/load");
+        assert!(load > last, "W̄ {load} at {speed} m/s after {last}");
+        last = load;
+    }
+    for pivot in [0.55, 0.6, 0.65] {
+        let body = json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3}, "pivot_position_fraction": pivot,
+            "sliding_speed_m_s": 80, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 50,
+            "load_n": 300000, "effects": {"turbulence": "on"}, "fidelity": "fast",
+        });
+        let v = run(TILTING, &body).unwrap();
+        assert_eq!(v["effects"]["turbulence"]["applied"], true);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - pivot).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 3e5 - 1.0).abs() < 1e-9);
+    }
+}

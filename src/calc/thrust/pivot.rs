@@ -12,6 +12,7 @@ use std::cell::Cell;
 
 use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
 use super::profile::Profile;
+use crate::calc::turbulence::Flow;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent_bracketed, Stopping};
 
@@ -41,9 +42,10 @@ pub struct Equilibrium {
     pub evaluations: u32,
 }
 
-/// The equilibrium of a plane pad of aspect `l_over_b` pivoted at `pivot`.
+/// The equilibrium of a plane pad of aspect `l_over_b` pivoted at `pivot`, in a `flow`.
 pub fn equilibrium(
     pivot: Pivot,
+    flow: Flow,
     l_over_b: f64,
     method: Method,
     budget: &Budget,
@@ -52,11 +54,11 @@ pub fn equilibrium(
     let evaluations = Cell::new(0);
     let at = |a: f64| -> Result<Evaluated, CalcError> {
         evaluations.set(evaluations.get() + 1);
-        Ok(evaluate(plane(a), l_over_b, method, budget)?)
+        Ok(evaluate(plane(a), flow, l_over_b, method, budget)?)
     };
     let (ratio, pivot) = match pivot {
         Pivot::Optimum => {
-            let (ratio, n) = optimum_ratio(plane(2.0), l_over_b, method, budget)?;
+            let (ratio, n) = optimum_ratio(plane(2.0), flow, l_over_b, method, budget)?;
             evaluations.set(evaluations.get() + n);
             (ratio, at(ratio)?.performance.center_of_pressure)
         }
@@ -132,6 +134,7 @@ mod tests {
         for (k, from_trailing) in [(1.0, 0.431), (2.0, 0.393), (3.0, 0.366)] {
             let got = equilibrium(
                 Pivot::At(1.0 - from_trailing),
+                Flow::Laminar,
                 1.0,
                 Method::LongPad,
                 &Budget::unlimited(),
@@ -150,10 +153,18 @@ mod tests {
 
     #[test]
     fn the_optimum_pivot_of_the_long_pad_is_at_its_optimum_ratio() {
-        let got = equilibrium(Pivot::Optimum, 1.0, Method::LongPad, &Budget::unlimited()).unwrap();
+        let got = equilibrium(
+            Pivot::Optimum,
+            Flow::Laminar,
+            1.0,
+            Method::LongPad,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         assert!((got.ratio - 2.189).abs() < 5e-3);
         let x_cp =
-            long_pad::performance(Profile::PlaneInclined { ratio: got.ratio }).center_of_pressure;
+            long_pad::performance(Profile::PlaneInclined { ratio: got.ratio }, Flow::Laminar)
+                .center_of_pressure;
         assert!((got.pivot - x_cp).abs() < 1e-12);
         // At the maximum the load no longer changes with the ratio.
         assert!(got.load_slope.abs() < 1e-3, "{}", got.load_slope);
@@ -162,7 +173,14 @@ mod tests {
     #[test]
     fn a_central_pivot_is_refused_with_the_reason() {
         for method in [Method::LongPad, Method::level(Level::Fast)] {
-            let err = equilibrium(Pivot::At(0.5), 1.0, method, &Budget::unlimited()).unwrap_err();
+            let err = equilibrium(
+                Pivot::At(0.5),
+                Flow::Laminar,
+                1.0,
+                method,
+                &Budget::unlimited(),
+            )
+            .unwrap_err();
             match err {
                 CalcError::Impossible { pointer, message } => {
                     assert_eq!(pointer, "/pivot_position_fraction");
@@ -181,6 +199,7 @@ mod tests {
         // ratio than the rule, whose pads also run on thermal crowning).
         let got = equilibrium(
             Pivot::At(0.65),
+            Flow::Laminar,
             1.0,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -201,6 +220,7 @@ mod tests {
         let at = |level| {
             equilibrium(
                 Pivot::At(0.6),
+                Flow::Laminar,
                 0.5,
                 Method::level(level),
                 &Budget::unlimited(),

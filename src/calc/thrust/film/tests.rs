@@ -32,6 +32,7 @@ fn standard_reproduces_every_finite_entry_of_table_7_2() {
         let want = |k: &str| row[k].as_f64().unwrap();
         let got = evaluate(
             Profile::PlaneInclined { ratio },
+            Flow::Laminar,
             l_over_b,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -69,7 +70,7 @@ fn the_infinite_column_of_table_7_2_is_the_long_pad() {
             continue;
         }
         let ratio = row["film_ratio"].as_f64().unwrap();
-        let got = long_pad::performance(Profile::PlaneInclined { ratio });
+        let got = long_pad::performance(Profile::PlaneInclined { ratio }, Flow::Laminar);
         let want = |k: &str| row[k].as_f64().unwrap();
         assert!(
             (got.k_h() / want("k_h") - 1.0).abs() < 0.035,
@@ -104,16 +105,22 @@ fn a_long_pad_tends_to_the_infinitely_long_pad() {
             land_fraction: 0.2,
         },
     ] {
-        let long = long_pad::performance(profile);
+        let long = long_pad::performance(profile, Flow::Laminar);
         let gap = |l_over_b: f64| {
             // Enough cells across to resolve the side edges' layers, about B wide.
             let mesh = Mesh {
                 along: 32,
                 across_half: 128,
             };
-            let got = evaluate(profile, l_over_b, Method::mesh(mesh), &Budget::unlimited())
-                .unwrap()
-                .performance;
+            let got = evaluate(
+                profile,
+                Flow::Laminar,
+                l_over_b,
+                Method::mesh(mesh),
+                &Budget::unlimited(),
+            )
+            .unwrap()
+            .performance;
             (
                 got.load / long.load - 1.0,
                 got.friction / long.friction - 1.0,
@@ -145,6 +152,7 @@ fn archibald_square_step_pad() {
             ratio: 1.7,
             step_position: 0.55,
         },
+        Flow::Laminar,
         1.0,
         Method::level(Level::High),
         &Budget::unlimited(),
@@ -162,6 +170,7 @@ fn flows_balance_and_converge_at_second_order() {
     let run = |along, across_half| {
         evaluate(
             profile,
+            Flow::Laminar,
             1.0,
             Method::mesh(Mesh { along, across_half }),
             &Budget::unlimited(),
@@ -204,6 +213,7 @@ fn trailing_edge_flats_reproduce_table_7_3() {
         };
         let got = evaluate(
             profile,
+            Flow::Laminar,
             1.0,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -219,5 +229,62 @@ fn trailing_edge_flats_reproduce_table_7_3() {
         close("K_h", got.k_h(), k_h, 0.02);
         close("K_f", got.friction, k_f, 0.02);
         close("K_q", got.inlet_flow, k_q, 0.03);
+    }
+}
+
+/// A turbulent film on the Reynolds basement's conductance hook: at Re₂ = 0 the laminar film
+/// bit for bit; long pads tend to the infinitely long turbulent pad (its closed form checked
+/// in `long_pad`), and W̄ rises with Re₂ on a finite pad too.
+#[test]
+fn the_turbulent_film_tends_to_laminar_and_to_the_long_pad() {
+    let budget = Budget::unlimited();
+    let turbulent = |re2: f64| Flow::Turbulent {
+        reference_reynolds: re2,
+    };
+    let step = Profile::Step {
+        ratio: 1.866,
+        step_position: 0.718,
+    };
+    for profile in [Profile::PlaneInclined { ratio: 2.0 }, step] {
+        let at = |flow: Flow, l_over_b: f64, mesh: Mesh| {
+            evaluate(profile, flow, l_over_b, Method::mesh(mesh), &budget)
+                .unwrap()
+                .performance
+        };
+        let square = Mesh {
+            along: 32,
+            across_half: 16,
+        };
+        assert_eq!(
+            at(turbulent(0.0), 1.0, square),
+            at(Flow::Laminar, 1.0, square),
+            "{profile:?}"
+        );
+        let mut last = at(Flow::Laminar, 1.0, square).load;
+        for re2 in [300.0, 1000.0, 5000.0] {
+            let load = at(turbulent(re2), 1.0, square).load;
+            assert!(load > last, "{profile:?} at Re₂ {re2}");
+            last = load;
+        }
+        let wide = Mesh {
+            along: 32,
+            across_half: 128,
+        };
+        for re2 in [1000.0, 5000.0] {
+            let long = long_pad::performance(profile, turbulent(re2));
+            let got = at(turbulent(re2), 50.0, wide);
+            let (load, friction) = (
+                got.load / long.load - 1.0,
+                got.friction / long.friction - 1.0,
+            );
+            assert!(
+                load < 0.0 && load > -0.05,
+                "{profile:?} at Re₂ {re2}: W̄ {load}"
+            );
+            assert!(
+                friction.abs() < 0.01,
+                "{profile:?} at Re₂ {re2}: F̄ {friction}"
+            );
+        }
     }
 }
