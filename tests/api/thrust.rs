@@ -387,3 +387,68 @@ fn turbulent_load_rises_with_reynolds_number_and_tilting_pads_balance() {
         assert!((number(&v, "/result/load_n") / 3e5 - 1.0).abs() < 1e-9);
     }
 }
+
+/// A crowned tilting pad (Khonsari & Booser §7.5): pivoted at mid-pad it carries its load (the
+/// flat pad's 422 stays without a crown), its centre of pressure on the pivot; as the crown
+/// vanishes an offset pivot's answer tends to the flat pad's; the crown's bad inputs name it.
+#[test]
+fn a_crowned_pad_carries_load_on_a_central_pivot_and_tends_to_the_flat_pad() {
+    let pad = |pivot: f64, crown: Option<f64>, fidelity: &str| {
+        let mut body = json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087}, "pivot_position_fraction": pivot,
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "load_n": 16000, "fidelity": fidelity,
+        });
+        if let Some(crown) = crown {
+            body["crown_m"] = json!(crown);
+        }
+        body
+    };
+    match run(TILTING, &pad(0.5, None, "fast")) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/pivot_position_fraction");
+            assert!(message.contains("carries no useful load"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+    for crown in [1e-5, 2e-5, 4e-5] {
+        let v = run(TILTING, &pad(0.5, Some(crown), "fast")).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - 0.5).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-9);
+        let (h2, h_min) = (
+            number(&v, "/result/outlet_film_m"),
+            number(&v, "/result/minimum_film_m"),
+        );
+        assert!(h_min <= h2 && h_min > 0.5 * h2, "h_min {h_min}, h2 {h2}");
+        assert!(number(&v, "/result/film_ratio") > 1.0);
+    }
+    // Crown → 0 at a pivot of 0.6: the flat pad's equilibrium (isothermal: a crowned pad is not
+    // plane, so its effective temperature is T_in + ΔT rather than Jang & Khonsari's fit).
+    let isothermal = |mut body: Value| {
+        body["effects"] = json!({"thermal": "off"});
+        body
+    };
+    let flat = run(TILTING, &isothermal(pad(0.6, None, "fast"))).unwrap();
+    let crowned = run(TILTING, &isothermal(pad(0.6, Some(1e-10), "fast"))).unwrap();
+    for field in [
+        "/result/film_ratio",
+        "/result/outlet_film_m",
+        "/result/power_loss_w",
+    ] {
+        let (a, b) = (number(&crowned, field), number(&flat, field));
+        assert!((a / b - 1.0).abs() < 1e-4, "{field}: {a} vs {b}");
+    }
+    for (body, pointer) in [
+        (pad(0.5, Some(2e-3), "fast"), "/crown_m"),
+        (pad(0.5, Some(2e-5), "closed_form"), "/fidelity"),
+    ] {
+        match run(TILTING, &body) {
+            Err(Failure::Invalid(errors)) => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+}

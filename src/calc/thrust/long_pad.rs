@@ -45,9 +45,15 @@ fn integrate<const N: usize>(
     if b <= a {
         return sum;
     }
-    // The profiles are monotone on each piece: the end values bound h̄ there.
+    // The profiles are monotone on each piece (the end values bound h̄ there) but for a
+    // crown, whose thinnest film may lie inside.
     let (h0, h1) = (profile.thickness(a), profile.thickness(b - 1e-15 * (b - a)));
-    let spread = (h0.max(h1) / h0.min(h1)).ln();
+    let thin = match profile {
+        Profile::Crowned { .. } => h0.min(h1).min(profile.minimum()),
+        _ => h0.min(h1),
+    };
+    let thick = h0.max(h1);
+    let spread = (thick / thin).ln();
     let cuts = ((spread / PIECE_RATIO.ln()).ceil() as usize).max(1);
     let rule = RULE.get_or_init(|| gauss_legendre(POINTS));
     let width = (b - a) / cuts as f64;
@@ -109,7 +115,9 @@ pub fn mean_thickness(profile: Profile) -> f64 {
     mean
 }
 
-/// The infinitely long pad's performance, laminar or turbulent.
+/// The infinitely long pad's performance, laminar or turbulent. A full film (P̄ = 0 at both
+/// edges): not for a [`Profile::Crowned`] pad, whose diverging part cavitates (the rooms solve
+/// crowned pads numerically only).
 pub fn performance(profile: Profile, flow: Flow) -> Performance {
     // 1/g: the Poiseuille weight of a turbulent film (exactly 1 when laminar).
     let weight = |h: f64| 1.0 / flow.pressure_factors(h).0;

@@ -288,3 +288,66 @@ fn the_turbulent_film_tends_to_laminar_and_to_the_long_pad() {
         }
     }
 }
+
+/// A crowned pad pivoted at mid-pad (Khonsari & Booser §7.5) is in equilibrium: the moment of
+/// its pressure field about the pivot, integrated here node by node with the trapezoidal rule
+/// on a fresh solve of the film (not through the film's own integrals), vanishes; and at a
+/// fixed h2 the load it carries rises with the crown over the texts' range (crown 0.5–2 times
+/// the minimum film; the isoviscous central pivot reaches 1.3 of it at a crown equal to h2).
+#[test]
+fn a_crowned_central_pivot_balances_its_moment_and_carries_more_with_more_crown() {
+    use crate::calc::thrust::pivot::{equilibrium, Pivot};
+    let budget = Budget::unlimited();
+    // Odd counts: no Richardson pair, so the equilibrium is this mesh's own.
+    let mesh = Mesh {
+        along: 61,
+        across_half: 15,
+    };
+    let mut last = 0.0;
+    let mut crown_over_min = Vec::new();
+    for k in [0.3, 0.45, 0.6, 0.75, 0.85, 0.92, 0.96, 1.0] {
+        let shape = Profile::Crowned {
+            ratio: 2.0,
+            crown: k,
+        };
+        let eq = equilibrium(
+            Pivot::At(0.5),
+            shape,
+            Flow::Laminar,
+            1.0,
+            Method::mesh(mesh),
+            &budget,
+        )
+        .unwrap();
+        let profile = shape.with_ratio(eq.ratio);
+        let g = grid(mesh, profile, false);
+        let stencil = assemble(profile, Flow::Laminar, 1.0, &g);
+        let n = (g.nx() + 1) * (g.ny + 1);
+        let mut p = vec![0.0; n];
+        reynolds::solve(&stencil, &mut p, true, &budget).unwrap();
+        let (dx, dy) = (g.x[1] - g.x[0], g.dy());
+        let (mut load, mut moment) = (0.0, 0.0);
+        for j in 0..=g.ny {
+            // p = 0 on the edges; the mid-plane row holds half a cell.
+            let wy = if j == g.ny { 0.5 * dy } else { dy };
+            for i in 0..=g.nx() {
+                let v = p[at(&g, i, j)] * dx * wy;
+                load += v;
+                moment += v * (g.x[i] - 0.5);
+            }
+        }
+        assert!(
+            (moment / load).abs() < 1e-8,
+            "k {k}: moment/load {}",
+            moment / load
+        );
+        let w = eq.evaluated.performance.load;
+        assert!(w > last, "k {k}: W̄ {w} after {last}");
+        last = w;
+        crown_over_min.push(k / profile.minimum());
+    }
+    // The sweep (up to a crown as high as the trailing-edge film, the searched range) spans
+    // crowns from under half the minimum film to 1.3 of it: the texts' range from its start.
+    let (lo, hi) = (crown_over_min[0], crown_over_min[crown_over_min.len() - 1]);
+    assert!(lo < 0.5 && hi > 1.25, "δ/h_min from {lo} to {hi}");
+}
