@@ -7,6 +7,7 @@
 
 use std::cell::Cell;
 
+use super::crowned;
 use super::long_pad;
 use super::operating::{self, Conditions, Given, Operating, TRANSITION_END_REYNOLDS};
 use super::performance::{self, evaluate, Evaluated, Method, RATIOS};
@@ -286,122 +287,6 @@ pub fn tilting(
     }
 }
 
-/// The crown ratio δ/h2 the load balance's bracket starts from.
-const CROWN_RATIO_START: f64 = 0.5;
-/// The thinnest crown ratio the bracket reaches before it gives up (a crown of 1e-8 of the film
-/// is a flat pad).
-const CROWN_RATIO_MIN: f64 = 1e-8;
-/// The thickest crown ratio searched: a crown as high as the trailing-edge film. Beyond it a
-/// central pivot's equilibrium branch folds (a second, pinched film appears near the crown's
-/// thinnest point and the centre of pressure stops moving monotonically with the film ratio),
-/// which this bracketed search does not follow.
-const CROWN_RATIO_MAX: f64 = 1.0;
-
-/// A pad with a parabolic crown δ (`crown`, m) tilting about `pivot` under its load, in a
-/// `flow` (Khonsari & Booser §7.5: a crown of 0.5–2 h_min lets a centrally pivoted pad carry
-/// load). δ is fixed in metres, so the film's shape h̄ = h/h2 depends on k = δ/h2 as well as on
-/// a = h1/h2, and the equilibrium is two-dimensional in (a, h2). It is solved nested: at a given
-/// k the pivot fixes a (the bracketed root on the moment, [`equilibrium`]), and the load then
-/// gives back h2' = (W̄(a, k) μ U B² L/W)^½ at the effective viscosity ([`operating::operate`],
-/// with the thermal effect); the load balance is the root of g(ln k) = ln h2' − ln(δ/k).
-/// g rises with k (a relatively larger crown carries more, and h2 = δ/k falls) and tends to −∞
-/// as k → 0 (a flat pad's h2' is finite, a central pivot's tends to 0): the bracket grows from
-/// k = ½ — down by quarters, or up by halving the distance to [`CROWN_RATIO_MAX`] — until g
-/// changes sign, then Brent's method finds the root in ln k. A load too heavy for the crown
-/// (g < 0 up to k = 1: the crown would exceed the film) is refused with the reason.
-fn crowned_in(
-    pivot: Pivot,
-    crown: f64,
-    flow: Flow,
-    method: Method,
-    c: &Conditions,
-    budget: &Budget,
-) -> Result<SolvedPad, CalcError> {
-    let l_over_b = c.pad.l_over_b();
-    let evaluations = Cell::new(0u32);
-    // The pad in equilibrium at crown ratio k = e^u, at its operating point.
-    let at = |u: f64| -> Result<(Equilibrium, Operating), CalcError> {
-        let shape = Profile::Crowned {
-            ratio: 2.0,
-            crown: u.exp(),
-        };
-        let eq = equilibrium(pivot, shape, flow, l_over_b, method, budget)?;
-        evaluations.set(evaluations.get() + eq.evaluations);
-        let profile = shape.with_ratio(eq.ratio);
-        let operating = operating::operate(
-            &eq.evaluated,
-            eq.ratio,
-            long_pad::mean_thickness(profile),
-            false,
-            flow,
-            c,
-        )?;
-        Ok((eq, operating))
-    };
-    let balance = |u: f64| -> Result<f64, CalcError> {
-        let (_, op) = at(u)?;
-        Ok(op.outlet_film_m.ln() - (crown.ln() - u))
-    };
-    let mut lo = (CROWN_RATIO_START.ln(), balance(CROWN_RATIO_START.ln())?);
-    let mut hi = lo;
-    while lo.1 > 0.0 {
-        let k = lo.0.exp() / 4.0;
-        if k < CROWN_RATIO_MIN {
-            return Err(CalcError::impossible(
-                "/crown_m",
-                format!("a crown of {crown:e} m is lost in this film: the pad carries its load on a film over 1e8 times the crown; it is a flat pad (omit crown_m)"),
-            ));
-        }
-        hi = lo;
-        lo = (k.ln(), balance(k.ln())?);
-    }
-    while hi.1 < 0.0 {
-        let k = hi.0.exp();
-        if k >= CROWN_RATIO_MAX {
-            return Err(CalcError::impossible(
-                "/crown_m",
-                format!("a crown of {crown:e} m is too high for this load about this pivot: the load needs a trailing-edge film thinner than the crown, beyond the crowns searched (up to the trailing-edge film); lower the crown or the load"),
-            ));
-        }
-        let next = if k > 0.999 * CROWN_RATIO_MAX {
-            CROWN_RATIO_MAX
-        } else {
-            CROWN_RATIO_MAX - (CROWN_RATIO_MAX - k) / 2.0
-        };
-        lo = hi;
-        hi = (next.ln(), balance(next.ln())?);
-    }
-    let mut failure = None;
-    let root = brent_bracketed(
-        |u| match balance(u) {
-            Ok(g) => g,
-            Err(e) => {
-                failure = Some(e);
-                0.0
-            }
-        },
-        lo,
-        hi,
-        Stopping {
-            x_tolerance: 1e-10,
-            max_iterations: 100,
-        },
-    );
-    if let Some(e) = failure {
-        return Err(e);
-    }
-    let root = root.map_err(|e| CalcError::from_root("crowned_pad_load_balance", e))?;
-    let (eq, mut operating) = at(root.x)?;
-    warn_long_pad(method, l_over_b, &mut operating);
-    Ok(SolvedPad {
-        operating,
-        ratio: eq.ratio,
-        evaluated: eq.evaluated.clone(),
-        evaluations: Some(evaluations.get()),
-        equilibrium: Some(eq),
-    })
-}
-
 /// A tilting pad in a given `flow`.
 fn tilting_in(
     pivot: Pivot,
@@ -429,6 +314,26 @@ fn tilting_in(
         c,
     )?;
     warn_long_pad(method, l_over_b, &mut operating);
+    Ok(SolvedPad {
+        operating,
+        ratio: eq.ratio,
+        evaluated: eq.evaluated.clone(),
+        evaluations: Some(eq.evaluations),
+        equilibrium: Some(eq),
+    })
+}
+
+/// A crowned pad tilting about `pivot` in a `flow` ([`crowned::equilibrium`]).
+fn crowned_in(
+    pivot: Pivot,
+    crown: f64,
+    flow: Flow,
+    method: Method,
+    c: &Conditions,
+    budget: &Budget,
+) -> Result<SolvedPad, CalcError> {
+    let (eq, mut operating) = crowned::equilibrium(pivot, crown, flow, method, c, budget)?;
+    warn_long_pad(method, c.pad.l_over_b(), &mut operating);
     Ok(SolvedPad {
         operating,
         ratio: eq.ratio,

@@ -134,7 +134,23 @@ pub fn equilibrium(
             (root.x, x_p)
         }
     };
-    // The sensitivities by central differences of the same method.
+    let mut settled = settled(pad.with_ratio(ratio), pivot, flow, l_over_b, method, budget)?;
+    settled.evaluations += evaluations.get();
+    Ok(settled)
+}
+
+/// The pad `pad` at its equilibrium film ratio about `pivot`, with the sensitivities by central
+/// differences of the same method (three evaluations, counted).
+pub fn settled(
+    pad: Profile,
+    pivot: f64,
+    flow: Flow,
+    l_over_b: f64,
+    method: Method,
+    budget: &Budget,
+) -> Result<Equilibrium, CalcError> {
+    let ratio = pad.ratio();
+    let at = |a: f64| evaluate(pad.with_ratio(a), flow, l_over_b, method, budget);
     let step = 1e-4 * ratio;
     let (below, above) = (at(ratio - step)?, at(ratio + step)?);
     let evaluated = at(ratio)?;
@@ -147,7 +163,7 @@ pub fn equilibrium(
         load_slope: dw / evaluated.performance.load,
         ratio_per_pivot: 1.0 / dx,
         evaluated,
-        evaluations: evaluations.get(),
+        evaluations: 3,
     })
 }
 
