@@ -6,7 +6,7 @@
 //! converged quadrature. Writes `docs/accuracy.md`.
 //!
 //! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` (or
-//! `ehl-line`, `ehl-point`, `orbit`) before it regenerates only that section.
+//! `ehl-line`, `ehl-point`, `orbit`, `squeeze`) before it regenerates only that section.
 
 use std::fmt::Write;
 use std::time::Instant;
@@ -399,13 +399,15 @@ fn regenerate(heading: &str, fill: fn(&mut String)) {
 }
 
 fn main() {
-    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-line`, `ehl-point`, `orbit`) regenerates only the
-    // gas-bearing (or the numerical EHL line- or point-contact, or the orbit) section, in place.
+    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-line`, `ehl-point`, `orbit`, `squeeze`) regenerates
+    // only the gas-bearing (or the numerical EHL line- or point-contact, the orbit or the squeezed
+    // journal) section, in place.
     match std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() {
         Ok("gas") => return regenerate(GAS_HEADING, gas_bearings),
         Ok("ehl-line") => return regenerate(EHL_LINE_HEADING, ehl_line),
         Ok("ehl-point") => return regenerate(EHL_POINT_HEADING, ehl_point),
         Ok("orbit") => return regenerate(ORBIT_HEADING, journal_orbits),
+        Ok("squeeze") => return regenerate(SQUEEZE_HEADING, squeeze_journal),
         _ => {}
     }
     let text = std::fs::read_to_string(concat!(
@@ -706,6 +708,8 @@ fn timed_request(path: &str, body: &str) -> (Value, f64) {
     (serde_json::from_slice(&done.body).unwrap(), ms)
 }
 
+const SQUEEZE_HEADING: &str = "\n## Squeezed journal: the time from ε₁ to ε₂";
+
 /// The squeezed journal: per case and fidelity, the error in `time_s` against the room's own
 /// converged answer (384 × 48 and 192 × 24 cells at quadrature tolerance 1e-9, Richardson-
 /// extrapolated; the 96 × 12 run gives the reference's uncertainty and the observed order), the
@@ -751,7 +755,8 @@ fn squeeze_journal(out: &mut String) {
             )
         })
         .collect();
-    out.push_str("\n## Squeezed journal: the time from ε₁ to ε₂\n\n");
+    out.push_str(SQUEEZE_HEADING);
+    out.push_str("\n\n");
     out.push_str("`/v1/squeeze-films/journal` driven with JSON bodies, as users call it: Ex 9.4's piston pin (D = 38.1 mm,\n");
     out.push_str("C = 25.4 µm, μ = 0.014479 Pa·s, W = 5589.8 N) squeezed without rotation. Cases: (a) a long bearing, L/D = 5 (the\n");
     out.push_str("room's largest), ε 0.5 → 0.9, full and cavitated film; (b) Ex 9.4 itself, L/D = 1, ε 0.5 → 0.9, cavitated; (c) the\n");

@@ -20,9 +20,9 @@
 //! and a film may be periodic in x with nodes held at a feed's pressure. Its Gauss–Seidel sweeps
 //! run under the solver driver ([`Driver`]): one iteration is one sweep, the budget is polled
 //! every 16 sweeps, the cap is [`Stopping::max_sweeps`]; it converges when the relative change
-//! per sweep is at or below the tolerance and diverges when it is not finite.
-//! [`solve_full_film_sor`] solves a periodic full film (no cavitation, no feed line: a pure
-//! squeeze film that keeps its negative pressures) by SOR sweeps under the same rules.
+//! per sweep is at or below the tolerance and diverges when it is not finite. A periodic full
+//! film (no cavitation, no feed line: a pure squeeze film that keeps its negative pressures) is
+//! one banded solve of [`solve`], its columns numbered round the seam.
 
 mod complementarity;
 
@@ -364,78 +364,6 @@ pub fn solve_mass_conserving(
         }
     })?;
     Ok(Solved { report: run.report })
-}
-
-/// A full film (no cavitation: negative pressures kept) by SOR sweeps, for stencils the direct
-/// active-set solve does not take: a periodic film (a 360° film with no feed line, whose seam
-/// couples the first and last columns). Under the driver (method `finite_volume_sor`, one
-/// iteration one sweep, the budget polled every 16): converged when the relative change per
-/// sweep is at or below the tolerance; the residual reported is [`Stencil::residual`].
-pub fn solve_full_film_sor(
-    stencil: &Stencil,
-    omega: f64,
-    p: &mut [f64],
-    stop: Stopping,
-    budget: &Budget,
-) -> Result<Solved, SolveError> {
-    let run = Driver::new(
-        "finite_volume_sor",
-        IterationUnit::Sweeps,
-        stop.max_sweeps,
-        budget,
-    )
-    .check_every(16)
-    .run(|_| {
-        let (change, size) = sor_sweep(stencil, omega, p);
-        if !change.is_finite() || !size.is_finite() {
-            return Verdict::Diverged(f64::NAN);
-        }
-        let relative = if size > 0.0 { change / size } else { change };
-        if relative <= stop.tolerance {
-            Verdict::Converged((), stencil.residual(p, false))
-        } else {
-            Verdict::Continue(relative)
-        }
-    })?;
-    Ok(Solved { report: run.report })
-}
-
-/// One SOR sweep of the linear system a_P p_P − Σ a_nb p_nb = −b: (largest change, largest
-/// |p|). Across the seam of a periodic film the west neighbour of column 0 is column nx − 1,
-/// and column nx repeats column 0.
-fn sor_sweep(stencil: &Stencil, omega: f64, p: &mut [f64]) -> (f64, f64) {
-    let w = stencil.nx + 1;
-    let nx = stencil.nx;
-    let first = if stencil.periodic { 0 } else { 1 };
-    let (mut change, mut size) = (0.0f64, 0.0f64);
-    for j in 1..stencil.rows {
-        let has_north = j + 1 < stencil.rows;
-        for i in first..nx {
-            let k = j * w + i;
-            if stencil.ap[k] <= 0.0 || stencil.held[k] {
-                continue;
-            }
-            let kw = if i == 0 { k + nx - 1 } else { k - 1 };
-            let north = if has_north {
-                stencil.an[k] * p[k + w]
-            } else {
-                0.0
-            };
-            let nb = stencil.ae[k] * p[k + 1]
-                + stencil.aw[k] * p[kw]
-                + north
-                + stencil.a_s[k] * p[k - w];
-            let gs = (nb - stencil.b[k]) / stencil.ap[k];
-            let next = p[k] + omega * (gs - p[k]);
-            change = change.max((next - p[k]).abs());
-            size = size.max(next.abs());
-            p[k] = next;
-            if i == 0 {
-                p[k + nx] = next;
-            }
-        }
-    }
-    (change, size)
 }
 
 /// One Gauss–Seidel sweep of the mass-conserving system: (largest pressure change, largest p,
@@ -923,6 +851,74 @@ mod tests {
     /// open film fed at x0 and discharging at x1: the same field, and the supply the held
     /// column gives is the open film's inflow less its outflow. A port held at a supply
     /// pressure over part of the width feeds exactly what leaves at the sides.
+    /// A periodic full film (negative pressures kept) by the direct solve: a long bearing's
+    /// mid-plane tends to Sommerfeld's infinitely long film (Khonsari & Booser Eq. 8.10,
+    /// p = 6ε sin θ (2 + ε cos θ)/((2 + ε²)(1 + ε cos θ)²) for ∂θ(h³∂θp) = 6 ∂θh), which is odd
+    /// about θ = π; the seam's column nx repeats column 0 and every node's equation holds.
+    #[test]
+    fn periodic_full_film_is_sommerfeld_s_long_film() {
+        let (n, e) = (256, 0.6);
+        let film = move |x: f64, _: f64| 1.0 + e * x.cos();
+        let grid = Grid {
+            x: (0..=n)
+                .map(|i| 2.0 * std::f64::consts::PI * i as f64 / n as f64)
+                .collect(),
+            ny: 32,
+            width: 12.0,
+            symmetric: true,
+            periodic: true,
+        };
+        let problem = Problem {
+            film: &film,
+            conductance: None,
+            anisotropy: 1.0,
+            wedge: 6.0,
+            source: None,
+            held: None,
+        };
+        let stencil = Stencil::assemble(&grid, &problem);
+        let mut p = vec![0.0; (n + 1) * (grid.ny + 1)];
+        let solved = solve(&stencil, &mut p, false, &Budget::unlimited()).unwrap();
+        assert_eq!(solved.report.iterations, 1);
+        let sommerfeld = |t: f64| {
+            6.0 * e * t.sin() * (2.0 + e * t.cos()) / ((2.0 + e * e) * (1.0 + e * t.cos()).powi(2))
+        };
+        let peak = (0..n)
+            .map(|i| sommerfeld(grid.x[i]).abs())
+            .fold(0.0, f64::max);
+        let mid = grid.ny;
+        for i in 0..n {
+            let k = at(&grid, i, mid);
+            assert!(
+                (p[k] - sommerfeld(grid.x[i])).abs() < 2e-3 * peak,
+                "θ node {i}"
+            );
+            assert!(
+                (p[k] + p[at(&grid, n - i, mid)]).abs() < 1e-9 * peak,
+                "odd at {i}"
+            );
+        }
+        for j in 0..=grid.ny {
+            assert_eq!(p[at(&grid, 0, j)], p[at(&grid, n, j)]);
+        }
+        let r = stencil.residuals(&p);
+        let seam: f64 = (1..grid.ny)
+            .map(|j| {
+                let k = at(&grid, 0, j);
+                let w = at(&grid, n - 1, j);
+                (stencil.ap[k] * p[k]
+                    - stencil.ae[k] * p[k + 1]
+                    - stencil.aw[k] * p[w]
+                    - stencil.an[k] * p[k + n + 1]
+                    - stencil.a_s[k] * p[k - n - 1]
+                    + stencil.b[k])
+                    .abs()
+            })
+            .fold(0.0, f64::max);
+        let scale = stencil.ap.iter().fold(0.0f64, |a, &b| a.max(b)) * peak;
+        assert!(r.iter().all(|v| v.abs() < 1e-10 * scale) && seam < 1e-10 * scale);
+    }
+
     #[test]
     fn periodic_film_with_held_ports() {
         let film = |x: f64, _: f64| 1.0 + 0.6 * x.cos();

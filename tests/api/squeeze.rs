@@ -46,8 +46,13 @@ async fn under_and_over_determined_plates_are_422s_naming_the_fields() {
                     "speed_rpm": 200.0}),
         )
         .await;
+    // Turning at 200 rev/min the film carries 1 kN at ε = 0.783: the journal settles short of 0.8.
     assert_eq!(reply.status, 422, "{}", reply.text);
-    assert!(reply.text.contains("rotation"), "{}", reply.text);
+    assert!(
+        reply.text.contains("ε = 0.7832, where it settles"),
+        "{}",
+        reply.text
+    );
 }
 
 fn run(body: &Value) -> Result<Value, Failure> {
@@ -86,6 +91,45 @@ proptest! {
         prop_assert!(t(&near) > 0.0 && t(&far) > t(&near), "{} {}", t(&near), t(&far));
         let speed = |k: &str| far["result"][k].as_f64().unwrap();
         prop_assert!(speed("approach_speed_final_m_s") < speed("approach_speed_initial_m_s"));
+    }
+
+    /// The journal that turns, over ten decades of speed from the slowest taken as turning:
+    /// it reaches ε₂ in a finite, positive time, sooner than or as soon as it would reach a
+    /// further ε, or settles short of ε₂ with the ε where it settles (never 5xx, never NaN).
+    #[test]
+    fn a_turning_journal_reaches_the_target_or_says_where_it_settles(
+        log_rpm in -6.0..4.0f64,
+        l_over_d in 0.1..2.0f64,
+        e1 in 0.0..0.9f64,
+        reach in 0.1..0.95f64,
+        closed in any::<bool>(),
+    ) {
+        let e2 = e1 + reach * (0.99 - e1);
+        let body = |e2: f64| json!({
+            "geometry": {"diameter_m": 0.05, "length_m": 0.05 * l_over_d, "radial_clearance_m": 5e-5},
+            "lubricant": {"viscosity_pa_s": 0.02}, "load_n": 2000.0,
+            "speed_rpm": 10f64.powf(log_rpm),
+            "initial_eccentricity_ratio": e1, "final_eccentricity_ratio": e2,
+            "film": if closed { "full" } else { "cavitated" },
+            "fidelity": if closed { "closed_form" } else { "fast" }
+        });
+        let time = |e2: f64| match run(&body(e2)) {
+            Ok(v) => {
+                assert_all_finite(&v, "");
+                Some(v["result"]["time_s"].as_f64().unwrap())
+            }
+            Err(Failure::Calc(e)) => {
+                let text = format!("{e:?}");
+                assert!(text.contains("where it settles"), "{text}");
+                None
+            }
+            Err(other) => panic!("{other:?}"),
+        };
+        let (near, far) = (time(e1 + 0.5 * (e2 - e1)), time(e2));
+        if let Some(far) = far {
+            let near = near.expect("a journal that reaches ε₂ passes every ε before it");
+            prop_assert!(near > 0.0 && far > near, "{near} {far}");
+        }
     }
 }
 

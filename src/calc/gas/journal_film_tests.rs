@@ -2,7 +2,7 @@
 //! linear theory and its own Richardson estimate.
 
 use super::*;
-use crate::numerics::reynolds::{self as incompressible, Grid, Problem, Stencil, Stopping};
+use crate::numerics::reynolds::{self as incompressible, Grid, Problem, Stencil};
 
 fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
     JournalFilm {
@@ -26,7 +26,7 @@ fn rel(a: f64, b: f64) -> f64 {
 }
 
 /// The incompressible full film (no cavitation) ∂θ(H³∂θp) + ∂y(H³∂yp) = ∂θH on the
-/// incompressible basement (`numerics::reynolds`, SOR on the periodic film): (W̄1/Λ, W̄2/Λ).
+/// incompressible basement (`numerics::reynolds`, one banded solve of the periodic film): (W̄1/Λ, W̄2/Λ).
 fn incompressible_load(e: f64, l_over_d: f64, n: usize, m: usize) -> (f64, f64) {
     let grid = Grid {
         x: (0..=n).map(|k| k as f64 * TAU / n as f64).collect(),
@@ -46,17 +46,7 @@ fn incompressible_load(e: f64, l_over_d: f64, n: usize, m: usize) -> (f64, f64) 
     };
     let stencil = Stencil::assemble(&grid, &problem);
     let mut p = vec![0.0; (n + 1) * (m + 1)];
-    incompressible::solve_full_film_sor(
-        &stencil,
-        stencil.sor_factor(&grid),
-        &mut p,
-        Stopping {
-            tolerance: 1e-13,
-            max_sweeps: 200_000,
-        },
-        &Budget::unlimited(),
-    )
-    .unwrap();
+    incompressible::solve(&stencil, &mut p, false, &Budget::unlimited()).unwrap();
     let (mut sc, mut ss) = (0.0, 0.0);
     for i in 0..n {
         let (s, c) = grid.x[i].sin_cos();

@@ -257,6 +257,9 @@ pub const CAPILLARY_MIN_L_OVER_D: f64 = 100.0;
 /// Below this orifice Reynolds number C_D falls from about 0.6–0.7 towards 0.3 (Khonsari &
 /// Booser §10.5).
 pub const ORIFICE_LOW_REYNOLDS: f64 = 100.0;
+/// Above this recess-to-supply ratio a restrictor drops almost nothing: a capillary's or an
+/// orifice's pad keeps less than a tenth of the stiffness it has at the optimum ratio.
+pub const INEFFECTIVE_RESTRICTOR_RATIO: f64 = 0.95;
 /// Thin-film transition to turbulence, film Reynolds number (Khonsari & Booser §7.11's lower
 /// bound, 580–800).
 pub const LAND_REYNOLDS_LIMIT: f64 = 580.0;
@@ -529,6 +532,13 @@ fn warn(case: &Case, op: &mut Operating) {
             format!("orifice Reynolds number {re:.4e} is below {ORIFICE_LOW_REYNOLDS}: the discharge coefficient falls towards 0.3 there (Khonsari & Booser §10.5); check the one given"),
         ),
         _ => {}
+    }
+    let m = op.point.ratio();
+    if r.kind != Kind::ConstantFlow && m > INEFFECTIVE_RESTRICTOR_RATIO {
+        notes.warn(
+            "restrictor_ineffective",
+            format!("the restrictor drops only {:.4e} of the supply pressure (recess over supply {m:.6}): the pad's stiffness, {:.4e} of 3W/h, vanishes as the ratio reaches 1; a narrower restrictor (or `pressure_ratio` to design one) restores it", 1.0 - m, r.kind.stiffness_factor(m)),
+        );
     }
     if let Some(re) = op
         .land_reynolds_number

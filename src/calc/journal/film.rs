@@ -248,7 +248,7 @@ pub struct Film {
     /// [`Film::steady`] film). False: a pure squeeze film (Khonsari & Booser §9.5–9.6), driven
     /// by the rates alone; its pressure scale N_s is then the squeeze's own rate (with Ȧ = 1,
     /// P̄ = p (C/R)²/(μ ε̇)). A pure squeeze film without cavitation has no feed line: it is
-    /// periodic round the circle (solved by [`reynolds::solve_full_film_sor`]).
+    /// periodic round the circle (one banded solve, its columns numbered round the seam).
     pub rotating: bool,
 }
 
@@ -529,11 +529,7 @@ pub fn solve(
     let mut p = start
         .filter(|s| s.len() == n)
         .unwrap_or_else(|| vec![0.0; n]);
-    let solved = if g.periodic {
-        reynolds::solve_full_film_sor(&stencil, stencil.sor_factor(&g), &mut p, stop, budget)?
-    } else {
-        reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?
-    };
+    let solved = reynolds::solve(&stencil, &mut p, film.physics.cavitation, budget)?;
     Ok((integrate(&g, &p, &film, solved, None), p))
 }
 

@@ -251,15 +251,16 @@ impl Rate<4> for WithMass<'_> {
 /// The massless journal's rate: the mobility velocity.
 struct Massless<'a>(&'a Problem);
 
-impl Massless<'_> {
-    fn velocity(&self, t: f64, r: [f64; 2]) -> Option<[f64; 2]> {
-        let p = self.0;
-        let load = p.load.force(t);
-        let w = p
+impl Problem {
+    /// The massless journal's velocity dr̄/dτ at τ and r̄ (Booker's mobility): the squeeze
+    /// vector at which the film carries the load, plus the film's mean rotation,
+    /// v̄ = w̄ + ½Ω̄ k × r̄; None outside the film's model.
+    pub fn mobility_velocity(&self, t: f64, r: [f64; 2]) -> Option<[f64; 2]> {
+        let load = self.load.force(t);
+        let w = self
             .film
-            .squeeze_for(r, [load[0] / p.force_scale, load[1] / p.force_scale])?;
-        // v̄ = w̄ + ½Ω̄ k × r̄.
-        let half = 0.5 * p.film.speed_sum();
+            .squeeze_for(r, [load[0] / self.force_scale, load[1] / self.force_scale])?;
+        let half = 0.5 * self.film.speed_sum();
         Some([w[0] - half * r[1], w[1] + half * r[0]])
     }
 }
@@ -267,7 +268,10 @@ impl Massless<'_> {
 impl Rate<2> for Massless<'_> {
     type Error = ();
     fn rate(&mut self, t: f64, y: &Vector2<f64>) -> Result<Vector2<f64>, RateError<()>> {
-        let v = self.velocity(t, [y[0], y[1]]).ok_or(RateError::Outside)?;
+        let v = self
+            .0
+            .mobility_velocity(t, [y[0], y[1]])
+            .ok_or(RateError::Outside)?;
         Ok(Vector2::new(v[0], v[1]))
     }
 }

@@ -71,7 +71,7 @@ impl Numerical {
     }
 }
 
-/// SOR stopping of the full (periodic) film; the cavitated film is solved directly.
+/// Sweep stopping the film solve takes; both squeeze films are direct solves that do not use it.
 const FILM_STOP: Stopping = Stopping {
     tolerance: 1e-11,
     max_sweeps: 200_000,
@@ -200,11 +200,7 @@ pub fn squeeze(
     };
     let quadrature_error = integral.error / integral.value.abs();
     let report = SolverReport {
-        method: match extent {
-            FilmExtent::Full => "finite_volume_sor_gauss_kronrod_time",
-            FilmExtent::Cavitated => "finite_volume_active_set_gauss_kronrod_time",
-        }
-        .to_owned(),
+        method: "finite_volume_active_set_gauss_kronrod_time".to_owned(),
         ..integral.report
     }
     .at(numerical.level)

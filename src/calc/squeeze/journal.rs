@@ -3,15 +3,21 @@
 //! ratio to grow from ε₁ to ε₂, the approach speeds and the films at both ends (Khonsari &
 //! Booser §9.5–9.6, Ex 9.2 and 9.4). `closed_form`: the infinitely long bearing (Table 9.2,
 //! 360° or 180° film); otherwise the finite bearing numerically ([`super::finite_journal`]).
+//! With `speed_rpm` the journal also turns (Ex 9.5): the path of [`super::rotating_journal`].
 //!
 //! This file is the wire (request, validation, response); the physics is
-//! [`super::long_journal`] and [`super::finite_journal`].
+//! [`super::long_journal`], [`super::finite_journal`] and [`super::rotating_journal`].
+
+use std::f64::consts::PI;
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::finite_journal::{self, Numerical};
 use super::long_journal::{self, FilmExtent};
+use super::rotating_journal::{self, Approach, RotatingFilm, TurningJournal};
+use crate::calc::journal::finite_moving_film::TableDensity;
+use crate::calc::journal::moving_film::ShortArc;
 use crate::calc::journal::plain::{grid_mesh, GeometrySpec};
 use crate::calc::lubricant::isoviscous::{self, Viscosity};
 use crate::calc::lubricant::LubricantSpec;
@@ -28,6 +34,13 @@ const MAX_ECCENTRICITY: f64 = 0.999;
 const MAX_LOAD_N: f64 = 1e12;
 /// Smallest load, N: below it the squeeze times leave the floating-point range.
 const MIN_LOAD_N: f64 = 1e-6;
+/// Largest speed, rev/min (as `/v1/journal-bearings/dynamic`).
+const MAX_SPEED_RPM: f64 = 1e6;
+/// Slowest speed taken as turning, rev/min: below it the journal turns less than a
+/// microradian a second, and its force scale μRωL³/C² nears the floating-point floor.
+const MIN_TURNING_RPM: f64 = 1e-6;
+/// Loosest step tolerance of a turning journal's path (as `/v1/journal-bearings/dynamic`).
+const MAX_STEP_TOLERANCE: f64 = 1e-4;
 /// Samples of the closed form's path.
 const CLOSED_FORM_PATH_POINTS: usize = 21;
 
@@ -63,10 +76,11 @@ pub struct SqueezeJournalInput {
     /// Eccentricity ratio at the end ε₂, dimensionless (above the initial one, at most 0.999).
     #[schema(minimum = 0.0, maximum = 0.999, example = 0.9)]
     pub final_eccentricity_ratio: f64,
-    /// Journal speed, rev/min (≥ 0; default 0). Only 0 is modelled: squeeze with rotation
-    /// (Khonsari & Booser Ex 9.5) needs the two-dimensional force balance of a turning journal
-    /// and is answered with a 422 that says so.
-    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 0.0, example = 0.0)]
+    /// Journal speed, rev/min (0 … 1e6; default 0). From 1e-6 the journal turns while squeezed
+    /// (Khonsari & Booser Ex 9.5): its path under the load is the massless journal's orbit,
+    /// on the short bearing's film at `closed_form` and on the finite cavitated film otherwise;
+    /// a slower one is taken as still, with a warning.
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e6, example = 0.0)]
     pub speed_rpm: Option<NonNegative>,
     /// `cavitated` (default) or `full`.
     #[serde(default)]
@@ -90,6 +104,14 @@ pub enum Method {
     /// The infinitely long bearing.
     Long,
     Finite(Numerical),
+    /// The turning journal's path at ω (rad/s) on `film`, integrated to step tolerance
+    /// `tolerance`.
+    Rotating {
+        omega: f64,
+        film: RotatingFilm,
+        tolerance: f64,
+        level: Level,
+    },
 }
 
 /// The parsed request.
@@ -105,6 +127,8 @@ pub struct SqueezeJournalCase {
     pub film: FilmExtent,
     pub method: Method,
     pub include_field: bool,
+    /// The speed asked for, rev/min (above 0 and below [`MIN_TURNING_RPM`]: taken as still).
+    pub speed_rpm: f64,
 }
 
 impl Validate for SqueezeJournalInput {
@@ -142,10 +166,11 @@ impl Validate for SqueezeJournalInput {
                 "must exceed initial_eccentricity_ratio (the load closes the film)",
             ));
         }
-        if self.speed_rpm.is_some_and(|n| n.get() > 0.0) {
+        let rpm = self.speed_rpm.map_or(0.0, |n| n.get());
+        if rpm > MAX_SPEED_RPM {
             errors.push(FieldError::new(
                 "/speed_rpm",
-                "squeeze with rotation (Khonsari & Booser Ex 9.5) is not modelled: a turning journal's path needs the two-dimensional force balance (the load is not along the line of approach); give 0 or omit it for the pure squeeze",
+                format!("must be within [0, {MAX_SPEED_RPM:e}] rev/min, got {rpm}"),
             ));
         }
         let method = match self.fidelity {
@@ -171,6 +196,16 @@ impl Validate for SqueezeJournalInput {
                 )))
             }
         };
+        let method = match method {
+            Some(squeeze) if rpm >= MIN_TURNING_RPM => {
+                let given = match self.fidelity {
+                    FidelityRequest::Custom(custom) => custom.tolerance,
+                    FidelityRequest::Level(_) => None,
+                };
+                rotating(squeeze, rpm, self.film, given, &mut errors)
+            }
+            other => other,
+        };
         match (errors.is_empty(), viscosity, method) {
             (true, Some(viscosity), Some(method)) => Ok(SqueezeJournalCase {
                 diameter_m: d,
@@ -186,10 +221,67 @@ impl Validate for SqueezeJournalInput {
                 },
                 method,
                 include_field: self.include_field,
+                speed_rpm: rpm,
             }),
             _ => Err(errors),
         }
     }
+}
+
+/// The turning journal's method from the still one's: `closed_form` the short bearing's film
+/// (full or π film), otherwise the finite cavitated film on the level's (or the given) mesh,
+/// at the orbit room's step tolerances (1e-6, 1e-7, 1e-9; a given tolerance, at most 1e-4, is
+/// the step's).
+fn rotating(
+    still: Method,
+    rpm: f64,
+    film: SqueezeFilm,
+    given_tolerance: Option<f64>,
+    errors: &mut Vec<FieldError>,
+) -> Option<Method> {
+    if given_tolerance.is_some_and(|t| t > MAX_STEP_TOLERANCE) {
+        errors.push(FieldError::new(
+            "/fidelity/tolerance",
+            format!("a turning journal's tolerance is the path's step tolerance: must be within [1e-10, {MAX_STEP_TOLERANCE:e}]"),
+        ));
+    }
+    let omega = rpm * PI / 30.0;
+    let (film, tolerance, level) = match (still, film) {
+        (Method::Long, SqueezeFilm::Full) => {
+            (RotatingFilm::Short(ShortArc::Full), 1e-7, Level::ClosedForm)
+        }
+        (Method::Long, SqueezeFilm::Cavitated) => (
+            RotatingFilm::Short(ShortArc::PiFilm),
+            1e-7,
+            Level::ClosedForm,
+        ),
+        (Method::Finite(_), SqueezeFilm::Full) => {
+            errors.push(FieldError::new(
+                "/film",
+                "a turning journal's finite film is the cavitated one (the Reynolds condition): give film \"cavitated\", or fidelity \"closed_form\" for the short bearing's full film",
+            ));
+            return None;
+        }
+        (Method::Finite(numerical), SqueezeFilm::Cavitated) => {
+            let tolerance = match numerical.level {
+                Level::Fast => 1e-6,
+                Level::High => 1e-9,
+                _ => 1e-7,
+            };
+            let film = RotatingFilm::Finite {
+                mesh: numerical.mesh,
+                density: TableDensity::at(numerical.level),
+            };
+            (film, tolerance, numerical.level)
+        }
+        (Method::Rotating { .. }, _) => return Some(still),
+    };
+    Some(Method::Rotating {
+        omega,
+        film,
+        tolerance: given_tolerance.unwrap_or(tolerance),
+        level,
+    })
 }
 
 /// One point of the squeeze's path.
@@ -226,8 +318,13 @@ pub struct SqueezeJournalOutput {
     pub load_coefficient_final: f64,
     /// Viscosity used, Pa·s.
     pub viscosity_pa_s: f64,
+    /// With rotation: W̄ = C²W/(μR²LU), U = Rω (Khonsari & Booser Ex 9.5's load number, the
+    /// constant of its χ chart), dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub rotating_load_number: Option<f64>,
     /// The closed form at `fidelity: closed_form`: `long_360_full_film` or
-    /// `long_180_film`; absent for the numerical solution.
+    /// `long_180_film` (still), `short_360_full_film` or `short_pi_film` (turning); absent for
+    /// the numerical solution.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub approximation: Option<String>,
     /// The path, with `include_field`.
@@ -237,7 +334,7 @@ pub struct SqueezeJournalOutput {
 
 impl Calculation for SqueezeJournal {
     const PATH: &'static str = "/v1/squeeze-films/journal";
-    const SUMMARY: &'static str = "Squeeze film of a journal pressed into its bearing without rotation: time from ε₁ to ε₂, approach speeds, films (infinitely long or finite, full or cavitated)";
+    const SUMMARY: &'static str = "Squeeze film of a journal pressed into its bearing, still or turning: time from ε₁ to ε₂, approach speeds, films (infinitely long, short or finite, full or cavitated)";
     const DESCRIPTION: &'static str = include_str!("journal.md");
     const FIDELITY: &'static [Level] =
         &[Level::ClosedForm, Level::Fast, Level::Standard, Level::High];
@@ -250,6 +347,12 @@ impl Calculation for SqueezeJournal {
     fn run(case: SqueezeJournalCase, ctx: &mut Context) -> Result<SqueezeJournalOutput, CalcError> {
         for (code, message) in &case.viscosity.assumptions {
             ctx.warn(code, message.clone());
+        }
+        if case.speed_rpm > 0.0 && case.speed_rpm < MIN_TURNING_RPM {
+            ctx.warn(
+                "rotation_negligible",
+                format!("speed_rpm {:e} is below {MIN_TURNING_RPM:e} rev/min: the journal is taken as still (the turning path tends to the still one as ω → 0)", case.speed_rpm),
+            );
         }
         let mu = case.viscosity.pa_s;
         let (r, l, c, w) = (
@@ -302,6 +405,12 @@ impl Calculation for SqueezeJournal {
                     }),
                 )
             }
+            Method::Rotating {
+                omega,
+                film,
+                tolerance,
+                level,
+            } => return turning(&case, omega, film, tolerance, level, ctx),
             Method::Finite(numerical) => {
                 let s = finite_journal::squeeze(
                     e1,
@@ -330,7 +439,7 @@ impl Calculation for SqueezeJournal {
                 criterion: None,
                 model: cavitated.then_some(match case.method {
                     Method::Long => "half_film",
-                    Method::Finite(_) => "reynolds",
+                    _ => "reynolds",
                 }),
             },
         );
@@ -353,6 +462,7 @@ impl Calculation for SqueezeJournal {
             load_coefficient_initial: w1,
             load_coefficient_final: w2,
             viscosity_pa_s: mu,
+            rotating_load_number: None,
             approximation: approximation.map(String::from),
             path: samples.map(|points| {
                 points
@@ -368,6 +478,124 @@ impl Calculation for SqueezeJournal {
             }),
         })
     }
+}
+
+/// The turning journal (Ex 9.5): its path to ε₂, or the verdict that it settles short of it.
+fn turning(
+    case: &SqueezeJournalCase,
+    omega: f64,
+    film: RotatingFilm,
+    tolerance: f64,
+    level: Level,
+    ctx: &mut Context,
+) -> Result<SqueezeJournalOutput, CalcError> {
+    let started = std::time::Instant::now();
+    let mu = case.viscosity.pa_s;
+    let (r, l, c, w) = (
+        0.5 * case.diameter_m,
+        case.length_m,
+        case.radial_clearance_m,
+        case.load_n,
+    );
+    let (e1, e2) = (
+        case.initial_eccentricity_ratio,
+        case.final_eccentricity_ratio,
+    );
+    let journal = TurningJournal {
+        radius_m: r,
+        length_m: l,
+        clearance_m: c,
+        viscosity_pa_s: mu,
+        omega,
+        load_n: w,
+    };
+    let l_over_d = l / case.diameter_m;
+    let (approximation, model) = match film {
+        RotatingFilm::Short(arc) => {
+            if l_over_d > 0.5 {
+                ctx.warn(
+                    "short_bearing_beyond_validity",
+                    format!("L/D = {l_over_d:.3}: the short bearing's film overestimates the load capacity above L/D ≈ 0.5 (Ocvirk), so the journal closes too slowly; the finite film (fast, standard, high) holds at any L/D"),
+                );
+            }
+            match arc {
+                ShortArc::Full => (Some("short_360_full_film"), None),
+                _ => (Some("short_pi_film"), Some("pi_film")),
+            }
+        }
+        RotatingFilm::Finite { .. } => (None, Some("reynolds")),
+    };
+    if case.include_field {
+        ctx.warn(
+            "path_not_available",
+            "a turning journal's path is an orbit: `/v1/journal-bearings/dynamic` with `include_orbit` samples it",
+        );
+    }
+    let cavitated = case.film == FilmExtent::Cavitated;
+    ctx.decide(
+        "cavitation",
+        Decision {
+            applied: cavitated,
+            mode: if cavitated { Mode::On } else { Mode::Off },
+            reason: if cavitated {
+                "film: cavitated — the opening side holds no tension (p ≥ 0)".into()
+            } else {
+                "film: full — negative pressures kept on the opening side".into()
+            },
+            criterion: None,
+            model,
+        },
+    );
+    let budget = ctx.budget();
+    let (time_s, speed_initial_m_s, speed_final_m_s, report) =
+        match rotating_journal::approach(journal, e1, e2, film, tolerance, &budget)? {
+            Approach::Reached {
+                time_s,
+                speed_initial_m_s,
+                speed_final_m_s,
+                report,
+            } => (time_s, speed_initial_m_s, speed_final_m_s, report),
+            Approach::Settles { eccentricity_ratio } => {
+                return Err(CalcError::impossible(
+                    "/final_eccentricity_ratio",
+                    format!("the turning journal never reaches ε₂ = {e2}: its film carries the load at ε = {eccentricity_ratio:.4}, where it settles (the rotation's wedge holds what the squeeze would not)"),
+                ))
+            }
+        };
+    let mut report = report.at(level);
+    if let RotatingFilm::Finite { mesh, .. } = film {
+        report = report
+            .named("radau_iia5_on_finite_volume_active_set_impedance_table")
+            .on_grid(vec![mesh.circumferential as u32, mesh.axial_half as u32])
+            .with_film_solves(budget.field_solves());
+    }
+    report.elapsed_ms = started.elapsed().as_secs_f64() * 1e3;
+    ctx.report(report);
+    // W̄ = W C³/(μ L R³ V) at the radial approach speed.
+    let coefficient = |v: f64| w * c.powi(3) / (mu * l * r.powi(3) * v);
+    let (w1, w2) = (coefficient(speed_initial_m_s), coefficient(speed_final_m_s));
+    if ![time_s, speed_initial_m_s, speed_final_m_s, w1, w2]
+        .iter()
+        .all(|v| v.is_finite() && *v > 0.0)
+    {
+        return Err(CalcError::impossible(
+            "",
+            "this combination of load, speed, viscosity and geometry takes the squeeze time or the approach speeds outside the floating-point range",
+        ));
+    }
+    Ok(SqueezeJournalOutput {
+        time_s,
+        approach_speed_initial_m_s: speed_initial_m_s,
+        approach_speed_final_m_s: speed_final_m_s,
+        min_film_initial_m: c * (1.0 - e1),
+        min_film_final_m: c * (1.0 - e2),
+        load_coefficient_initial: w1,
+        load_coefficient_final: w2,
+        viscosity_pa_s: mu,
+        rotating_load_number: Some(c * c * w / (mu * r * r * l * r * omega)),
+        approximation: approximation.map(String::from),
+        path: None,
+    })
 }
 
 #[cfg(test)]

@@ -5,10 +5,12 @@
 //! - `journal`: the `/v1/squeeze-films/journal` room (wire); its models `long_journal` (the
 //!   infinitely long bearing, closed forms) and `finite_journal` (the finite bearing: the
 //!   journal room's numerical film, squeezed, and the time by quadrature); both take their
-//!   viscosity from `calc::lubricant::isoviscous`.
+//!   viscosity from `calc::lubricant::isoviscous`; `rotating_journal` (the journal that turns
+//!   while squeezed: the orbit of `calc::journal::orbit` under a constant load).
 
 pub mod finite_journal;
 pub mod journal;
 pub mod long_journal;
 pub mod plates;
+pub mod rotating_journal;
 pub mod shapes;

@@ -3,7 +3,9 @@
 //! by the primal–dual active-set method (Hintermüller, Ito & Kunisch 2003, a semismooth Newton
 //! method; for an M-matrix it ends in finitely many steps from any start). Each step solves the
 //! free nodes' equations with the cavitated nodes held at p = 0 by a banded Cholesky
-//! factorisation (the nodes numbered across the short direction first), then frees every
+//! factorisation (the nodes numbered across the short direction first; the columns of a periodic
+//! film in the cyclic order 0, n−1, 1, n−2, …, so that the seam's neighbours are as near as
+//! every other pair and the band only doubles), then frees every
 //! cavitated node whose equation pulls its pressure above zero and cavitates every free node
 //! whose pressure fell below it. The active set that no longer changes is the exact discrete
 //! solution: there is no sweep tolerance.
@@ -24,7 +26,8 @@ const MAX_STEPS: u32 = 200;
 /// a_P·p (round-off must not flip a node that sits on the rupture line).
 const FREEING_THRESHOLD: f64 = 1e-12;
 
-/// The unknowns (interior, not held, a_P > 0), numbered column by column across y.
+/// The unknowns (interior, not held, a_P > 0), numbered column by column across y; a periodic
+/// film's columns 0 … nx − 1 in cyclic order (column nx repeats column 0 and shares its unknowns).
 #[derive(Debug, Clone)]
 struct Numbering {
     /// Grid node of each unknown.
@@ -37,10 +40,17 @@ struct Numbering {
 
 impl Numbering {
     fn of(stencil: &Stencil) -> Numbering {
-        let w = stencil.nx + 1;
+        let (nx, w) = (stencil.nx, stencil.nx + 1);
+        let columns: Vec<usize> = if stencil.periodic {
+            (0..nx)
+                .map(|t| if t % 2 == 0 { t / 2 } else { nx - 1 - t / 2 })
+                .collect()
+        } else {
+            (1..nx).collect()
+        };
         let mut index = vec![usize::MAX; w * stencil.rows];
         let mut nodes = Vec::new();
-        for i in 1..stencil.nx {
+        for i in columns {
             for j in 1..stencil.rows {
                 let k = j * w + i;
                 if stencil.ap[k] > 0.0 && !stencil.held[k] {
@@ -49,25 +59,57 @@ impl Numbering {
                 }
             }
         }
-        let band = nodes
+        if stencil.periodic {
+            for j in 1..stencil.rows {
+                index[j * w + nx] = index[j * w];
+            }
+        }
+        let mut numbering = Numbering {
+            nodes,
+            index,
+            band: 1,
+        };
+        numbering.band = numbering
+            .nodes
             .iter()
-            .map(|&k| {
-                let r = index[k];
-                let west = index[k - 1];
-                if west == usize::MAX {
-                    1
-                } else {
-                    r - west
-                }
+            .flat_map(|&k| {
+                let r = numbering.index[k];
+                [stencil.west(k), k - w]
+                    .into_iter()
+                    .filter_map(|nb| numbering.unknown(nb))
+                    .map(move |c| r.abs_diff(c))
             })
             .max()
-            .unwrap_or(1);
-        Numbering { nodes, index, band }
+            .unwrap_or(1)
+            .max(1);
+        numbering
     }
 
     fn unknown(&self, k: usize) -> Option<usize> {
         let r = self.index[k];
         (r != usize::MAX).then_some(r)
+    }
+}
+
+impl Stencil {
+    /// Node k's west neighbour: across the seam of a periodic film, column nx − 1.
+    fn west(&self, k: usize) -> usize {
+        if self.periodic && k.is_multiple_of(self.nx + 1) {
+            k + self.nx - 1
+        } else {
+            k - 1
+        }
+    }
+
+    /// Node k's neighbours with their coefficients: east, west, north (below the last row) and
+    /// south.
+    fn neighbours(&self, k: usize) -> impl Iterator<Item = (usize, f64)> {
+        let w = self.nx + 1;
+        let north = ((k / w) + 1 < self.rows).then(|| (k + w, self.an[k]));
+        [(k + 1, self.ae[k]), (self.west(k), self.aw[k])]
+            .into_iter()
+            .chain(north)
+            .chain([(k - w, self.a_s[k])])
     }
 }
 
@@ -80,7 +122,6 @@ fn factor(
     free: &[bool],
     storage: SymmetricBand,
 ) -> Result<BandCholesky, NotPositiveDefinite> {
-    let w = stencil.nx + 1;
     let mut a = storage;
     for (r, &k) in numbering.nodes.iter().enumerate() {
         if !free[r] {
@@ -88,11 +129,11 @@ fn factor(
             continue;
         }
         a.set(r, r, stencil.ap[k]);
-        if let Some(west) = numbering.unknown(k - 1).filter(|&c| free[c]) {
-            a.set(r, west, -stencil.aw[k]);
-        }
-        if let Some(south) = numbering.unknown(k - w).filter(|&c| free[c]) {
-            a.set(r, south, -stencil.a_s[k]);
+        // The lower triangle: each coupling from its later unknown (the stencil is symmetric).
+        for (nb, coefficient) in stencil.neighbours(k) {
+            if let Some(c) = numbering.unknown(nb).filter(|&c| c < r && free[c]) {
+                a.set(r, c, -coefficient);
+            }
         }
     }
     a.cholesky()
@@ -100,13 +141,10 @@ fn factor(
 
 /// Σ a_nb p_nb − b at node k: the free equation's right side (a_P p_P equals it).
 fn pull(stencil: &Stencil, p: &[f64], k: usize) -> f64 {
-    let w = stencil.nx + 1;
-    let north = if (k / w) + 1 < stencil.rows {
-        stencil.an[k] * p[k + w]
-    } else {
-        0.0
-    };
-    stencil.ae[k] * p[k + 1] + stencil.aw[k] * p[k - 1] + north + stencil.a_s[k] * p[k - w]
+    stencil
+        .neighbours(k)
+        .map(|(nb, coefficient)| coefficient * p[nb])
+        .sum::<f64>()
         - stencil.b[k]
 }
 
@@ -120,10 +158,6 @@ pub fn solve(
     cavitation: bool,
     budget: &Budget,
 ) -> Result<Solved, SolveError> {
-    debug_assert!(
-        !stencil.periodic,
-        "periodic films are mass-conserving solves"
-    );
     let numbering = Numbering::of(stencil);
     // A start with pressure gives the first free set; from rest, the nodes the wedge (or
     // source) pressurises: b < 0 pulls p above zero.
@@ -151,23 +185,11 @@ pub fn solve(
         // The right side: −b plus the fixed boundary values' pull; cavitated rows hold 0.
         for (r, &k) in numbering.nodes.iter().enumerate() {
             x[r] = if free[r] {
-                let w = stencil.nx + 1;
-                let fixed = |nb: usize, a: f64| {
-                    if numbering.unknown(nb).is_none() {
-                        a * p[nb]
-                    } else {
-                        0.0
-                    }
-                };
-                let north = if (k / w) + 1 < stencil.rows {
-                    fixed(k + w, stencil.an[k])
-                } else {
-                    0.0
-                };
-                fixed(k + 1, stencil.ae[k])
-                    + fixed(k - 1, stencil.aw[k])
-                    + fixed(k - w, stencil.a_s[k])
-                    + north
+                stencil
+                    .neighbours(k)
+                    .filter(|&(nb, _)| numbering.unknown(nb).is_none())
+                    .map(|(nb, coefficient)| coefficient * p[nb])
+                    .sum::<f64>()
                     - stencil.b[k]
             } else {
                 0.0
@@ -181,6 +203,7 @@ pub fn solve(
         for (r, &k) in numbering.nodes.iter().enumerate() {
             p[k] = x[r];
         }
+        stencil.close_seam(p);
         if !cavitation {
             return Verdict::Converged((), stencil.residual(p, false));
         }
@@ -251,6 +274,16 @@ impl Linearised {
 }
 
 impl Stencil {
+    /// A periodic film's column nx repeats column 0.
+    fn close_seam(&self, p: &mut [f64]) {
+        if self.periodic {
+            let w = self.nx + 1;
+            for j in 0..self.rows {
+                p[j * w + self.nx] = p[j * w];
+            }
+        }
+    }
+
     /// a_P p − Σ a_nb p_nb + b at every interior node that is not held (0 at boundary and held
     /// nodes). Linear in the stencil's coefficients: a stencil assembled from the derivatives of
     /// a film's coefficient functions gives the residual's derivative.
