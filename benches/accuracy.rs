@@ -569,6 +569,7 @@ fn thrust_pads(out: &mut String) {
     use stribeck::calc::thrust::film::Mesh as PadMesh;
     use stribeck::calc::thrust::performance::{evaluate, Method as PadMethod};
     use stribeck::calc::thrust::profile::Profile;
+    use stribeck::calc::turbulence::Flow;
     let cases = [
         (Profile::PlaneInclined { ratio: 1.2 }, 0.25),
         (Profile::PlaneInclined { ratio: 2.0 }, 1.0),
@@ -598,7 +599,7 @@ fn thrust_pads(out: &mut String) {
                 along: 256,
                 across_half: 64,
             };
-            evaluate(p, lb, PadMethod::mesh(mesh), &budget)
+            evaluate(p, Flow::Laminar, lb, PadMethod::mesh(mesh), &budget)
                 .unwrap()
                 .performance
                 .load
@@ -630,7 +631,7 @@ fn thrust_pads(out: &mut String) {
         for (&(p, lb), &want) in cases.iter().zip(&reference) {
             let mut got = None;
             times.push(median_ms(|| {
-                got = Some(evaluate(p, lb, method, &budget).unwrap())
+                got = Some(evaluate(p, Flow::Laminar, lb, method, &budget).unwrap())
             }));
             let got = got.unwrap();
             let error = (got.performance.load / want - 1.0).abs();
@@ -643,7 +644,14 @@ fn thrust_pads(out: &mut String) {
         let table_worst = entries
             .iter()
             .map(|&(ratio, lb, k_h)| {
-                let got = evaluate(Profile::PlaneInclined { ratio }, lb, method, &budget).unwrap();
+                let got = evaluate(
+                    Profile::PlaneInclined { ratio },
+                    Flow::Laminar,
+                    lb,
+                    method,
+                    &budget,
+                )
+                .unwrap();
                 (got.performance.k_h() / k_h - 1.0).abs()
             })
             .fold(0.0f64, f64::max);

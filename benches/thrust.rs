@@ -4,6 +4,9 @@
 //! - a closed form (the infinitely long pad): under 20 µs;
 //! - a whole sector-pad bearing (the README's, tilting pads): under 50 ms.
 //!
+//! The crowned pad (a central pivot) nests the pivot's root in the load balance's; the turbulent pads (a large, fast pad: B = L = 0.3 m at 80 m/s, pad-average Re ≈ 830) solve
+//! the pad once laminar and then a few times for the turbulent film's Re₂ fixed point.
+//!
 //! Each is the whole request through the room (parse, validate, physics, envelope).
 //! `cargo bench --bench thrust`.
 
@@ -42,6 +45,27 @@ fn thrust(c: &mut Criterion) {
             &format!(r#"{{{pad}, "pivot_position_fraction": 0.6, "fidelity": "{fidelity}"}}"#),
         );
     }
+    request(
+        c,
+        "tilting pad, central pivot, crown 20 µm, thermal, standard",
+        tilting,
+        &format!(
+            r#"{{{pad}, "pivot_position_fraction": 0.5, "crown_m": 2e-5, "fidelity": "standard"}}"#
+        ),
+    );
+    let large = r#""pad": {"breadth_m": 0.3, "length_m": 0.3}, "sliding_speed_m_s": 80, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 50, "load_n": 300000, "effects": {"turbulence": "on"}, "fidelity": "standard""#;
+    request(
+        c,
+        "fixed pad, plane h1/h2 = 2, thermal, turbulent, standard",
+        fixed,
+        &format!(r#"{{{large}, "profile": {{"kind": "plane_inclined", "film_ratio": 2}}}}"#),
+    );
+    request(
+        c,
+        "tilting pad, pivot 0.6, thermal, turbulent, standard",
+        tilting,
+        &format!(r#"{{{large}, "pivot_position_fraction": 0.6}}"#),
+    );
     let bearing = stribeck::calc::find("/v1/thrust-bearings/bearing")
         .unwrap()
         .example;

@@ -12,6 +12,7 @@ pub mod rolling;
 pub mod squeeze;
 pub mod surface;
 pub mod thrust;
+pub mod turbulence;
 
 mod context;
 pub(crate) mod range_schemas;

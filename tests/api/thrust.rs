@@ -305,3 +305,150 @@ fn bad_requests_name_the_field() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The turbulent pad film (Ng–Pan, Khonsari & Booser Eq. 6.26–6.31 and §7.11): `auto` applies
+/// it above a pad-average Reynolds number of 580 and reports why, with the number and the
+/// trailing-edge Re₂ it was solved at; `off` is the laminar pad bit for bit (its dimensionless
+/// numbers are those of the same pad at a creeping speed); at the same film the turbulent pad
+/// carries more load and loses more power; as Re → 0 `on` tends to the laminar pad.
+#[test]
+fn turbulent_pad_film_is_decided_reported_and_tends_to_laminar() {
+    let pad = |mode: &str, speed: f64, viscosity: f64| {
+        json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3},
+            "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": speed,
+            "lubricant": {"viscosity_pa_s": viscosity, "density_15c_kg_m3": 870.0},
+            "outlet_film_m": 1e-4, "effects": {"turbulence": mode, "thermal": "off"},
+        })
+    };
+    let turbulent = run(FIXED, &pad("auto", 80.0, 0.005)).unwrap();
+    let laminar = run(FIXED, &pad("off", 80.0, 0.005)).unwrap();
+    let d = &turbulent["effects"]["turbulence"];
+    assert_eq!(d["applied"], true, "{d}");
+    assert_eq!(d["model"], "ng_pan", "{d}");
+    let criterion = number(d, "/criterion/value");
+    assert!(criterion > 580.0, "{d}");
+    assert_eq!(criterion, number(&turbulent, "/result/reynolds_number"));
+    // ρ U h2/μ with ρ at 40 °C a little under its 15 °C value: about 1.4e3.
+    let re2 = number(&turbulent, "/result/outlet_reynolds_number");
+    assert!((1.3e3..1.4e3).contains(&re2), "Re₂ {re2}");
+    let reason = d["reason"].as_str().unwrap();
+    assert!(reason.contains(&format!("{re2:.4e}")), "{reason}");
+    assert!(reason.contains(&format!("{criterion:.4e}")), "{reason}");
+    let off = &laminar["effects"]["turbulence"];
+    assert_eq!(off["applied"], false, "{off}");
+    assert_eq!(number(off, "/criterion/value"), criterion);
+    let (t, l) = (&turbulent["result"], &laminar["result"]);
+    assert!(number(t, "/load_n") > 1.2 * number(l, "/load_n"));
+    assert!(number(t, "/power_loss_w") > 1.5 * number(l, "/power_loss_w"));
+    // Off: the laminar pad, bit for bit (W̄ and K_f do not depend on speed when laminar).
+    let creeping = run(FIXED, &pad("auto", 1e-3, 0.005)).unwrap();
+    assert_eq!(creeping["effects"]["turbulence"]["applied"], false);
+    assert_eq!(l["coefficients"], creeping["result"]["coefficients"]);
+    // Re ≈ 0.02: the Ng–Pan factors are 1 to 1e-4.
+    let on = run(FIXED, &pad("on", 1.0, 5.0)).unwrap();
+    assert_eq!(on["effects"]["turbulence"]["applied"], true);
+    for field in ["load", "k_f", "k_q"] {
+        let (a, b) = (
+            number(&on, &format!("/result/coefficients/{field}")),
+            number(&creeping, &format!("/result/coefficients/{field}")),
+        );
+        assert!((a / b - 1.0).abs() < 1e-4, "{field}: {a} vs {b}");
+    }
+}
+
+/// At a fixed film, the turbulent pad's W̄ rises monotonically with the speed's Reynolds
+/// number (the laminar W̄ would not change), and a tilting pad in a turbulent film still
+/// balances its load and its moment about the pivot.
+#[test]
+fn turbulent_load_rises_with_reynolds_number_and_tilting_pads_balance() {
+    let mut last = 0.0;
+    for speed in [1.0, 10.0, 30.0, 60.0, 100.0, 200.0] {
+        let body = json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3},
+            "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": speed,
+            "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
+            "outlet_film_m": 1e-4, "effects": {"turbulence": "on", "thermal": "off"},
+        });
+        let v = run(FIXED, &body).unwrap();
+        let load = number(&v, "/result/coefficients/load");
+        assert!(load > last, "W̄ {load} at {speed} m/s after {last}");
+        last = load;
+    }
+    for pivot in [0.55, 0.6, 0.65] {
+        let body = json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3}, "pivot_position_fraction": pivot,
+            "sliding_speed_m_s": 80, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 50,
+            "load_n": 300000, "effects": {"turbulence": "on"}, "fidelity": "fast",
+        });
+        let v = run(TILTING, &body).unwrap();
+        assert_eq!(v["effects"]["turbulence"]["applied"], true);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - pivot).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 3e5 - 1.0).abs() < 1e-9);
+    }
+}
+
+/// A crowned tilting pad (Khonsari & Booser §7.5): pivoted at mid-pad it carries its load (the
+/// flat pad's 422 stays without a crown), its centre of pressure on the pivot; as the crown
+/// vanishes an offset pivot's answer tends to the flat pad's; the crown's bad inputs name it.
+#[test]
+fn a_crowned_pad_carries_load_on_a_central_pivot_and_tends_to_the_flat_pad() {
+    let pad = |pivot: f64, crown: Option<f64>, fidelity: &str| {
+        let mut body = json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087}, "pivot_position_fraction": pivot,
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "load_n": 16000, "fidelity": fidelity,
+        });
+        if let Some(crown) = crown {
+            body["crown_m"] = json!(crown);
+        }
+        body
+    };
+    match run(TILTING, &pad(0.5, None, "fast")) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/pivot_position_fraction");
+            assert!(message.contains("carries no useful load"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+    for crown in [1e-5, 2e-5, 4e-5] {
+        let v = run(TILTING, &pad(0.5, Some(crown), "fast")).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - 0.5).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-9);
+        let (h2, h_min) = (
+            number(&v, "/result/outlet_film_m"),
+            number(&v, "/result/minimum_film_m"),
+        );
+        assert!(h_min <= h2 && h_min > 0.5 * h2, "h_min {h_min}, h2 {h2}");
+        assert!(number(&v, "/result/film_ratio") > 1.0);
+    }
+    // Crown → 0 at a pivot of 0.6: the flat pad's equilibrium (isothermal: a crowned pad is not
+    // plane, so its effective temperature is T_in + ΔT rather than Jang & Khonsari's fit).
+    let isothermal = |mut body: Value| {
+        body["effects"] = json!({"thermal": "off"});
+        body
+    };
+    let flat = run(TILTING, &isothermal(pad(0.6, None, "fast"))).unwrap();
+    let crowned = run(TILTING, &isothermal(pad(0.6, Some(1e-10), "fast"))).unwrap();
+    for field in [
+        "/result/film_ratio",
+        "/result/outlet_film_m",
+        "/result/power_loss_w",
+    ] {
+        let (a, b) = (number(&crowned, field), number(&flat, field));
+        assert!((a / b - 1.0).abs() < 1e-4, "{field}: {a} vs {b}");
+    }
+    for (body, pointer) in [
+        (pad(0.5, Some(2e-3), "fast"), "/crown_m"),
+        (pad(0.5, Some(2e-5), "closed_form"), "/fidelity"),
+    ] {
+        match run(TILTING, &body) {
+            Err(Failure::Invalid(errors)) => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+}

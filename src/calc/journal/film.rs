@@ -22,6 +22,7 @@
 use std::cell::Cell;
 use std::f64::consts::PI;
 
+use crate::calc::turbulence::{turbulent_flow_factors, turbulent_shear_factor};
 use crate::calc::Budget;
 use crate::fidelity::IterationUnit;
 use crate::numerics::banded::NotPositiveDefinite;
@@ -359,20 +360,6 @@ impl FilmModel {
             _ => None,
         }
     }
-}
-
-/// Ng–Pan pressure-flow coefficients relative to laminar, 12 G_x and 12 G_y, at local Re
-/// (1/G_x = 12 + 0.0136 Re^0.90, 1/G_y = 12 + 0.0043 Re^0.96; Khonsari & Booser Eq. 6.27).
-pub fn turbulent_flow_factors(re: f64) -> (f64, f64) {
-    (
-        12.0 / (12.0 + 0.0136 * re.powf(0.90)),
-        12.0 / (12.0 + 0.0043 * re.powf(0.96)),
-    )
-}
-
-/// Ng–Pan Couette shear factor G_f = 1 + 0.0012 Re^0.94 (Khonsari & Booser Eq. 6.30).
-pub fn turbulent_shear_factor(re: f64) -> f64 {
-    1.0 + 0.0012 * re.powf(0.94)
 }
 
 impl Film {

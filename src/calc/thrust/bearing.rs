@@ -364,7 +364,7 @@ impl Calculation for Bearing {
         let c = &case.conditions;
         let solved = match case.pads {
             Pads::Fixed { profile, ratio } => pad::fixed(profile, ratio, case.method, c, &budget),
-            Pads::Tilting(pivot) => pad::tilting(pivot, case.method, c, &budget),
+            Pads::Tilting(pivot) => pad::tilting(pivot, None, case.method, c, &budget),
         }
         .map_err(per_pad_pointers)?;
         ctx.record(&solved.operating.notes);

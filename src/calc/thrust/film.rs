@@ -12,9 +12,15 @@
 //! plane, so half the pad is solved (`numerics::reynolds`, exact active-set solve). A step or
 //! the start of a land sits on a node: the finite volumes on either side then carry their own
 //! h̄ and the 1-D part of the solution is exact.
+//!
+//! A turbulent film ([`Flow::Turbulent`], Ng–Pan; Khonsari & Booser Eq. 6.26–6.31) takes the
+//! conductances h̄³ 12 G_x and h̄³ 12 G_y at the local Re = Re₂ h̄ (Re₂ = ρ U h2/μ) through the
+//! basement's `conductance` hook, and the runner's Couette shear G_f/h̄. A laminar film passes
+//! no conductance: its stencil is h̄³ as before, bit for bit.
 
 use super::coefficients::Performance;
 use super::profile::Profile;
+use crate::calc::turbulence::Flow;
 use crate::calc::Budget;
 use crate::numerics::interpolate::Parabola;
 use crate::numerics::reynolds::{self, at, Axis, Grid, Problem, SolveError, Solved, Stencil};
@@ -84,17 +90,18 @@ pub struct Field {
     pub mid_plane: Vec<(f64, f64)>,
 }
 
-/// Solve the pad `profile` of aspect L/B = `l_over_b` on `mesh` (`halves`: as the fine mesh
-/// of a Richardson pair, see [`grid`]).
+/// Solve the pad `profile` of aspect L/B = `l_over_b` in a `flow` on `mesh` (`halves`: as the
+/// fine mesh of a Richardson pair, see [`grid`]).
 pub fn solve(
     profile: Profile,
+    flow: Flow,
     l_over_b: f64,
     mesh: Mesh,
     halves: bool,
     budget: &Budget,
 ) -> Result<Field, SolveError> {
     let g = grid(mesh, profile, halves);
-    let stencil = assemble(profile, l_over_b, &g);
+    let stencil = assemble(profile, flow, l_over_b, &g);
     // Start with every node free: a converging pad has no cavitated node, so one active-set
     // step solves it; a diverging part cavitates in the next steps.
     let n = (g.nx() + 1) * (g.ny + 1);
@@ -110,7 +117,7 @@ pub fn solve(
     let solved = reynolds::solve(&stencil, &mut p, true, budget)?;
     let all_full = vec![1.0; n];
     let fluxes = stencil.fluxes(&p, &all_full);
-    let performance = integrate(profile, &g, &p, fluxes);
+    let performance = integrate(profile, flow, &g, &p, fluxes);
     let mid_plane = (0..=g.nx()).map(|i| (g.x[i], p[at(&g, i, g.ny)])).collect();
     Ok(Field {
         performance,
@@ -119,10 +126,15 @@ pub fn solve(
     })
 }
 
-/// The five-point stencil of the pad on `g`. A node on a step takes the mean of h̄³ over its
-/// control volume for the flow across (h̄³ differs on its two halves).
-fn assemble(profile: Profile, l_over_b: f64, g: &Grid) -> Stencil {
+/// The five-point stencil of the pad on `g`. A node on a step takes the mean of the
+/// conductance over its control volume for the flow across (h̄ differs on its two halves).
+fn assemble(profile: Profile, flow: Flow, l_over_b: f64, g: &Grid) -> Stencil {
     let thickness = |x: f64, _y: f64| profile.thickness(x);
+    // h̄³ scaled by the flow's factor of the direction (1 when laminar).
+    let along = |h: f64, axis: Axis| {
+        let (gx, gy) = flow.pressure_factors(h);
+        h.powi(3) * if axis == Axis::X { gx } else { gy }
+    };
     let step = match profile {
         Profile::Step {
             ratio,
@@ -130,19 +142,19 @@ fn assemble(profile: Profile, l_over_b: f64, g: &Grid) -> Stencil {
         } => {
             let i = g.x.partition_point(|&x| x < step_position);
             let (west, east) = (g.x[i] - g.x[i - 1], g.x[i + 1] - g.x[i]);
-            Some((step_position, (west * ratio.powi(3) + east) / (west + east)))
+            let mean = (west * along(ratio, Axis::Y) + east * along(1.0, Axis::Y)) / (west + east);
+            Some((step_position, mean))
         }
         _ => None,
     };
     let conductance = |x: f64, _y: f64, axis: Axis| match step {
         Some((at, mean)) if axis == Axis::Y && x == at => mean,
-        _ => profile.thickness(x).powi(3),
+        _ => along(profile.thickness(x), axis),
     };
+    let scaled = step.is_some() || flow != Flow::Laminar;
     let problem = Problem {
         film: &thickness,
-        conductance: step
-            .is_some()
-            .then_some(&conductance as &dyn Fn(f64, f64, Axis) -> f64),
+        conductance: scaled.then_some(&conductance as &dyn Fn(f64, f64, Axis) -> f64),
         anisotropy: (1.0 / l_over_b).powi(2),
         wedge: WEDGE,
         source: None,
@@ -152,7 +164,13 @@ fn assemble(profile: Profile, l_over_b: f64, g: &Grid) -> Stencil {
 }
 
 /// The performance numbers of the field `p` on the half pad `g` (doubled for the whole pad).
-fn integrate(profile: Profile, g: &Grid, p: &[f64], fluxes: reynolds::Fluxes) -> Performance {
+fn integrate(
+    profile: Profile,
+    flow: Flow,
+    g: &Grid,
+    p: &[f64],
+    fluxes: reynolds::Fluxes,
+) -> Performance {
     let nx = g.nx();
     let (mut load, mut moment, mut wedge_shear) = (0.0, 0.0, 0.0);
     for j in 0..=g.ny {
@@ -169,7 +187,7 @@ fn integrate(profile: Profile, g: &Grid, p: &[f64], fluxes: reynolds::Fluxes) ->
                 0.5 * profile.thickness(face) * (p[at(g, i + 1, j)] - p[at(g, i, j)]) * wy;
         }
     }
-    let couette: f64 = super::long_pad::couette_shear(profile);
+    let couette: f64 = super::long_pad::couette_shear(profile, flow);
     let (peak, peak_x) = peak(profile, g, p);
     // Flows in the stencil's units are 12 Q̄ per unit of ȳ; the half pad is doubled. The
     // stencil's fluxes cross the faces half a cell inside the side edge: the Couette flow

@@ -14,11 +14,17 @@
 //! the runner), Q̄ = Q/(U L h2). The integrals are Gauss–Legendre sums on the profile's smooth
 //! pieces, cut where h̄ changes by a quarter, so they are exact to round-off (the integrands are
 //! analytic there, their poles at h̄ = 0 well off each piece).
+//!
+//! A turbulent film (Ng–Pan, [`Flow`]) scales the Poiseuille flow by g(h̄) = 12 G_x(Re₂ h̄) and
+//! the Couette shear by G_f(Re₂ h̄): then dP̄/dx̄ = 6 (h̄ − h̄_m)/(g h̄³), and the same integrals
+//! carry the weight 1/g (I_n = ∫ h̄⁻ⁿ/g, and so on), F̄ = ∫ G_f/h̄ + 3 ∫ (h̄⁻¹ − h̄_m h̄⁻²)/g. A
+//! laminar film has g = G_f = 1 exactly, so its numbers are the laminar ones bit for bit.
 
 use std::sync::OnceLock;
 
 use super::coefficients::Performance;
 use super::profile::Profile;
+use crate::calc::turbulence::Flow;
 use crate::numerics::quadrature::gauss_legendre;
 
 /// Gauss–Legendre points per sub-piece.
@@ -39,9 +45,15 @@ fn integrate<const N: usize>(
     if b <= a {
         return sum;
     }
-    // The profiles are monotone on each piece: the end values bound h̄ there.
+    // The profiles are monotone on each piece (the end values bound h̄ there) but for a
+    // crown, whose thinnest film may lie inside.
     let (h0, h1) = (profile.thickness(a), profile.thickness(b - 1e-15 * (b - a)));
-    let spread = (h0.max(h1) / h0.min(h1)).ln();
+    let thin = match profile {
+        Profile::Crowned { .. } => h0.min(h1).min(profile.minimum()),
+        _ => h0.min(h1),
+    };
+    let thick = h0.max(h1);
+    let spread = (thick / thin).ln();
     let cuts = ((spread / PIECE_RATIO.ln()).ceil() as usize).max(1);
     let rule = RULE.get_or_init(|| gauss_legendre(POINTS));
     let width = (b - a) / cuts as f64;
@@ -90,9 +102,10 @@ fn position_of(profile: Profile, h: f64) -> f64 {
     0.5 * (lo + hi)
 }
 
-/// ∫₀¹ dx̄/h̄: the Couette part of the runner's friction F̄, the same for a pad of any length.
-pub fn couette_shear(profile: Profile) -> f64 {
-    let [i1] = integrate_pad(profile, 0.0, 1.0, |_, h| [1.0 / h]);
+/// ∫₀¹ G_f dx̄/h̄: the Couette part of the runner's friction F̄, the same for a pad of any
+/// length (G_f = 1 when laminar).
+pub fn couette_shear(profile: Profile, flow: Flow) -> f64 {
+    let [i1] = integrate_pad(profile, 0.0, 1.0, |_, h| [flow.shear_factor(h) / h]);
     i1
 }
 
@@ -102,20 +115,32 @@ pub fn mean_thickness(profile: Profile) -> f64 {
     mean
 }
 
-/// The infinitely long pad's performance.
-pub fn performance(profile: Profile) -> Performance {
+/// The infinitely long pad's performance, laminar or turbulent. A full film (P̄ = 0 at both
+/// edges): not for a [`Profile::Crowned`] pad, whose diverging part cavitates (the rooms solve
+/// crowned pads numerically only).
+pub fn performance(profile: Profile, flow: Flow) -> Performance {
+    // 1/g: the Poiseuille weight of a turbulent film (exactly 1 when laminar).
+    let weight = |h: f64| 1.0 / flow.pressure_factors(h).0;
     let [i1, i2, i3, j2, j3, k2, k3] = integrate_pad(profile, 0.0, 1.0, |x, h| {
-        let (r1, r2, r3) = (1.0 / h, 1.0 / (h * h), 1.0 / (h * h * h));
+        let w = weight(h);
+        let (r1, r2, r3) = (w / h, w / (h * h), w / (h * h * h));
         [r1, r2, r3, x * r2, x * r3, x * x * r2, x * x * r3]
     });
     let hm = i2 / i3;
     let load = -6.0 * (j2 - hm * j3);
     let first_moment = -3.0 * (k2 - hm * k3);
     let peak = position_of(profile, hm);
-    let [rise] = integrate_pad(profile, 0.0, peak, |_, h| [(h - hm) / (h * h * h)]);
+    let [rise] = integrate_pad(profile, 0.0, peak, |_, h| {
+        [weight(h) * (h - hm) / (h * h * h)]
+    });
+    // ∫ G_f/h̄ − ∫ 1/(g h̄): zero when laminar, so F̄ is then 4 I₁ − 3 h̄_m I₂ bit for bit.
+    let turbulent_shear = match flow {
+        Flow::Laminar => 0.0,
+        Flow::Turbulent { .. } => couette_shear(profile, flow) - i1,
+    };
     Performance {
         load,
-        friction: 4.0 * i1 - 3.0 * hm * i2,
+        friction: 4.0 * i1 - 3.0 * hm * i2 + turbulent_shear,
         center_of_pressure: first_moment / load,
         max_pressure: 6.0 * rise,
         max_pressure_position: peak,

@@ -3,6 +3,7 @@
 //! - `bearing`: the `/v1/thrust-bearings/bearing` room; `sector`: its sectors and design rules;
 //! - `fixed_pad`: the `/v1/thrust-bearings/fixed-pad` room (request, response);
 //! - `tilting_pad`: the `/v1/thrust-bearings/tilting-pad` room; `pivot`: its equilibrium;
+//!   `crowned`: a crowned pad's, 2-D in (h1/h2, h2);
 //! - `pad_spec`: the wire parts every pad room shares (pad, effects, fidelity, result);
 //! - `pad`: one pad solved at its operating point (fixed, or tilting in equilibrium);
 //! - `operating`: a pad at its operating point, dimensional, effects decided;
@@ -15,6 +16,7 @@
 
 pub mod bearing;
 pub mod coefficients;
+pub mod crowned;
 pub mod film;
 pub mod fixed_pad;
 pub mod long_pad;

@@ -6,10 +6,16 @@
 //! without a search. The temperature rise is the pad's power carried off by its inlet flow,
 //! ΔT = E_p/(ρ c_p Q₁) (Eq. 7.8), and the thermal effect takes the viscosity at the effective
 //! temperature T_in + ΔT (the texts' design procedure, §7.4 step 5; Ex 7.1, 7.2): a root in T.
+//!
+//! The turbulence effect is decided here from the pad-average Reynolds number ρ U h̄_mean/μ
+//! (§7.11); a turbulent pad's performance depends on the trailing-edge Re₂ = ρ U h2/μ, which the
+//! operating point sets, so [`super::pad`] solves that loop and this reports the flow it was
+//! given.
 
 use super::performance::{Evaluated, Performance};
 use super::thd;
 use crate::calc::lubricant::{validity, Lubricant};
+use crate::calc::turbulence::Flow;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
 use crate::numerics::roots::{brent, Stopping};
@@ -56,8 +62,11 @@ pub struct Conditions {
 }
 
 /// Transition to turbulence in a thrust film: pad-average Reynolds number 580–800 (local
-/// 1000–1200; Khonsari & Booser §7.11). `auto` flags the lower end.
+/// 1000–1200; Khonsari & Booser §7.11). `auto` applies the turbulent film from the lower end.
 pub const TURBULENT_REYNOLDS: f64 = 580.0;
+/// The upper end of the transition: between the two the texts advise computing both regimes
+/// and expecting the larger power loss (§7.11).
+pub const TRANSITION_END_REYNOLDS: f64 = 800.0;
 /// The viscosity drop across the isothermal rise above which `auto` applies the thermal effect
 /// (as for the journal).
 const THERMAL_VISCOSITY_DROP: f64 = 0.05;
@@ -89,10 +98,14 @@ pub struct Operating {
     pub effective_viscosity_pa_s: f64,
     /// ρ U h̄_mean/μ at the effective temperature.
     pub reynolds_number: f64,
+    /// Re₂ = ρ U h2/μ at the effective temperature: the reference of a turbulent film's local
+    /// Re = Re₂ h̄.
+    pub outlet_reynolds_number: f64,
     pub notes: Notes,
 }
 
-/// The pad of `evaluated` performance (film ratio `ratio`, mean film h̄_mean h2) under `c`.
+/// The pad of `evaluated` performance (film ratio `ratio`, mean film h̄_mean h2, computed in
+/// `flow`) under `c`.
 ///
 /// `plane` says the pad is plane over its whole breadth (a plane fixed pad, or a tilting pad):
 /// then, inside the fits' range, its mean and maximum temperatures are Jang & Khonsari's
@@ -102,6 +115,7 @@ pub fn operate(
     ratio: f64,
     mean_film: f64,
     plane: bool,
+    flow: Flow,
     c: &Conditions,
 ) -> Result<Operating, CalcError> {
     let p = evaluated.performance;
@@ -184,38 +198,10 @@ pub fn operate(
     let h2 = film(mu);
     let rho = lub.density_kg_m3(t_eff);
     let reynolds = rho * u * mean_film * h2 / mu;
-    let turbulence = Decision::decide(
-        c.effects.turbulence,
-        Criterion {
-            name: "pad_reynolds_number",
-            value: reynolds,
-            threshold: TURBULENT_REYNOLDS,
-        },
-        "turbulent film",
-    );
-    if turbulence.applied {
-        if c.effects.turbulence == Mode::On {
-            return Err(CalcError::impossible(
-                "/effects/turbulence",
-                "a turbulent pad film is not modelled yet; use auto (the Reynolds number is reported and a warning given above transition) or off",
-            ));
-        }
-        notes.warn(
-            "turbulent_film",
-            format!("the pad-average Reynolds number ρ U h_mean/μ = {reynolds:.0} exceeds the transition at 580–800 (Khonsari & Booser §7.11): the laminar power loss is low; compute both regimes and expect the higher loss"),
-        );
-    }
+    let outlet_reynolds = rho * u * h2 / mu;
     notes.decide(
         "turbulence",
-        Decision {
-            applied: false,
-            reason: if turbulence.applied {
-                format!("{}; not modelled: the result is laminar", turbulence.reason)
-            } else {
-                turbulence.reason
-            },
-            ..turbulence
-        },
+        turbulence_decision(c.effects.turbulence, reynolds, flow),
     );
     let load = p.load * mu * u * b * b * l / (h2 * h2);
     let friction = p.friction * mu * u * b * l / h2;
@@ -257,8 +243,36 @@ pub fn operate(
         max_temperature_c: max_temperature,
         effective_viscosity_pa_s: mu,
         reynolds_number: reynolds,
+        outlet_reynolds_number: outlet_reynolds,
         notes,
     })
+}
+
+/// The turbulence decision at pad-average Reynolds number `reynolds` (ρ U h̄_mean/μ against
+/// [`TURBULENT_REYNOLDS`]): `auto` and `on` apply it, and a result computed in a turbulent
+/// `flow` says so, with its trailing-edge Re₂ and the model.
+pub fn turbulence_decision(mode: Mode, reynolds: f64, flow: Flow) -> Decision {
+    let decided = Decision::decide(
+        mode,
+        Criterion {
+            name: "pad_reynolds_number",
+            value: reynolds,
+            threshold: TURBULENT_REYNOLDS,
+        },
+        "turbulent film",
+    );
+    match flow {
+        Flow::Laminar => decided,
+        Flow::Turbulent { reference_reynolds } => Decision {
+            applied: true,
+            reason: format!(
+                "{}; Ng–Pan flow factors G_x, G_y on the pad's Reynolds equation and the Couette shear factor G_f at the local Re = Re₂ h/h2, Re₂ = ρ U h2/μ = {reference_reynolds:.4e} (Khonsari & Booser Eq. 6.26–6.31)",
+                decided.reason
+            ),
+            model: Some("ng_pan"),
+            ..decided
+        },
+    }
 }
 
 /// T with T = T_in + ΔT(T), where ΔT never exceeds `ceiling` (the adiabatic ΔT falls as T

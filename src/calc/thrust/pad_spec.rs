@@ -63,9 +63,12 @@ pub struct PadEffects {
     /// 5 %.
     #[serde(default)]
     pub thermal: Mode,
-    /// Turbulent film: the pad-average Reynolds number ρ U h_mean/μ against the transition at
-    /// 580–800 (Khonsari & Booser §7.11). Reported, with a warning above 580; not modelled
-    /// (`on` is refused).
+    /// Turbulent film (Ng–Pan; Khonsari & Booser Eq. 6.26–6.31): the flow factors G_x, G_y
+    /// scale the pad's Poiseuille flow and G_f its Couette shear at the local Re = ρ U h/μ,
+    /// solved at the trailing-edge Re₂ = ρ U h2/μ the operating point itself sets (model
+    /// `ng_pan`). `auto` applies it when the laminar pad-average Reynolds number ρ U h_mean/μ
+    /// exceeds 580, the start of the transition at 580–800 (§7.11); inside that range a warning
+    /// gives both power losses.
     #[serde(default)]
     pub turbulence: Mode,
 }
@@ -179,8 +182,11 @@ pub struct PadResult {
     pub max_temperature_c: f64,
     /// μ at the effective temperature, Pa·s.
     pub effective_viscosity_pa_s: f64,
-    /// Pad-average Reynolds number ρ U h_mean/μ.
+    /// Pad-average Reynolds number ρ U h_mean/μ (the turbulence effect's criterion).
     pub reynolds_number: f64,
+    /// Trailing-edge Reynolds number Re₂ = ρ U h2/μ: a turbulent film's local Reynolds number
+    /// is Re₂ h/h2.
+    pub outlet_reynolds_number: f64,
     pub coefficients: PadCoefficients,
     /// The mid-plane pressure profile (with `include_field` and a numerical fidelity).
     #[serde(skip_serializing_if = "Option::is_none")]
@@ -212,6 +218,7 @@ impl PadResult {
             max_temperature_c: op.max_temperature_c,
             effective_viscosity_pa_s: op.effective_viscosity_pa_s,
             reynolds_number: op.reynolds_number,
+            outlet_reynolds_number: op.outlet_reynolds_number,
             coefficients: PadCoefficients {
                 load: p.load,
                 k_h: p.k_h(),
@@ -326,6 +333,7 @@ pub fn check_finite(result: &PadResult) -> Result<(), CalcError> {
         result.max_temperature_c,
         result.effective_viscosity_pa_s,
         result.reynolds_number,
+        result.outlet_reynolds_number,
         c.load,
         c.k_h,
         c.k_f,

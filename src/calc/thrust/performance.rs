@@ -6,6 +6,7 @@ pub use super::coefficients::Performance;
 use super::film::{self, Mesh};
 use super::long_pad;
 use super::profile::Profile;
+use crate::calc::turbulence::Flow;
 use crate::calc::Budget;
 use crate::fidelity::{Level, SolverReport};
 use crate::numerics::optimise::brent_minimise;
@@ -67,16 +68,17 @@ pub struct Evaluated {
     pub mid_plane: Option<Vec<(f64, f64)>>,
 }
 
-/// The performance of `profile` on a pad of aspect L/B = `l_over_b` by `method`.
+/// The performance of `profile` in a `flow` on a pad of aspect L/B = `l_over_b` by `method`.
 pub fn evaluate(
     profile: Profile,
+    flow: Flow,
     l_over_b: f64,
     method: Method,
     budget: &Budget,
 ) -> Result<Evaluated, SolveError> {
     match method {
         Method::LongPad => Ok(Evaluated {
-            performance: long_pad::performance(profile),
+            performance: long_pad::performance(profile, flow),
             error_estimate: None,
             report: SolverReport::closed_form("infinitely_long_pad"),
             mid_plane: None,
@@ -86,11 +88,11 @@ pub fn evaluate(
             mesh,
             richardson,
         } => {
-            let fine = film::solve(profile, l_over_b, mesh, richardson, budget)?;
+            let fine = film::solve(profile, flow, l_over_b, mesh, richardson, budget)?;
             let grid = vec![mesh.along as u32, mesh.across_half as u32];
             let mut report = fine.solved.report.clone().at(level).on_grid(grid);
             let (performance, error_estimate) = if richardson {
-                let coarse = film::solve(profile, l_over_b, mesh.coarse(), false, budget)?;
+                let coarse = film::solve(profile, flow, l_over_b, mesh.coarse(), false, budget)?;
                 report.iterations += coarse.solved.report.iterations;
                 let best = fine.performance.extrapolated(&coarse.performance);
                 let error = fine_error(coarse.performance.load, fine.performance.load).abs()
@@ -112,11 +114,13 @@ pub fn evaluate(
 /// Film ratios a pad may have (the range Table 7.2 spans, from nearly parallel to 10).
 pub const RATIOS: (f64, f64) = (1.01, 10.0);
 
-/// The film ratio h1/h2 that maximises W̄ for this shape (its other proportions kept), found by
+/// The film ratio h1/h2 that maximises W̄ for this shape (its other proportions kept) in a
+/// `flow`, found by
 /// Brent's minimisation on −W̄ over [`RATIOS`] to 1e-6: the ratio and the number of
 /// evaluations. A solve that fails stops the search with its error.
 pub fn optimum_ratio(
     profile: Profile,
+    flow: Flow,
     l_over_b: f64,
     method: Method,
     budget: &Budget,
@@ -129,7 +133,7 @@ pub fn optimum_ratio(
             if failure.is_some() {
                 return 0.0;
             }
-            match evaluate(profile.with_ratio(a), l_over_b, method, budget) {
+            match evaluate(profile.with_ratio(a), flow, l_over_b, method, budget) {
                 Ok(e) => -e.performance.load,
                 Err(e) => {
                     failure = Some(e);

@@ -7,11 +7,17 @@
 //! x̄_cp(a) − x̄_p over [`PIVOT_RATIOS`] finds the one equilibrium. A pivot at or ahead of
 //! mid-pad has none: an isoviscous flat pad pivoted there carries no load (real centrally
 //! pivoted pads run on thermal and elastic crowning).
+//!
+//! A crowned pad ([`Profile::Crowned`], the crown fixed relative to h2 here) is found the same
+//! way: its converging-diverging film puts the centre of pressure ahead of mid-pad as the edges
+//! become parallel, so a central pivot has an equilibrium; [`super::pad`] nests this root in
+//! the load balance, where the crown's ratio to h2 changes with the film.
 
 use std::cell::Cell;
 
 use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
 use super::profile::Profile;
+use crate::calc::turbulence::Flow;
 use crate::calc::{Budget, CalcError};
 use crate::numerics::roots::{brent_bracketed, Stopping};
 
@@ -41,35 +47,62 @@ pub struct Equilibrium {
     pub evaluations: u32,
 }
 
-/// The equilibrium of a plane pad of aspect `l_over_b` pivoted at `pivot`.
+/// The lowest film ratio a crowned pad of crown ratio k = δ/h2 is searched from: parallel
+/// edges, or — for k > ¼, where the parallel film would touch — just above the ratio
+/// (2√k − 1)² at which the film h̄ = a − (a − 1) x̄ − 4 k x̄(1 − x̄) first touches the runner
+/// (its minimum over x̄ is zero there), so the film is positive over the whole bracket.
+fn crowned_ratio_floor(k: f64) -> f64 {
+    let touching = if k > 0.25 {
+        (2.0 * k.sqrt() - 1.0).powi(2)
+    } else {
+        0.0
+    };
+    (touching * (1.0 + 1e-3)).max(1.0)
+}
+
+/// The equilibrium of a pad of shape `pad` (plane or crowned; its film ratio is the unknown)
+/// and aspect `l_over_b` pivoted at `pivot`, in a `flow`.
 pub fn equilibrium(
     pivot: Pivot,
+    pad: Profile,
+    flow: Flow,
     l_over_b: f64,
     method: Method,
     budget: &Budget,
 ) -> Result<Equilibrium, CalcError> {
-    let plane = |a: f64| Profile::PlaneInclined { ratio: a };
+    let plane = |a: f64| pad.with_ratio(a);
     let evaluations = Cell::new(0);
     let at = |a: f64| -> Result<Evaluated, CalcError> {
         evaluations.set(evaluations.get() + 1);
-        Ok(evaluate(plane(a), l_over_b, method, budget)?)
+        Ok(evaluate(plane(a), flow, l_over_b, method, budget)?)
     };
     let (ratio, pivot) = match pivot {
         Pivot::Optimum => {
-            let (ratio, n) = optimum_ratio(plane(2.0), l_over_b, method, budget)?;
+            let (ratio, n) = optimum_ratio(plane(2.0), flow, l_over_b, method, budget)?;
             evaluations.set(evaluations.get() + n);
             (ratio, at(ratio)?.performance.center_of_pressure)
         }
         Pivot::At(x_p) => {
-            let (lo, hi) = PIVOT_RATIOS;
+            // A crowned pad may settle with parallel edges (its crown still converges the
+            // film), and a lightly crowned one near them.
+            let (lo, hi) = match pad {
+                Profile::Crowned { crown, .. } => (crowned_ratio_floor(crown), PIVOT_RATIOS.1),
+                _ => PIVOT_RATIOS,
+            };
             let (x_lo, x_hi) = (
                 at(lo)?.performance.center_of_pressure,
                 at(hi)?.performance.center_of_pressure,
             );
-            if x_p <= x_lo {
+            if x_p <= x_lo && matches!(pad, Profile::PlaneInclined { .. }) {
                 return Err(CalcError::impossible(
                     "/pivot_position_fraction",
                     format!("a flat pad pivoted at {x_p} of B carries no useful load in the isoviscous film: its centre of pressure lies behind {x_lo:.4} of B for every film ratio above {lo} (and at mid-pad as the film becomes parallel), so a central or leading-side pivot has no equilibrium; real centrally pivoted pads run on thermal and elastic crowning (Khonsari & Booser §7.5): move the pivot towards the trailing edge (0.58 maximises the load)"),
+                ));
+            }
+            if x_p <= x_lo {
+                return Err(CalcError::impossible(
+                    "/pivot_position_fraction",
+                    format!("a pivot at {x_p} of B has no equilibrium on this crowned pad: its centre of pressure lies behind {x_lo:.4} of B for every film ratio above {lo}"),
                 ));
             }
             if x_p >= x_hi {
@@ -101,7 +134,23 @@ pub fn equilibrium(
             (root.x, x_p)
         }
     };
-    // The sensitivities by central differences of the same method.
+    let mut settled = settled(pad.with_ratio(ratio), pivot, flow, l_over_b, method, budget)?;
+    settled.evaluations += evaluations.get();
+    Ok(settled)
+}
+
+/// The pad `pad` at its equilibrium film ratio about `pivot`, with the sensitivities by central
+/// differences of the same method (three evaluations, counted).
+pub fn settled(
+    pad: Profile,
+    pivot: f64,
+    flow: Flow,
+    l_over_b: f64,
+    method: Method,
+    budget: &Budget,
+) -> Result<Equilibrium, CalcError> {
+    let ratio = pad.ratio();
+    let at = |a: f64| evaluate(pad.with_ratio(a), flow, l_over_b, method, budget);
     let step = 1e-4 * ratio;
     let (below, above) = (at(ratio - step)?, at(ratio + step)?);
     let evaluated = at(ratio)?;
@@ -114,7 +163,7 @@ pub fn equilibrium(
         load_slope: dw / evaluated.performance.load,
         ratio_per_pivot: 1.0 / dx,
         evaluated,
-        evaluations: evaluations.get(),
+        evaluations: 3,
     })
 }
 
@@ -132,6 +181,8 @@ mod tests {
         for (k, from_trailing) in [(1.0, 0.431), (2.0, 0.393), (3.0, 0.366)] {
             let got = equilibrium(
                 Pivot::At(1.0 - from_trailing),
+                Profile::PlaneInclined { ratio: 2.0 },
+                Flow::Laminar,
                 1.0,
                 Method::LongPad,
                 &Budget::unlimited(),
@@ -150,10 +201,19 @@ mod tests {
 
     #[test]
     fn the_optimum_pivot_of_the_long_pad_is_at_its_optimum_ratio() {
-        let got = equilibrium(Pivot::Optimum, 1.0, Method::LongPad, &Budget::unlimited()).unwrap();
+        let got = equilibrium(
+            Pivot::Optimum,
+            Profile::PlaneInclined { ratio: 2.0 },
+            Flow::Laminar,
+            1.0,
+            Method::LongPad,
+            &Budget::unlimited(),
+        )
+        .unwrap();
         assert!((got.ratio - 2.189).abs() < 5e-3);
         let x_cp =
-            long_pad::performance(Profile::PlaneInclined { ratio: got.ratio }).center_of_pressure;
+            long_pad::performance(Profile::PlaneInclined { ratio: got.ratio }, Flow::Laminar)
+                .center_of_pressure;
         assert!((got.pivot - x_cp).abs() < 1e-12);
         // At the maximum the load no longer changes with the ratio.
         assert!(got.load_slope.abs() < 1e-3, "{}", got.load_slope);
@@ -162,7 +222,15 @@ mod tests {
     #[test]
     fn a_central_pivot_is_refused_with_the_reason() {
         for method in [Method::LongPad, Method::level(Level::Fast)] {
-            let err = equilibrium(Pivot::At(0.5), 1.0, method, &Budget::unlimited()).unwrap_err();
+            let err = equilibrium(
+                Pivot::At(0.5),
+                Profile::PlaneInclined { ratio: 2.0 },
+                Flow::Laminar,
+                1.0,
+                method,
+                &Budget::unlimited(),
+            )
+            .unwrap_err();
             match err {
                 CalcError::Impossible { pointer, message } => {
                     assert_eq!(pointer, "/pivot_position_fraction");
@@ -181,6 +249,8 @@ mod tests {
         // ratio than the rule, whose pads also run on thermal crowning).
         let got = equilibrium(
             Pivot::At(0.65),
+            Profile::PlaneInclined { ratio: 2.0 },
+            Flow::Laminar,
             1.0,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -201,6 +271,8 @@ mod tests {
         let at = |level| {
             equilibrium(
                 Pivot::At(0.6),
+                Profile::PlaneInclined { ratio: 2.0 },
+                Flow::Laminar,
                 0.5,
                 Method::level(level),
                 &Budget::unlimited(),

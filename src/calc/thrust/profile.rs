@@ -1,6 +1,7 @@
 //! The film shape of a fixed pad along the sliding direction, h̄(x̄) = h/h2 on x̄ = x/B ∈ [0, 1]
 //! from the leading edge (Khonsari & Booser Table 7.2 naming: h1 at the leading edge, h2 at the
 //! trailing edge, B along the sliding direction). Every shape here is uniform across the pad.
+//! A crowned pad's film need not be thinnest at the trailing edge: h2 there is still the scale.
 
 /// A pad's film shape, with its film ratio a = h1/h2 > 1.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -17,6 +18,11 @@ pub enum Profile {
     /// Parabolic: h̄ = 1 + (a − 1)(1 − x̄)², tangent to the runner at the trailing edge (the
     /// parabolic slider of Hamrock's *Fundamentals of Fluid Film Lubrication* §8.5).
     Parabolic { ratio: f64 },
+    /// A tilted plane pad with a parabolic crown over its breadth (Khonsari & Booser §7.5):
+    /// h̄ = a − (a − 1) x̄ − 4 c x̄ (1 − x̄), the pad's middle standing the crown height δ
+    /// proud of the line through its edges, c = δ/h2. The film converges then diverges where
+    /// the crown outweighs the tilt.
+    Crowned { ratio: f64, crown: f64 },
 }
 
 impl Profile {
@@ -26,7 +32,8 @@ impl Profile {
             Profile::PlaneInclined { ratio }
             | Profile::Step { ratio, .. }
             | Profile::TaperedLand { ratio, .. }
-            | Profile::Parabolic { ratio } => ratio,
+            | Profile::Parabolic { ratio }
+            | Profile::Crowned { ratio, .. } => ratio,
         }
     }
 
@@ -44,6 +51,7 @@ impl Profile {
                 land_fraction,
             },
             Profile::Parabolic { .. } => Profile::Parabolic { ratio },
+            Profile::Crowned { crown, .. } => Profile::Crowned { ratio, crown },
         }
     }
 
@@ -54,6 +62,7 @@ impl Profile {
             Profile::Step { .. } => "step",
             Profile::TaperedLand { .. } => "tapered_land",
             Profile::Parabolic { .. } => "parabolic",
+            Profile::Crowned { .. } => "crowned",
         }
     }
 
@@ -83,6 +92,9 @@ impl Profile {
                 }
             }
             Profile::Parabolic { ratio } => 1.0 + (ratio - 1.0) * (1.0 - x).powi(2),
+            Profile::Crowned { ratio, crown } => {
+                ratio - (ratio - 1.0) * x - 4.0 * crown * x * (1.0 - x)
+            }
         }
     }
 
@@ -104,6 +116,7 @@ impl Profile {
                 }
             }
             Profile::Parabolic { ratio } => -2.0 * (ratio - 1.0) * (1.0 - x),
+            Profile::Crowned { ratio, crown } => 1.0 - ratio - 4.0 * crown * (1.0 - 2.0 * x),
         }
     }
 
@@ -116,6 +129,18 @@ impl Profile {
                 Some(1.0 - land_fraction)
             }
             _ => None,
+        }
+    }
+
+    /// The thinnest film h̄_min over the pad: h2 (= 1) but for a crown that outweighs the tilt,
+    /// whose parabola has its vertex inside.
+    pub fn minimum(self) -> f64 {
+        match self {
+            Profile::Crowned { ratio, crown } if crown > 0.0 => {
+                let vertex = ((4.0 * crown + ratio - 1.0) / (8.0 * crown)).clamp(0.0, 1.0);
+                self.thickness(vertex).min(1.0)
+            }
+            _ => 1.0,
         }
     }
 
@@ -150,6 +175,32 @@ mod tests {
             assert_eq!(p.thickness(0.0), 2.5, "{p:?}");
             assert!((p.thickness(1.0) - 1.0).abs() < 1e-15, "{p:?}");
         }
+    }
+
+    #[test]
+    fn a_crowned_pad_without_crown_is_the_plane_pad_and_its_minimum_is_the_vertex() {
+        let plane = Profile::PlaneInclined { ratio: 1.5 };
+        let flat = Profile::Crowned {
+            ratio: 1.5,
+            crown: 0.0,
+        };
+        let crowned = Profile::Crowned {
+            ratio: 1.5,
+            crown: 0.5,
+        };
+        for i in 0..=10 {
+            let x = i as f64 / 10.0;
+            assert_eq!(plane.thickness(x), flat.thickness(x));
+            assert_eq!(plane.slope(x), flat.slope(x));
+            // The slope is the derivative of the thickness.
+            let d = (crowned.thickness(x + 1e-6) - crowned.thickness(x - 1e-6)) / 2e-6;
+            assert!((d - crowned.slope(x)).abs() < 1e-8);
+        }
+        assert_eq!(crowned.thickness(0.0), 1.5);
+        assert!((crowned.thickness(1.0) - 1.0).abs() < 1e-15);
+        // h̄ = 2x² − 2.5x + 1.5: vertex at 0.625, h̄ = 0.71875.
+        assert!((crowned.minimum() - 0.71875).abs() < 1e-15);
+        assert_eq!(flat.minimum(), 1.0);
     }
 
     #[test]

@@ -1,7 +1,7 @@
 //! `POST /v1/thrust-bearings/tilting-pad`: one pivoted (tilting) plane pad under its load — the
 //! tilt at which the film's centre of pressure lies on the pivot, then film, friction, flows
 //! and temperature rise as for a fixed pad (Khonsari & Booser §7.5; Stachowiak & Batchelor
-//! §4.3, Table 4.2).
+//! §4.3, Table 4.2); optionally crowned, which lets a central pivot carry load.
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
@@ -38,7 +38,7 @@ range_schemas::number_or_keyword_schema!(
     PivotPosition,
     OptimumKeyword,
     "Where the pivot is: a number, or `\"optimum\"`.",
-    "x/B from the leading edge, within (0, 0.95] (above 0.5 to carry load).",
+    "x/B from the leading edge, within (0, 0.95] (a flat pad carries load above 0.5, a crowned one from 0.5).",
     range_schemas::Range {
         minimum: None,
         exclusive_minimum: Some(0.0),
@@ -55,7 +55,7 @@ pub struct TiltingPadInput {
     pub pad: PadSpec,
     /// The pivot's position along B, a fraction from the leading edge (above 0.5 … 0.95), or
     /// `"optimum"`. A flat pad pivoted at or ahead of mid-pad carries no load in the isoviscous
-    /// film: refused with the reason.
+    /// film: refused with the reason; a crowned pad (`crown_m`) carries load on a central pivot.
     #[schema(example = 0.6)]
     pub pivot_position_fraction: PivotPosition,
     /// Runner speed U relative to the pad, m/s (> 0, at most 500).
@@ -68,6 +68,11 @@ pub struct TiltingPadInput {
     /// Load on the pad W, N (1e-6 … 1e9).
     #[schema(value_type = f64, minimum = 1e-6, maximum = 1e9, example = 16000.0)]
     pub load_n: Positive,
+    /// Optional parabolic crown over the breadth, m (> 0, at most 1e-3): the pad's middle stands
+    /// this far proud of the line through its edges (Khonsari & Booser §7.5: 0.5–2 times the
+    /// minimum film lets a centrally pivoted pad carry load). Numerical fidelities only.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e-3, example = 2e-5)]
+    pub crown_m: Option<Positive>,
     /// `closed_form` (the infinitely long pad), `fast`, `standard` (default), `high`, or
     /// `{"grid": [cells along B 8…512, cells across half of L 2…256]}`.
     #[serde(default)]
@@ -85,6 +90,8 @@ pub struct TiltingPadInput {
 pub struct Case {
     pub conditions: Conditions,
     pub pivot: Pivot,
+    /// The crown δ, m.
+    pub crown_m: Option<f64>,
     pub method: Method,
     pub include_field: bool,
 }
@@ -107,6 +114,21 @@ impl Validate for TiltingPadInput {
         };
         let given = given(None, Some(self.load_n), false, &mut errors);
         let method = pad_spec::method(self.fidelity, &mut errors);
+        let crown_m = self.crown_m.map(Positive::get);
+        if let Some(crown) = crown_m {
+            if crown > 1e-3 {
+                errors.push(FieldError::new(
+                    "/crown_m",
+                    format!("must be at most 1e-3 m, got {crown}"),
+                ));
+            }
+            if method == Method::LongPad {
+                errors.push(FieldError::new(
+                    "/fidelity",
+                    "a crowned pad's film diverges behind its crown and cavitates, which the infinitely long pad's closed form does not model: give a numerical fidelity",
+                ));
+            }
+        }
         let conditions = conditions(
             pad,
             self.sliding_speed_m_s,
@@ -120,6 +142,7 @@ impl Validate for TiltingPadInput {
             Some(conditions) if errors.is_empty() => Ok(Case {
                 conditions,
                 pivot,
+                crown_m,
                 method,
                 include_field: self.include_field,
             }),
@@ -135,11 +158,16 @@ pub struct TiltingPadOutput {
     pub pivot_position_fraction: f64,
     /// Film at the pivot, m.
     pub pivot_film_m: f64,
+    /// The thinnest film, m: the trailing-edge film but on a crowned pad whose crown outweighs
+    /// its tilt.
+    pub minimum_film_m: f64,
     /// The pad's tilt (h1 − h2)/B, rad.
     pub tilt_rad: f64,
-    /// d(h1/h2)/d(x_p/B): how the film ratio moves with the pivot.
+    /// d(h1/h2)/d(x_p/B): how the film ratio moves with the pivot (a crowned pad's at its
+    /// crown-to-film ratio held).
     pub film_ratio_per_pivot_fraction: f64,
-    /// dh2/d(x_p/B) at this load, m: how the minimum film moves with the pivot.
+    /// dh2/d(x_p/B) at this load, m: how the trailing-edge film moves with the pivot (a
+    /// crowned pad's at its crown-to-film ratio held).
     pub outlet_film_per_pivot_fraction_m: f64,
     #[serde(flatten)]
     pub pad: PadResult,
@@ -160,7 +188,13 @@ impl Calculation for TiltingPad {
 
     fn run(case: Case, ctx: &mut Context) -> Result<TiltingPadOutput, CalcError> {
         let budget = ctx.budget();
-        let solved = pad::tilting(case.pivot, case.method, &case.conditions, &budget)?;
+        let solved = pad::tilting(
+            case.pivot,
+            case.crown_m,
+            case.method,
+            &case.conditions,
+            &budget,
+        )?;
         ctx.record(&solved.operating.notes);
         ctx.report(solved.report(case.method, &budget));
         let mid_plane = solved
@@ -177,10 +211,17 @@ impl Calculation for TiltingPad {
         let h2 = solved.operating.outlet_film_m;
         // At a fixed load h2 ∝ √W̄, so dh2/da = h2 (dW̄/da)/(2 W̄).
         let per_pivot = 0.5 * h2 * eq.load_slope * eq.ratio_per_pivot;
-        let profile = Profile::PlaneInclined { ratio: eq.ratio };
+        let profile = match case.crown_m {
+            Some(crown) => Profile::Crowned {
+                ratio: eq.ratio,
+                crown: crown / h2,
+            },
+            None => Profile::PlaneInclined { ratio: eq.ratio },
+        };
         Ok(TiltingPadOutput {
             pivot_position_fraction: eq.pivot,
             pivot_film_m: h2 * profile.thickness(eq.pivot),
+            minimum_film_m: h2 * profile.minimum(),
             tilt_rad: (eq.ratio - 1.0) * h2 / case.conditions.pad.breadth_m,
             film_ratio_per_pivot_fraction: eq.ratio_per_pivot,
             outlet_film_per_pivot_fraction_m: per_pivot,

@@ -32,6 +32,7 @@ fn standard_reproduces_every_finite_entry_of_table_7_2() {
         let want = |k: &str| row[k].as_f64().unwrap();
         let got = evaluate(
             Profile::PlaneInclined { ratio },
+            Flow::Laminar,
             l_over_b,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -69,7 +70,7 @@ fn the_infinite_column_of_table_7_2_is_the_long_pad() {
             continue;
         }
         let ratio = row["film_ratio"].as_f64().unwrap();
-        let got = long_pad::performance(Profile::PlaneInclined { ratio });
+        let got = long_pad::performance(Profile::PlaneInclined { ratio }, Flow::Laminar);
         let want = |k: &str| row[k].as_f64().unwrap();
         assert!(
             (got.k_h() / want("k_h") - 1.0).abs() < 0.035,
@@ -104,16 +105,22 @@ fn a_long_pad_tends_to_the_infinitely_long_pad() {
             land_fraction: 0.2,
         },
     ] {
-        let long = long_pad::performance(profile);
+        let long = long_pad::performance(profile, Flow::Laminar);
         let gap = |l_over_b: f64| {
             // Enough cells across to resolve the side edges' layers, about B wide.
             let mesh = Mesh {
                 along: 32,
                 across_half: 128,
             };
-            let got = evaluate(profile, l_over_b, Method::mesh(mesh), &Budget::unlimited())
-                .unwrap()
-                .performance;
+            let got = evaluate(
+                profile,
+                Flow::Laminar,
+                l_over_b,
+                Method::mesh(mesh),
+                &Budget::unlimited(),
+            )
+            .unwrap()
+            .performance;
             (
                 got.load / long.load - 1.0,
                 got.friction / long.friction - 1.0,
@@ -145,6 +152,7 @@ fn archibald_square_step_pad() {
             ratio: 1.7,
             step_position: 0.55,
         },
+        Flow::Laminar,
         1.0,
         Method::level(Level::High),
         &Budget::unlimited(),
@@ -162,6 +170,7 @@ fn flows_balance_and_converge_at_second_order() {
     let run = |along, across_half| {
         evaluate(
             profile,
+            Flow::Laminar,
             1.0,
             Method::mesh(Mesh { along, across_half }),
             &Budget::unlimited(),
@@ -204,6 +213,7 @@ fn trailing_edge_flats_reproduce_table_7_3() {
         };
         let got = evaluate(
             profile,
+            Flow::Laminar,
             1.0,
             Method::level(Level::Standard),
             &Budget::unlimited(),
@@ -220,4 +230,124 @@ fn trailing_edge_flats_reproduce_table_7_3() {
         close("K_f", got.friction, k_f, 0.02);
         close("K_q", got.inlet_flow, k_q, 0.03);
     }
+}
+
+/// A turbulent film on the Reynolds basement's conductance hook: at Re₂ = 0 the laminar film
+/// bit for bit; long pads tend to the infinitely long turbulent pad (its closed form checked
+/// in `long_pad`), and W̄ rises with Re₂ on a finite pad too.
+#[test]
+fn the_turbulent_film_tends_to_laminar_and_to_the_long_pad() {
+    let budget = Budget::unlimited();
+    let turbulent = |re2: f64| Flow::Turbulent {
+        reference_reynolds: re2,
+    };
+    let step = Profile::Step {
+        ratio: 1.866,
+        step_position: 0.718,
+    };
+    for profile in [Profile::PlaneInclined { ratio: 2.0 }, step] {
+        let at = |flow: Flow, l_over_b: f64, mesh: Mesh| {
+            evaluate(profile, flow, l_over_b, Method::mesh(mesh), &budget)
+                .unwrap()
+                .performance
+        };
+        let square = Mesh {
+            along: 32,
+            across_half: 16,
+        };
+        assert_eq!(
+            at(turbulent(0.0), 1.0, square),
+            at(Flow::Laminar, 1.0, square),
+            "{profile:?}"
+        );
+        let mut last = at(Flow::Laminar, 1.0, square).load;
+        for re2 in [300.0, 1000.0, 5000.0] {
+            let load = at(turbulent(re2), 1.0, square).load;
+            assert!(load > last, "{profile:?} at Re₂ {re2}");
+            last = load;
+        }
+        let wide = Mesh {
+            along: 32,
+            across_half: 128,
+        };
+        for re2 in [1000.0, 5000.0] {
+            let long = long_pad::performance(profile, turbulent(re2));
+            let got = at(turbulent(re2), 50.0, wide);
+            let (load, friction) = (
+                got.load / long.load - 1.0,
+                got.friction / long.friction - 1.0,
+            );
+            assert!(
+                load < 0.0 && load > -0.05,
+                "{profile:?} at Re₂ {re2}: W̄ {load}"
+            );
+            assert!(
+                friction.abs() < 0.01,
+                "{profile:?} at Re₂ {re2}: F̄ {friction}"
+            );
+        }
+    }
+}
+
+/// A crowned pad pivoted at mid-pad (Khonsari & Booser §7.5) is in equilibrium: the moment of
+/// its pressure field about the pivot, integrated here node by node with the trapezoidal rule
+/// on a fresh solve of the film (not through the film's own integrals), vanishes; and at a
+/// fixed h2 the load it carries rises with the crown over the texts' range (crown 0.5–2 times
+/// the minimum film; the isoviscous central pivot reaches 1.3 of it at a crown equal to h2).
+#[test]
+fn a_crowned_central_pivot_balances_its_moment_and_carries_more_with_more_crown() {
+    use crate::calc::thrust::pivot::{equilibrium, Pivot};
+    let budget = Budget::unlimited();
+    // Odd counts: no Richardson pair, so the equilibrium is this mesh's own.
+    let mesh = Mesh {
+        along: 61,
+        across_half: 15,
+    };
+    let mut last = 0.0;
+    let mut crown_over_min = Vec::new();
+    for k in [0.3, 0.45, 0.6, 0.75, 0.85, 0.92, 0.96, 1.0] {
+        let shape = Profile::Crowned {
+            ratio: 2.0,
+            crown: k,
+        };
+        let eq = equilibrium(
+            Pivot::At(0.5),
+            shape,
+            Flow::Laminar,
+            1.0,
+            Method::mesh(mesh),
+            &budget,
+        )
+        .unwrap();
+        let profile = shape.with_ratio(eq.ratio);
+        let g = grid(mesh, profile, false);
+        let stencil = assemble(profile, Flow::Laminar, 1.0, &g);
+        let n = (g.nx() + 1) * (g.ny + 1);
+        let mut p = vec![0.0; n];
+        reynolds::solve(&stencil, &mut p, true, &budget).unwrap();
+        let (dx, dy) = (g.x[1] - g.x[0], g.dy());
+        let (mut load, mut moment) = (0.0, 0.0);
+        for j in 0..=g.ny {
+            // p = 0 on the edges; the mid-plane row holds half a cell.
+            let wy = if j == g.ny { 0.5 * dy } else { dy };
+            for i in 0..=g.nx() {
+                let v = p[at(&g, i, j)] * dx * wy;
+                load += v;
+                moment += v * (g.x[i] - 0.5);
+            }
+        }
+        assert!(
+            (moment / load).abs() < 1e-8,
+            "k {k}: moment/load {}",
+            moment / load
+        );
+        let w = eq.evaluated.performance.load;
+        assert!(w > last, "k {k}: W̄ {w} after {last}");
+        last = w;
+        crown_over_min.push(k / profile.minimum());
+    }
+    // The sweep (up to a crown as high as the trailing-edge film, the searched range) spans
+    // crowns from under half the minimum film to 1.3 of it: the texts' range from its start.
+    let (lo, hi) = (crown_over_min[0], crown_over_min[crown_over_min.len() - 1]);
+    assert!(lo < 0.5 && hi > 1.25, "δ/h_min from {lo} to {hi}");
 }
