@@ -68,7 +68,13 @@ pub fn brent_bracketed(
 ) -> Result<Root, RootError> {
     let (mut a, mut b) = (a, b);
     let (mut fa, mut fb) = (fa, fb);
-    let driver = bracket_driver("brent", (a, fa), (b, fb), stop)?;
+    finite_ends((a, fa), (b, fb))?;
+    let driver = Driver::new(
+        "brent",
+        IterationUnit::RootSearchSteps,
+        stop.max_iterations,
+        &Budget::unlimited(),
+    );
     for (x, fx) in [(a, fa), (b, fb)] {
         if fx == 0.0 {
             let done = driver.converged_at_start(x, 0.0);
@@ -157,7 +163,13 @@ pub fn secant_bracketed(
     (b, fb): (f64, f64),
     stop: Stopping,
 ) -> Result<Root, RootError> {
-    let driver = bracket_driver("secant", (a, fa), (b, fb), stop)?;
+    finite_ends((a, fa), (b, fb))?;
+    let driver = Driver::new(
+        "secant",
+        IterationUnit::RootSearchSteps,
+        stop.max_iterations,
+        &Budget::unlimited(),
+    );
     if fa.signum() == fb.signum() && fa != 0.0 && fb != 0.0 {
         return Err(RootError::NoSignChange { a, fa, b, fb });
     }
@@ -198,24 +210,14 @@ pub fn secant_bracketed(
     finished(run, failure)
 }
 
-/// The driver of a bracketed search, once both ends are known to be finite.
-fn bracket_driver(
-    method: &'static str,
-    (a, fa): (f64, f64),
-    (b, fb): (f64, f64),
-    stop: Stopping,
-) -> Result<Driver, RootError> {
+/// Both ends of a bracket must be finite before a search starts.
+fn finite_ends((a, fa): (f64, f64), (b, fb): (f64, f64)) -> Result<(), RootError> {
     for (x, fx) in [(a, fa), (b, fb)] {
         if !fx.is_finite() {
             return Err(RootError::NonFinite { x });
         }
     }
-    Ok(Driver::new(
-        method,
-        IterationUnit::RootSearchSteps,
-        stop.max_iterations,
-        &Budget::unlimited(),
-    ))
+    Ok(())
 }
 
 /// A bracketed search's outcome: the root, or why not (the evaluation that failed, else the cap).
