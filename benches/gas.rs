@@ -2,6 +2,8 @@
 //! parse, validate, both meshes of the Richardson pair, continuation in Λ, envelope).
 //! - the gas journal at `standard`, at a given ε: under 20 ms for Λ ≤ 100, under 100 ms at
 //!   Λ = 1000;
+//! - the gas journal by load (W = 300 N at Λ = 10, slip applied): 21.3 ms, 32 film solves (Brent
+//!   on W̄(ε) took 28.3 ms, 48);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
 //!
@@ -35,6 +37,18 @@ fn gas(c: &mut Criterion) {
             ),
         );
     }
+    // By load: the secant in stretched ε (ε ≈ 0.59; `auto` applies slip at Kn = 0.034, so the
+    // search runs on the continuum film and again with slip).
+    let omega = 10.0 * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+    let rpm = omega * 30.0 / std::f64::consts::PI;
+    request(
+        c,
+        "gas journal L/D = 1, W = 300 N (ε ≈ 0.59), Λ = 10, standard, by load",
+        "/v1/gas-bearings/journal",
+        &format!(
+            r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "load_n": 300}}"#
+        ),
+    );
     for (name, pad) in [
         ("L/B = 1", r#"{"breadth_m": 0.02, "length_m": 0.02}"#),
         ("infinitely wide", r#"{"breadth_m": 0.02}"#),

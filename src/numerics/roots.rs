@@ -2,7 +2,7 @@
 //! safeguard): it never leaves the bracket, so it converges whenever f changes sign on [a, b].
 //! Where only one end of the bracket is known, [`grow_bracket`] finds the other by doubling.
 
-use super::driver::{Budget, Driver, Verdict};
+use super::driver::{Budget, Converged, Driver, Stopped, Verdict};
 use crate::fidelity::{IterationUnit, SolverReport};
 
 /// When to stop: `x_tolerance` on the root (absolute), with an iteration cap that is never
@@ -68,11 +68,7 @@ pub fn brent_bracketed(
 ) -> Result<Root, RootError> {
     let (mut a, mut b) = (a, b);
     let (mut fa, mut fb) = (fa, fb);
-    for (x, fx) in [(a, fa), (b, fb)] {
-        if !fx.is_finite() {
-            return Err(RootError::NonFinite { x });
-        }
-    }
+    finite_ends((a, fa), (b, fb))?;
     let driver = Driver::new(
         "brent",
         IterationUnit::RootSearchSteps,
@@ -153,6 +149,82 @@ pub fn brent_bracketed(
         }
         Verdict::Continue((c - b).abs())
     });
+    finished(run, failure)
+}
+
+/// [`brent_bracketed`]'s contract for a nearly linear f that costs a solve: secant steps from
+/// the two latest points, a bisection wherever the secant leaves the bracket (which is kept, so
+/// the search cannot leave it). It stops when the next step would be below `x_tolerance` and
+/// returns the **last evaluated** x, so the caller's last solve is the answer's (Brent's last
+/// point need not be, and its bracket closing costs one or two evaluations more).
+pub fn secant_bracketed(
+    mut f: impl FnMut(f64) -> f64,
+    (a, fa): (f64, f64),
+    (b, fb): (f64, f64),
+    stop: Stopping,
+) -> Result<Root, RootError> {
+    finite_ends((a, fa), (b, fb))?;
+    let driver = Driver::new(
+        "secant",
+        IterationUnit::RootSearchSteps,
+        stop.max_iterations,
+        &Budget::unlimited(),
+    );
+    if fa.signum() == fb.signum() && fa != 0.0 && fb != 0.0 {
+        return Err(RootError::NoSignChange { a, fa, b, fb });
+    }
+    let (mut lo, mut flo) = (a, fa);
+    let (mut hi, mut fhi) = (b, fb);
+    // The latest point is the end nearer the root in f.
+    let ((mut x0, mut f0), (mut x1, mut f1)) = if fa.abs() < fb.abs() {
+        ((b, fb), (a, fa))
+    } else {
+        ((a, fa), (b, fb))
+    };
+    let mut failure = None;
+    let run = driver.run(|_| {
+        if f1 == 0.0 {
+            return Verdict::Converged(x1, 0.0);
+        }
+        let mut x = x1 - f1 * (x1 - x0) / (f1 - f0);
+        let (left, right) = (lo.min(hi), lo.max(hi));
+        if !(x > left && x < right) {
+            x = 0.5 * (lo + hi);
+        }
+        if (x - x1).abs() <= stop.x_tolerance {
+            return Verdict::Converged(x1, (x - x1).abs());
+        }
+        let fx = f(x);
+        if !fx.is_finite() {
+            failure = Some(RootError::NonFinite { x });
+            return Verdict::Diverged(f64::NAN);
+        }
+        if fx.signum() == flo.signum() {
+            (lo, flo) = (x, fx);
+        } else {
+            (hi, fhi) = (x, fx);
+        }
+        ((x0, f0), (x1, f1)) = ((x1, f1), (x, fx));
+        Verdict::Continue((hi - lo).abs().min((fhi - flo).abs()))
+    });
+    finished(run, failure)
+}
+
+/// Both ends of a bracket must be finite before a search starts.
+fn finite_ends((a, fa): (f64, f64), (b, fb): (f64, f64)) -> Result<(), RootError> {
+    for (x, fx) in [(a, fa), (b, fb)] {
+        if !fx.is_finite() {
+            return Err(RootError::NonFinite { x });
+        }
+    }
+    Ok(())
+}
+
+/// A bracketed search's outcome: the root, or why not (the evaluation that failed, else the cap).
+fn finished(
+    run: Result<Converged<f64>, Stopped>,
+    failure: Option<RootError>,
+) -> Result<Root, RootError> {
     match run {
         Ok(done) => Ok(Root {
             x: done.value,
@@ -191,6 +263,33 @@ mod tests {
         x_tolerance: 1e-12,
         max_iterations: 100,
     };
+
+    #[test]
+    fn the_secant_finds_the_cube_root_of_two_in_few_steps_and_stays_in_its_bracket() {
+        let mut evaluations = 0;
+        let r = secant_bracketed(
+            |x| {
+                evaluations += 1;
+                assert!((0.0..=2.0).contains(&x), "{x}");
+                x * x * x - 2.0
+            },
+            (0.0, -2.0),
+            (2.0, 6.0),
+            STOP,
+        )
+        .unwrap();
+        assert!((r.x - 2f64.cbrt()).abs() < 1e-11, "{}", r.x);
+        assert!(evaluations <= 12, "{evaluations}");
+        assert_eq!(
+            secant_bracketed(|x| x, (1.0, 1.0), (2.0, 2.0), STOP),
+            Err(RootError::NoSignChange {
+                a: 1.0,
+                fa: 1.0,
+                b: 2.0,
+                fb: 2.0
+            })
+        );
+    }
 
     #[test]
     fn finds_the_cube_root_of_two() {
