@@ -1,7 +1,7 @@
 //! Logging: text or JSON lines on stderr, filtered by `RUST_LOG` (default `info`).
 //!
 //! `RUST_LOG` takes a level (`warn`), per-target levels (`stribeck=debug,tower_http=warn`) or
-//! both; one that does not parse leaves the default. (`Targets`, not `EnvFilter`: the service
+//! both; one that is empty or does not parse leaves the default. (`Targets`, not `EnvFilter`: the service
 //! filters by target and level only, and `EnvFilter`'s span-field matching would bring a
 //! regular-expression engine into the build.)
 
@@ -17,6 +17,7 @@ use crate::config::LogFormat;
 pub fn init(format: LogFormat) {
     let filter = std::env::var("RUST_LOG")
         .ok()
+        .filter(|spec| !spec.trim().is_empty())
         .and_then(|spec| spec.parse::<Targets>().ok())
         .unwrap_or_else(|| Targets::new().with_default(tracing::Level::INFO));
     // Colour codes only for a terminal: a file or a log collector gets plain text.

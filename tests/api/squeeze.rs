@@ -95,7 +95,7 @@ proptest! {
 
     /// The journal that turns, over ten decades of speed from the slowest taken as turning:
     /// it reaches ε₂ in a finite, positive time, sooner than or as soon as it would reach a
-    /// further ε, or settles short of ε₂ with the ε where it settles (never 5xx, never NaN).
+    /// further ε, or settles (or circles) short of ε₂ and says so (never 5xx, never NaN).
     #[test]
     fn a_turning_journal_reaches_the_target_or_says_where_it_settles(
         log_rpm in -6.0..4.0f64,
@@ -119,8 +119,13 @@ proptest! {
                 Some(v["result"]["time_s"].as_f64().unwrap())
             }
             Err(Failure::Calc(e)) => {
+                // It settles short of ε₂, or (a full film that whirls without settling) circles
+                // for the whole horizon below it.
                 let text = format!("{e:?}");
-                assert!(text.contains("where it settles"), "{text}");
+                assert!(
+                    text.contains("where it settles") || text.contains("nor settle short of it"),
+                    "{text}"
+                );
                 None
             }
             Err(other) => panic!("{other:?}"),

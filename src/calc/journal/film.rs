@@ -654,6 +654,7 @@ impl Response {
     /// mass-conserving one).
     pub fn at(film: &Film, mesh: Mesh, field: Vec<f64>) -> Result<Response, NotPositiveDefinite> {
         debug_assert!(!film.physics.has_content());
+        debug_assert!(!(film.physics.cavitation && film.physics.half_sommerfeld));
         let grid = grid(mesh, film);
         let free = if film.physics.half_sommerfeld {
             vec![1.0; field.len()]

@@ -135,6 +135,12 @@ pub fn approach(
         OrbitError::Stopped(report) => Stopped { report }.into(),
     })?;
     let Some(tau) = run.time_to_target else {
+        if !run.steady {
+            return Err(CalcError::impossible(
+                "/final_eccentricity_ratio",
+                format!("the turning journal did not reach ε₂ within {MAX_REVOLUTIONS} revolutions ({:.4e} s), nor settle short of it (largest ε {:.4})", run.end / omega, run.peak_eccentricity),
+            ));
+        }
         return Ok(Approach::Settles {
             eccentricity_ratio: run.peak_eccentricity,
         });

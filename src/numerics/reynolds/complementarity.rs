@@ -41,6 +41,11 @@ struct Numbering {
 impl Numbering {
     fn of(stencil: &Stencil) -> Numbering {
         let (nx, w) = (stencil.nx, stencil.nx + 1);
+        // Fewer columns would make a node its own (or its east its west) neighbour.
+        debug_assert!(
+            !stencil.periodic || nx >= 3,
+            "a periodic film of {nx} columns"
+        );
         let columns: Vec<usize> = if stencil.periodic {
             (0..nx)
                 .map(|t| if t % 2 == 0 { t / 2 } else { nx - 1 - t / 2 })
