@@ -425,34 +425,19 @@ impl Calculation for SqueezeJournal {
                 (s.load_integral, s.load_initial, s.load_final, s.path, None)
             }
         };
-        // The film is the request's choice (`film`), not a criterion's: reported as on or off.
-        ctx.decide(
-            "cavitation",
-            Decision {
-                applied: cavitated,
-                mode: if cavitated { Mode::On } else { Mode::Off },
-                reason: if cavitated {
-                    "film: cavitated — the opening side holds no tension (p ≥ 0)".into()
-                } else {
-                    "film: full — negative pressures kept on the opening side".into()
-                },
-                criterion: None,
-                model: cavitated.then_some(match case.method {
-                    Method::Long => "half_film",
-                    _ => "reynolds",
-                }),
-            },
+        decide_film(
+            ctx,
+            case.film,
+            cavitated.then_some(match case.method {
+                Method::Long => "half_film",
+                _ => "reynolds",
+            }),
         );
         let time = time_scale * integral;
-        if ![time, speed(w1), speed(w2), time_scale]
-            .iter()
-            .all(|v| v.is_finite() && *v > 0.0)
-        {
-            return Err(CalcError::impossible(
-                "",
-                "this combination of load, viscosity and geometry takes the squeeze time or the approach speeds outside the floating-point range",
-            ));
-        }
+        in_range(
+            &[time, speed(w1), speed(w2), time_scale],
+            "load, viscosity and geometry",
+        )?;
         Ok(SqueezeJournalOutput {
             time_s: time,
             approach_speed_initial_m_s: speed(w1),
@@ -477,6 +462,39 @@ impl Calculation for SqueezeJournal {
                     .collect()
             }),
         })
+    }
+}
+
+/// The film is the request's choice (`film`), not a criterion's: reported as on or off, with
+/// the cavitated film's model.
+fn decide_film(ctx: &mut Context, film: FilmExtent, model: Option<&'static str>) {
+    let cavitated = film == FilmExtent::Cavitated;
+    ctx.decide(
+        "cavitation",
+        Decision {
+            applied: cavitated,
+            mode: if cavitated { Mode::On } else { Mode::Off },
+            reason: if cavitated {
+                "film: cavitated — the opening side holds no tension (p ≥ 0)".into()
+            } else {
+                "film: full — negative pressures kept on the opening side".into()
+            },
+            criterion: None,
+            model,
+        },
+    );
+}
+
+/// The time, the speeds and the scales all finite and positive, or the 422 that says which
+/// inputs (`what`) left the floating-point range.
+fn in_range(values: &[f64], what: &str) -> Result<(), CalcError> {
+    if values.iter().all(|v| v.is_finite() && *v > 0.0) {
+        Ok(())
+    } else {
+        Err(CalcError::impossible(
+            "",
+            format!("this combination of {what} takes the squeeze time or the approach speeds outside the floating-point range"),
+        ))
     }
 }
 
@@ -531,21 +549,7 @@ fn turning(
             "a turning journal's path is an orbit: `/v1/journal-bearings/dynamic` with `include_orbit` samples it",
         );
     }
-    let cavitated = case.film == FilmExtent::Cavitated;
-    ctx.decide(
-        "cavitation",
-        Decision {
-            applied: cavitated,
-            mode: if cavitated { Mode::On } else { Mode::Off },
-            reason: if cavitated {
-                "film: cavitated — the opening side holds no tension (p ≥ 0)".into()
-            } else {
-                "film: full — negative pressures kept on the opening side".into()
-            },
-            criterion: None,
-            model,
-        },
-    );
+    decide_film(ctx, case.film, model);
     let budget = ctx.budget();
     let (time_s, speed_initial_m_s, speed_final_m_s, report) =
         match rotating_journal::approach(journal, e1, e2, film, tolerance, &budget)? {
@@ -574,15 +578,10 @@ fn turning(
     // W̄ = W C³/(μ L R³ V) at the radial approach speed.
     let coefficient = |v: f64| w * c.powi(3) / (mu * l * r.powi(3) * v);
     let (w1, w2) = (coefficient(speed_initial_m_s), coefficient(speed_final_m_s));
-    if ![time_s, speed_initial_m_s, speed_final_m_s, w1, w2]
-        .iter()
-        .all(|v| v.is_finite() && *v > 0.0)
-    {
-        return Err(CalcError::impossible(
-            "",
-            "this combination of load, speed, viscosity and geometry takes the squeeze time or the approach speeds outside the floating-point range",
-        ));
-    }
+    in_range(
+        &[time_s, speed_initial_m_s, speed_final_m_s, w1, w2],
+        "load, speed, viscosity and geometry",
+    )?;
     Ok(SqueezeJournalOutput {
         time_s,
         approach_speed_initial_m_s: speed_initial_m_s,

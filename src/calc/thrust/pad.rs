@@ -34,6 +34,17 @@ pub struct SolvedPad {
 }
 
 impl SolvedPad {
+    /// A tilting pad at its equilibrium `eq`, operating as `operating`.
+    fn balanced(eq: Equilibrium, operating: Operating) -> SolvedPad {
+        SolvedPad {
+            operating,
+            ratio: eq.ratio,
+            evaluated: eq.evaluated.clone(),
+            evaluations: Some(eq.evaluations),
+            equilibrium: Some(eq),
+        }
+    }
+
     /// The solver report: the final film's, with the search's evaluations and the request's
     /// film solves.
     pub fn report(&self, method: Method, budget: &Budget) -> SolverReport {
@@ -314,13 +325,7 @@ fn tilting_in(
         c,
     )?;
     warn_long_pad(method, l_over_b, &mut operating);
-    Ok(SolvedPad {
-        operating,
-        ratio: eq.ratio,
-        evaluated: eq.evaluated.clone(),
-        evaluations: Some(eq.evaluations),
-        equilibrium: Some(eq),
-    })
+    Ok(SolvedPad::balanced(eq, operating))
 }
 
 /// A crowned pad tilting about `pivot` in a `flow` ([`crowned::equilibrium`]).
@@ -334,13 +339,7 @@ fn crowned_in(
 ) -> Result<SolvedPad, CalcError> {
     let (eq, mut operating) = crowned::equilibrium(pivot, crown, flow, method, c, budget)?;
     warn_long_pad(method, c.pad.l_over_b(), &mut operating);
-    Ok(SolvedPad {
-        operating,
-        ratio: eq.ratio,
-        evaluated: eq.evaluated.clone(),
-        evaluations: Some(eq.evaluations),
-        equilibrium: Some(eq),
-    })
+    Ok(SolvedPad::balanced(eq, operating))
 }
 
 /// The pad solved by `solve` in its flow regime (Khonsari & Booser §7.11). Laminar first; when
