@@ -43,6 +43,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<rolling::grease_life::GreaseLife>(),
     Entry::of::<squeeze::plates::SqueezePlates>(),
     Entry::of::<squeeze::journal::SqueezeJournal>().numerical(),
+    Entry::of::<squeeze::piston_ring::PistonRingSqueeze>().numerical(),
     Entry::of::<gas::journal::GasJournal>().numerical(),
     Entry::of::<gas::slider::GasSlider>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
