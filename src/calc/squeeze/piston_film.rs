@@ -221,6 +221,10 @@ impl Film {
         if active.len() != n + 1 {
             *active = vec![false; n + 1];
         }
+        // A warm start from the other stroke keeps nothing outside this stroke's zone.
+        for (i, a) in active.iter_mut().enumerate() {
+            *a = *a && zone(i);
+        }
         let trapezoid = |p: &[f64]| dx * (0.5 * (p[0] + p[n]) + p[1..n].iter().sum::<f64>());
         let driver = Driver::new(
             "piston_ring_film_active_set",

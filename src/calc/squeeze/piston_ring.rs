@@ -30,7 +30,7 @@ const DEFAULT_GUESS_OVER_CROWN: f64 = 0.1;
 /// The ring.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct RingSpec {
+pub struct PistonRingSpec {
     /// Axial width b of the ring face, m (0 … 0.05; Table 9.5: 1.475 mm).
     #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 0.05, example = 1.475e-3)]
     pub width_m: Positive,
@@ -55,7 +55,7 @@ pub struct RingSpec {
 /// The engine.
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
-pub struct EngineSpec {
+pub struct PistonEngineSpec {
     /// Cylinder bore B, m (0.005 … 2; Table 9.5: 88.9 mm).
     #[schema(value_type = f64, minimum = 0.005, maximum = 2.0, example = 0.0889)]
     pub bore_m: Positive,
@@ -82,8 +82,8 @@ fn four_stroke() -> f64 {
 #[derive(Debug, Clone, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct PistonRingInput {
-    pub ring: RingSpec,
-    pub engine: EngineSpec,
+    pub ring: PistonRingSpec,
+    pub engine: PistonEngineSpec,
     /// Gas pressure above the ring over one cycle (above the crankcase's, Pa; crank angle from
     /// top dead centre of the power stroke), at least 3 points ascending within the cycle,
     /// joined by the periodic cubic. Default: none — both sides at the crankcase pressure (a
@@ -346,7 +346,7 @@ impl Validate for PistonRingInput {
 
 /// One crank angle of the converged cycle.
 #[derive(Debug, Clone, Serialize, ToSchema)]
-pub struct PathPoint {
+pub struct CyclePoint {
     pub crank_angle_deg: f64,
     /// Minimum film h_m, m.
     pub min_film_m: f64,
@@ -369,9 +369,9 @@ pub struct PathPoint {
     pub regime: &'static str,
 }
 
-impl PathPoint {
+impl CyclePoint {
     fn of(s: &Sample) -> Self {
-        PathPoint {
+        CyclePoint {
             crank_angle_deg: s.theta.to_degrees(),
             min_film_m: s.min_film,
             piston_speed_m_s: s.piston_speed,
@@ -422,7 +422,7 @@ pub struct PistonRingOutput {
     pub cycles: u32,
     /// The path, with `include_field`.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub path: Option<Vec<PathPoint>>,
+    pub path: Option<Vec<CyclePoint>>,
 }
 
 impl Calculation for PistonRingSqueeze {
@@ -505,7 +505,7 @@ impl Calculation for PistonRingSqueeze {
             cycles: cycle.cycles,
             path: case
                 .include_field
-                .then(|| samples.iter().map(PathPoint::of).collect()),
+                .then(|| samples.iter().map(CyclePoint::of).collect()),
         };
         CalcError::finite_or_out_of_range(out, "the ring, engine and lubricant")
     }
