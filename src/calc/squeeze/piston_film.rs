@@ -381,12 +381,12 @@ pub struct Cycle {
 #[derive(Debug, Clone, PartialEq)]
 pub enum CycleError {
     /// A film solve or the shooting stopped (cap, deadline).
-    Stopped(Stopped),
+    Stopped(Box<Stopped>),
     /// The integrator halted at crank angle θ (rad) with film h_m (m).
     Halted {
         theta: f64,
         min_film: f64,
-        stopped: Stopped,
+        stopped: Box<Stopped>,
     },
 }
 
@@ -508,12 +508,12 @@ impl PistonRing {
                     run.rejected += d.work.rejected;
                     run.evaluations += d.work.rate_evaluations;
                 }
-                Err(Failure::Rate(stopped)) => return Err(CycleError::Stopped(stopped)),
+                Err(Failure::Rate(stopped)) => return Err(CycleError::Stopped(Box::new(stopped))),
                 Err(Failure::Halted(h)) => {
                     return Err(CycleError::Halted {
                         theta: h.t,
                         min_film: delta * h.y[0].exp(),
-                        stopped: h.stopped,
+                        stopped: Box::new(h.stopped),
                     })
                 }
             }
@@ -566,7 +566,7 @@ impl PistonRing {
         if let Some(e) = failure {
             return Err(e);
         }
-        let shot = shot.map_err(CycleError::Stopped)?;
+        let shot = shot.map_err(|s| CycleError::Stopped(Box::new(s)))?;
         let run = last.expect("a converged shooting ran a cycle");
         let mut active = Vec::new();
         let mut samples = Vec::with_capacity(run.films.len());
@@ -578,7 +578,7 @@ impl PistonRing {
             };
             let (instant, _) = self
                 .log_rate(&film, theta, h_m, trailing, &mut active, budget)
-                .map_err(CycleError::Stopped)?;
+                .map_err(|s| CycleError::Stopped(Box::new(s)))?;
             samples.push(self.sample(theta, h_m, &instant));
         }
         let m = samples.len() - 1;

@@ -176,7 +176,9 @@ fn the_cycle_repeats_and_does_not_depend_on_the_first_guess() {
     let model = PistonRing {
         ring: table_9_5_ring(),
         engine: Engine {
-            angles: vec![0.0, 0.35, 1.0, 3.14, 6.28, 9.42, 11.9],
+            angles: [0.0, 20.0, 60.0, 180.0, 360.0, 540.0, 680.0]
+                .map(f64::to_radians)
+                .to_vec(),
             pressures: vec![4e6, 6e6, 1.5e6, 2e5, 0.0, 1e5, 1e6],
             ..table_9_5_engine(0.0, 0.5)
         },
@@ -250,7 +252,9 @@ fn the_cycles_power_converges_with_the_grid() {
     let model = PistonRing {
         ring: table_9_5_ring(),
         engine: Engine {
-            angles: vec![0.0, 0.35, 1.0, 3.14, 6.28, 9.42, 11.9],
+            angles: [0.0, 20.0, 60.0, 180.0, 360.0, 540.0, 680.0]
+                .map(f64::to_radians)
+                .to_vec(),
             pressures: vec![4e6, 6e6, 1.5e6, 2e5, 0.0, 1e5, 1e6],
             ..table_9_5_engine(0.0, 0.5)
         },

@@ -444,7 +444,7 @@ impl Calculation for PistonRingSqueeze {
         let cycle = model
             .cycle(case.guess, &case.numerics, &ctx.budget())
             .map_err(|e| match e {
-                CycleError::Stopped(stopped) => CalcError::from(stopped),
+                CycleError::Stopped(stopped) => CalcError::from(*stopped),
                 CycleError::Halted {
                     theta,
                     min_film,
