@@ -70,7 +70,7 @@ pub struct PistonEngineSpec {
     pub speed_rpm: Positive,
     /// The cycle in crank angle, degrees: 720 (four-stroke, default) or 360 (two-stroke).
     #[serde(default = "four_stroke")]
-    #[schema(example = 720.0)]
+    #[schema(minimum = 360.0, maximum = 720.0, example = 720.0)]
     pub cycle_deg: f64,
 }
 
@@ -90,6 +90,7 @@ pub struct PistonRingInput {
     /// ring loaded by its own tension and stiffness only). The text's Fig. 9.25 is not
     /// digitised: give the engine's own.
     #[serde(default)]
+    #[schema(example = json!([{"crank_angle_deg": 0.0, "pressure_pa": 4e6}, {"crank_angle_deg": 20.0, "pressure_pa": 6e6}, {"crank_angle_deg": 180.0, "pressure_pa": 2e5}, {"crank_angle_deg": 360.0, "pressure_pa": 0.0}, {"crank_angle_deg": 680.0, "pressure_pa": 1e6}]))]
     pub gas_pressure: Vec<PressurePoint>,
     /// P_bot / P_top, the pressure below the ring as a share of the one above (0 … 1; default
     /// 0.5, Jeng's "half" that the text takes).
@@ -347,13 +348,15 @@ impl Validate for PistonRingInput {
 /// One crank angle of the converged cycle.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct CyclePoint {
+    /// Crank angle from top dead centre of the power stroke, degrees.
     pub crank_angle_deg: f64,
     /// Minimum film h_m, m.
     pub min_film_m: f64,
     /// Piston speed towards the crankcase, m/s.
     pub piston_speed_m_s: f64,
-    /// Gas pressure above and below the ring, Pa.
+    /// Gas pressure above the ring, Pa (gauge).
     pub top_pressure_pa: f64,
+    /// Gas pressure below the ring, Pa (gauge).
     pub bottom_pressure_pa: f64,
     /// dh_m/dt, m/s (positive while the film opens).
     pub squeeze_velocity_m_s: f64,
@@ -400,18 +403,22 @@ pub struct PistonRingOutput {
     /// Pa per m of deflection: the film carries 2a (P_top + p_e + K h_m) per unit
     /// circumference (Eq. 9.50).
     pub ring_stiffness_pa_per_m: f64,
-    /// The smallest film over the cycle, m, and where, crank-angle degrees.
+    /// The smallest film over the cycle, m.
     pub min_film_m: f64,
+    /// Where the film is smallest, crank-angle degrees from top dead centre of the power
+    /// stroke.
     pub min_film_crank_angle_deg: f64,
-    /// The largest film over the cycle, m, and where.
+    /// The largest film over the cycle, m.
     pub max_film_m: f64,
+    /// Where the film is largest, crank-angle degrees.
     pub max_film_crank_angle_deg: f64,
-    /// The largest friction force on the ring (magnitude) over the degree samples, N, and
-    /// where.
+    /// The largest friction force on the ring (magnitude) over the degree samples, N.
     pub max_friction_force_n: f64,
+    /// Where the friction is largest, crank-angle degrees.
     pub max_friction_crank_angle_deg: f64,
-    /// The largest power loss over the degree samples, W, and where.
+    /// The largest power loss over the degree samples, W.
     pub max_power_loss_w: f64,
+    /// Where the power loss is largest, crank-angle degrees.
     pub max_power_crank_angle_deg: f64,
     /// Cycle-mean power loss of the ring, W.
     pub mean_power_loss_w: f64,
