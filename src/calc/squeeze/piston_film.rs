@@ -149,8 +149,6 @@ pub struct Instant {
     pub shear: f64,
     /// Viscous dissipation, W per m of circumference (Eq. 9.59).
     pub dissipation: f64,
-    /// Active-set iterations the solve took.
-    pub iterations: u32,
 }
 
 /// The film solver for one ring face: the grid and the film's fixed parts.
@@ -296,7 +294,6 @@ impl Film {
                 Verdict::Continue(changed as f64)
             }
         })?;
-        let iterations = solved.report.iterations;
         let (rate, pressure, carried) = solved.value;
         // A cell is cavitated when both its nodes are (the trailing edge counts with its
         // neighbour).
@@ -322,7 +319,6 @@ impl Film {
             load: carried,
             shear,
             dissipation,
-            iterations,
         })
     }
 }
@@ -372,8 +368,6 @@ pub struct Cycle {
     pub mean_power: f64,
     /// Cycles integrated (the shooting's iterations).
     pub cycles: u32,
-    /// |ln h_m(end) − ln h_m(0)| of the last cycle.
-    pub periodicity_residual: f64,
     pub report: SolverReport,
 }
 
@@ -602,7 +596,6 @@ impl PistonRing {
             samples,
             mean_power,
             cycles: shot.report.iterations,
-            periodicity_residual: shot.report.residual.unwrap_or(0.0),
             report,
         })
     }

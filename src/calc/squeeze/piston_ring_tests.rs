@@ -40,6 +40,26 @@ fn the_example_converges_to_a_cycle_with_its_film_least_near_top_dead_centre() {
 }
 
 #[test]
+fn a_two_stroke_cycle_repeats_over_360_degrees() {
+    let mut request = example();
+    request["engine"]["cycle_deg"] = json!(360.0);
+    request["gas_pressure"] = json!([{"crank_angle_deg": 0, "pressure_pa": 3e6},
+                                     {"crank_angle_deg": 30, "pressure_pa": 2e6},
+                                     {"crank_angle_deg": 120, "pressure_pa": 3e5},
+                                     {"crank_angle_deg": 240, "pressure_pa": 2e5}]);
+    request["include_field"] = json!(true);
+    let v = ok::<PistonRingSqueeze>(&request);
+    let path = v["result"]["path"].as_array().unwrap();
+    assert_eq!(path.len(), 361);
+    let (first, last) = (
+        path[0]["min_film_m"].as_f64().unwrap(),
+        path[360]["min_film_m"].as_f64().unwrap(),
+    );
+    assert!((last / first - 1.0).abs() < 1e-3, "{first} vs {last}");
+    assert!(result_field(&v, "min_film_crank_angle_deg") < 360.0);
+}
+
+#[test]
 fn a_film_below_the_roughness_is_boundary_lubricated_and_says_so() {
     let mut request = example();
     request["composite_roughness_m"] = json!(5e-6);
