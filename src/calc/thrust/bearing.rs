@@ -5,7 +5,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
-use super::fixed_pad::PadProfileSpec;
+use super::fixed_pad::{flat_land_warning, PadProfileSpec};
 use super::operating::Given;
 use super::pad::{self, RatioChoice, SolvedPad};
 use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult};
@@ -368,6 +368,11 @@ impl Calculation for Bearing {
         }
         .map_err(per_pad_pointers)?;
         ctx.record(&solved.operating.notes);
+        if let Pads::Fixed { profile, .. } = case.pads {
+            if let Some(message) = flat_land_warning(profile) {
+                ctx.warn("flat_land_empirical", message);
+            }
+        }
         ctx.report(solved.report(case.method, &budget));
         let result = PadResult::new(&solved.operating, solved.ratio, None);
         check_finite(&result)?;
