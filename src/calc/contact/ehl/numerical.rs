@@ -391,10 +391,11 @@ fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Optio
 }
 
 /// A point contact solved on an explicit `cells`² grid (a power of two, at least 64), which
-/// may be finer than the wire's 1024²: the accuracy bench's reference (2048² takes tens of
-/// seconds and about 1 GB, beyond a request's deadline and memory). `body` is a request the
-/// wire accepts; its fidelity is replaced. Returns the response's `result`, `solver` and
-/// `warnings` as the wire would, or the refusal.
+/// may be finer than the wire's 1024², to `high`'s tolerances: the accuracy bench's reference
+/// (2048² takes tens of seconds and about 1 GB, beyond a request's deadline and memory).
+/// `body` is a request the wire accepts; its fidelity is replaced. Returns the response's
+/// `result`, `solver` and `warnings` as the wire would, or the refusal.
+#[doc(hidden)]
 pub fn point_reference(
     body: &[u8],
     cells: usize,
@@ -409,11 +410,11 @@ pub fn point_reference(
         return Err(invalid(format!("{cells}² cells for a point contact")));
     }
     case.grids = Grids::Point(PointGrids {
-        level: Level::Standard,
+        level: Level::High,
         cells,
         finest: cells,
-        central_tolerance: POINT_CENTRAL_TOLERANCE[1],
-        min_tolerance: POINT_MIN_TOLERANCE[1],
+        central_tolerance: POINT_CENTRAL_TOLERANCE[2],
+        min_tolerance: POINT_MIN_TOLERANCE[2],
     });
     let mut ctx = Context::new(
         deadline,

@@ -74,8 +74,8 @@ const MAX_CYCLES: u32 = 80;
 const MAX_COARSEST_SOLVE: u32 = 400;
 /// Cycles on a level that only starts the next.
 const START_CYCLES: u32 = 8;
-/// A level is converged when a cycle changes the central film by less than this (relative)
-/// and the load balance holds to [`LOAD_TOLERANCE`].
+/// A level is converged when a cycle changes each of the central and the minimum film by less
+/// than this (relative) and the load balance holds to [`LOAD_TOLERANCE`].
 const FILM_TOLERANCE: f64 = 1e-4;
 const LOAD_TOLERANCE: f64 = 1e-4;
 /// Cycles over which a limit cycle of the film is judged, and the share of the level's
@@ -83,7 +83,7 @@ const LOAD_TOLERANCE: f64 = 1e-4;
 /// of the grid the cycle may span.
 const STALL_WINDOW: usize = 8;
 const WANDER_SHARE: f64 = 0.2;
-/// A cycle of the last two levels whose load is off by more than this share has diverged.
+/// A cycle of the last three levels whose load is off by more than this share has diverged.
 const DIVERGED_LOAD_ERROR: f64 = 0.5;
 
 /// The domain (X_a, X_b, Y_e) for a central-film guess H_c: the inlet at twice the
@@ -506,12 +506,12 @@ impl PointProblem {
     /// above the coarsest and its cycles settle), the second-finest and the finest, for
     /// Richardson's extrapolation and the films' observed order.
     ///
-    /// `accuracy` is the relative error asked of the film: a limit cycle may span
-    /// [`WANDER_SHARE`] of it.
+    /// `accuracy` is the relative error asked of the central and of the minimum film: a limit
+    /// cycle of each may span [`WANDER_SHARE`] of its own.
     pub fn solve(
         &self,
         cells: usize,
-        accuracy: f64,
+        accuracy: Accuracy,
         budget: &Budget,
     ) -> Result<Vec<PointSolution>, PointFailure> {
         assert!(cells.is_power_of_two() && cells >= MIN_CELLS);
@@ -601,33 +601,27 @@ impl PointProblem {
             .collect()
     }
 
-    /// A step up: the solve on twice the cells of `solved`'s finest level (`solved` the levels
-    /// of a solve, coarsest first). The levels of that solve below its finest are the ones
-    /// `solved` already holds (the same grids, cycled to the same tests), so only the new finest
-    /// level is cycled, from `solved`'s finest interpolated; its coarser grids serve only its
-    /// cycles' coarse-grid corrections. Returns the two finest of `solved` and the new level.
+    /// A step up: the finest level of a solve on twice the cells of `solved`'s finest level
+    /// (`solved` the levels of a solve, coarsest first). The levels of that solve below its
+    /// finest are the ones `solved` already holds (the same grids, cycled to the same tests), so
+    /// only the new finest level is cycled, from `solved`'s finest interpolated; its coarser
+    /// grids serve only its cycles' coarse-grid corrections.
     pub fn step_up(
         &self,
-        mut solved: Vec<PointSolution>,
-        accuracy: f64,
+        solved: &[PointSolution],
+        accuracy: Accuracy,
         budget: &Budget,
-    ) -> Result<Vec<PointSolution>, PointFailure> {
+    ) -> Result<PointSolution, PointFailure> {
         let previous = solved.last().expect("a solve's levels");
-        let cells = 2 * (previous.x.len() - 1);
-        let mut grids = self.hierarchy(cells);
+        let mut grids = self.hierarchy(2 * (previous.x.len() - 1));
         let fine = grids.last_mut().expect("a grid");
-        let coarse_nodes = previous.x.len();
-        fine.pressure = bilinear(&previous.pressure, coarse_nodes, coarse_nodes);
+        fine.pressure = bilinear(&previous.pressure, previous.x.len(), previous.y.len());
         fine.h00 = previous.h00;
         fine.update(self);
         let coarser = (previous.central_film(), previous.min_film().0);
-        let level = self
+        Ok(self
             .converge(&mut grids, coarser, Role::Resolved, accuracy, budget)?
-            .expect("a resolved level is kept");
-        let keep = solved.len().saturating_sub(2);
-        solved.drain(..keep);
-        solved.push(level);
-        Ok(solved)
+            .expect("a resolved level is kept"))
     }
 
     /// Cycles the finest of `grids` (started) as a level of the given `role`, `coarser` the
@@ -643,7 +637,7 @@ impl PointProblem {
         grids: &mut [Grid],
         coarser: (f64, f64),
         role: Role,
-        accuracy: f64,
+        accuracy: Accuracy,
         budget: &Budget,
     ) -> Result<Option<PointSolution>, PointFailure> {
         let kappa2 = self.aspect * self.aspect;
@@ -701,7 +695,8 @@ impl PointProblem {
 /// What a level of the hierarchy is for.
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Role {
-    /// It only starts the next level.
+    /// It only starts the next level: it ends after [`START_CYCLES`] cycles, or before when
+    /// both its films settle.
     Start,
     /// The third finest: its films give the observed order, if its cycles settle.
     Ordered,
@@ -714,8 +709,15 @@ struct History {
     central: Track,
     min: Track,
     load_errors: Vec<f64>,
-    /// The relative error asked of the film.
-    accuracy: f64,
+    /// The relative errors asked of the films.
+    accuracy: Accuracy,
+}
+
+/// The relative errors asked of the central and of the minimum film (a level's tolerances).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Accuracy {
+    pub central: f64,
+    pub min: f64,
 }
 
 /// One film's values cycle by cycle: the central film or the minimum.
@@ -728,7 +730,7 @@ struct Track {
 impl History {
     /// The history of the level `fine` as started, `coarser` the central and the minimum film
     /// of the level below.
-    fn new(fine: &Grid, coarser: (f64, f64), accuracy: f64) -> History {
+    fn new(fine: &Grid, coarser: (f64, f64), accuracy: Accuracy) -> History {
         History {
             central: Track {
                 films: vec![fine.central_film()],
@@ -767,8 +769,12 @@ impl History {
         let balanced_over_window = self.load_errors[n.saturating_sub(STALL_WINDOW)..]
             .iter()
             .all(|&e| e < 10.0 * LOAD_TOLERANCE);
-        let settled = |track: &Track| track.settled(balanced, balanced_over_window, self.accuracy);
-        Some((settled(&self.central)?, settled(&self.min)?))
+        let settled =
+            |track: &Track, accuracy| track.settled(balanced, balanced_over_window, accuracy);
+        Some((
+            settled(&self.central, self.accuracy.central)?,
+            settled(&self.min, self.accuracy.min)?,
+        ))
     }
 }
 
@@ -917,7 +923,10 @@ mod tests {
             central: track(films),
             min: track(mins),
             load_errors: vec![load_error; films.len()],
-            accuracy: 0.01,
+            accuracy: Accuracy {
+                central: 0.01,
+                min: 0.01,
+            },
         }
     }
 

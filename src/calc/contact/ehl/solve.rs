@@ -5,7 +5,7 @@
 //! reports are the drivers'.
 
 use super::line::{LineProblem, LineSolution};
-use super::point::{self, PointFailure, PointProblem, PointSolution};
+use super::point::{self, Accuracy, PointFailure, PointProblem, PointSolution};
 use crate::calc::{Budget, CalcError, Warning};
 use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 use crate::numerics::driver::{Driver, Stopped, Verdict};
@@ -202,6 +202,16 @@ pub struct PointGrids {
     pub min_tolerance: f64,
 }
 
+impl PointGrids {
+    /// The tolerances as the accuracy the levels' cycles are asked for.
+    fn accuracy(&self) -> Accuracy {
+        Accuracy {
+            central: self.central_tolerance,
+            min: self.min_tolerance,
+        }
+    }
+}
+
 /// The point contact's result: the finest level's field, the Richardson-extrapolated central
 /// and minimum films (H = hR_x/a²) with the minimum's Y and their estimated relative errors, the
 /// report (the finest level's cycles, with the larger estimate) and the warnings.
@@ -302,8 +312,9 @@ impl Films {
 /// ([`solve_levels`]), the films extrapolated and their errors estimated ([`Films`]); while an
 /// estimate exceeds its tolerance (or a film closes) the solve steps up to a grid twice as
 /// fine ([`PointProblem::step_up`]: only the new level is cycled), up to `grids.finest`, if the
-/// budget allows the step (about four times the last solve's time): the warnings `grid_stepped_up`, and `grid_limited` when the finest grid
-/// tried, or the deadline, leaves an estimate above its tolerance.
+/// budget allows the step (about four times the last solve's time): the warnings
+/// `grid_stepped_up`, and `grid_limited` when the finest grid tried, or the deadline, leaves an
+/// estimate above its tolerance.
 pub fn solve_point(
     problem: &PointProblem,
     grids: PointGrids,
@@ -311,7 +322,7 @@ pub fn solve_point(
 ) -> Result<PointRun, CalcError> {
     let started = Instant::now();
     let (solved, cells, mut warnings) =
-        solve_levels(problem, grids.cells, grids.central_tolerance, budget)?;
+        solve_levels(problem, grids.cells, grids.accuracy(), budget)?;
     let first = cells;
     // A grid the first solve fell back from is not tried again.
     let finest = if cells < grids.cells {
@@ -335,10 +346,12 @@ pub fn solve_point(
             break;
         }
         let step = Instant::now();
-        match problem.step_up(levels.clone(), grids.central_tolerance, budget) {
-            Ok(solved) => {
-                films = Films::of(&solved, next);
-                levels = solved;
+        match problem.step_up(&levels, grids.accuracy(), budget) {
+            Ok(level) => {
+                // The last solve's two finest levels are the new one's coarser pair.
+                levels.drain(..levels.len().saturating_sub(2));
+                levels.push(level);
+                films = Films::of(&levels, next);
                 cells = next;
                 last_time = step.elapsed();
             }
@@ -411,14 +424,14 @@ const STEP_UP_COST: f64 = 4.5;
 
 /// The point problem's two finest levels on `cells` per direction, or, when a level's cycles
 /// stall or diverge (strongly piezoviscous contacts, or light loads, on fine grids), on the grid
-/// half as fine as that level (and so on, down to [`point::MIN_CELLS`]). The attempts run under the solver driver (one
-/// iteration: one whole multigrid solve; the deadline polled before each); the driver's report
-/// is not the room's, which is the finest level's own. Returns the levels, the cells they
+/// half as fine as that level (and so on, down to [`point::MIN_CELLS`]). The attempts run
+/// under the solver driver (one iteration: one whole multigrid solve; the deadline polled
+/// before each); the driver's report is not the room's, which is the finest level's own. Returns the levels, the cells they
 /// reached and the `grid_fallback` warning when they are not the requested ones.
 fn solve_levels(
     problem: &PointProblem,
     cells: usize,
-    tolerance: f64,
+    accuracy: Accuracy,
     budget: &Budget,
 ) -> Result<(Vec<PointSolution>, usize, Vec<Warning>), CalcError> {
     let mut cells = cells;
@@ -433,7 +446,7 @@ fn solve_levels(
         attempts,
         budget,
     )
-    .run(|_| match problem.solve(cells, tolerance, budget) {
+    .run(|_| match problem.solve(cells, accuracy, budget) {
         Ok(solved) => Verdict::Converged(solved, 0.0),
         // A level that stalls stalls the same way as the finest of a coarser solve: the next
         // attempt's finest is the grid below it.
