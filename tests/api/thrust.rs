@@ -452,3 +452,183 @@ fn a_crowned_pad_carries_load_on_a_central_pivot_and_tends_to_the_flat_pad() {
         }
     }
 }
+
+/// A crowned fixed pad (the tilting pad's crown, Khonsari & Booser §7.5, on a fixed plane pad):
+/// as the crown vanishes it is the flat pad, from its film to 1e-12 and from its load to 1e-9;
+/// with parallel edges (film ratio 1, which a flat pad may not have: it would carry nothing) it
+/// carries its load on the crown, the thinnest film at mid-pad; the crown's bad inputs name it.
+#[test]
+fn a_crowned_fixed_pad_tends_to_the_flat_pad_and_carries_load_with_parallel_edges() {
+    let pad = |ratio: f64, crown: Option<f64>, given: Value| {
+        let mut body = json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087},
+            "profile": {"kind": "plane_inclined", "film_ratio": ratio},
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "fidelity": "fast", "effects": {"thermal": "off"},
+        });
+        for (k, v) in given.as_object().unwrap() {
+            body[k] = v.clone();
+        }
+        if let Some(crown) = crown {
+            body["crown_m"] = json!(crown);
+        }
+        body
+    };
+    let fields = [
+        "/result/load_n",
+        "/result/outlet_film_m",
+        "/result/friction_force_n",
+        "/result/center_of_pressure_fraction",
+        "/result/max_pressure_pa",
+        "/result/inlet_flow_m3_s",
+        "/result/side_flow_m3_s",
+        "/result/temperature_rise_k",
+    ];
+    for (given, crown, tolerance) in [
+        (json!({"outlet_film_m": 3e-5}), 1e-18, 1e-12),
+        (json!({"load_n": 16000}), 1e-16, 1e-9),
+    ] {
+        let flat = run(FIXED, &pad(2.0, None, given.clone())).unwrap();
+        let crowned = run(FIXED, &pad(2.0, Some(crown), given.clone())).unwrap();
+        for field in fields {
+            let (a, b) = (number(&crowned, field), number(&flat, field));
+            assert!(
+                (a / b - 1.0).abs() < tolerance,
+                "{given}: {field}: {a} vs {b}"
+            );
+        }
+    }
+    // Parallel edges: refused flat (outside the film ratios a flat pad may have), carried crowned.
+    match run(FIXED, &pad(1.0, None, json!({"outlet_film_m": 2e-5}))) {
+        Err(Failure::Invalid(errors)) => {
+            assert!(errors.iter().any(|e| e.pointer == "/profile/film_ratio"))
+        }
+        other => panic!("{other:?}"),
+    }
+    let mut last = 0.0;
+    for crown in [2e-6, 5e-6, 1e-5] {
+        let v = run(
+            FIXED,
+            &pad(1.0, Some(crown), json!({"outlet_film_m": 2e-5})),
+        )
+        .unwrap();
+        assert_finite(&v);
+        let load = number(&v, "/result/load_n");
+        assert!(load > last, "crown {crown}: {load} after {last}");
+        last = load;
+        // The film converges to mid-pad and cavitates behind it: the pressure's centre is ahead.
+        assert!(number(&v, "/result/center_of_pressure_fraction") < 0.5);
+    }
+    let v = run(FIXED, &pad(1.0, Some(1e-5), json!({"load_n": 5000}))).unwrap();
+    assert!((number(&v, "/result/load_n") / 5000.0 - 1.0).abs() < 1e-9);
+    let h2 = number(&v, "/result/outlet_film_m");
+    assert!(h2 > 1e-5, "h2 {h2}: the crown stays below the film here");
+    for (body, pointer, invalid) in [
+        (
+            pad(2.0, Some(2e-3), json!({"load_n": 5000})),
+            "/crown_m",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["fidelity"] = json!("closed_form");
+                b
+            },
+            "/fidelity",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["profile"] =
+                    json!({"kind": "step", "film_ratio": 2, "step_position_fraction": 0.7});
+                b
+            },
+            "/profile/kind",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["profile"]["film_ratio"] = json!("optimum");
+                b
+            },
+            "/profile/film_ratio",
+            true,
+        ),
+        // A film as thin as the crown's touch point: the crown would touch the runner.
+        (
+            pad(1.0, Some(1e-5), json!({"outlet_film_m": 1e-5})),
+            "/crown_m",
+            false,
+        ),
+        (
+            pad(1.0, Some(1e-4), json!({"load_n": 1e8})),
+            "/crown_m",
+            false,
+        ),
+    ] {
+        match run(FIXED, &body) {
+            Err(Failure::Invalid(errors)) if invalid => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            Err(Failure::Calc(CalcError::Impossible {
+                pointer: p,
+                message,
+            })) if !invalid => {
+                assert_eq!(p, pointer, "{message}");
+                assert!(message.contains("touches the runner"), "{message}");
+            }
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+}
+
+/// A whole bearing of crowned pads: centrally pivoted tilting pads carry the load their flat
+/// twins refuse, and crowned fixed pads with parallel edges carry theirs; the minimum-film check
+/// reads the thinnest film, inside the pad, and a pad's crown refusal points at the bearing's
+/// field.
+#[test]
+fn a_bearing_of_crowned_pads_carries_its_load() {
+    let bearing = |pads: Value| {
+        json!({
+            "inner_radius_m": 0.073, "outer_radius_m": 0.16, "pad_count": 7,
+            "pad_angle_deg": 43.7, "pads": pads, "speed_rpm": 3600, "load_n": 111200,
+            "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49, "fidelity": "fast",
+        })
+    };
+    let tilting = json!({"kind": "tilting", "pivot_position_fraction": 0.5});
+    match run(BEARING, &bearing(tilting.clone())) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/pads/pivot_position_fraction")
+        }
+        other => panic!("{other:?}"),
+    }
+    let mut crowned_tilting = tilting;
+    crowned_tilting["crown_m"] = json!(2e-5);
+    let fixed = json!({"kind": "fixed", "profile": {"kind": "plane_inclined", "film_ratio": 1},
+                       "crown_m": 2e-5});
+    for pads in [crowned_tilting, fixed] {
+        let v = run(BEARING, &bearing(pads.clone())).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/load_per_pad_n") * 7.0 / 111200.0 - 1.0).abs() < 1e-9);
+        let (h_min, h2) = (
+            number(&v, "/result/min_film_m"),
+            number(&v, "/result/pad/outlet_film_m"),
+        );
+        assert!(h_min < h2 && h_min > 0.0, "{pads}: h_min {h_min}, h2 {h2}");
+        assert_eq!(number(&v, "/result/checks/0/value"), h_min);
+    }
+    let heavy = json!({"kind": "fixed", "profile": {"kind": "plane_inclined", "film_ratio": 1},
+                       "crown_m": 1e-3});
+    let mut body = bearing(heavy);
+    body["load_n"] = json!(1e10);
+    match run(BEARING, &body) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/pads/crown_m")
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -85,18 +85,58 @@ pub enum RatioChoice {
     Depth(f64),
 }
 
-/// A fixed pad of shape `profile`, its film ratio chosen by `choice`, in its flow regime.
+/// A fixed pad of shape `profile`, its film ratio chosen by `choice`, in its flow regime;
+/// with `crown` (δ, m) a plane pad crowned as a tilting pad is ([`Profile::Crowned`]), at its
+/// given film ratio.
 pub fn fixed(
     profile: Profile,
     choice: RatioChoice,
+    crown: Option<f64>,
     method: Method,
     c: &Conditions,
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
-    in_regime(c, budget, |flow| {
-        fixed_in(profile, choice, flow, method, c, budget)
+    in_regime(c, budget, |flow| match crown {
+        None => fixed_in(profile, choice, flow, method, c, budget),
+        Some(crown) => crowned_fixed_in(profile.ratio(), crown, flow, method, c, budget),
     })
+}
+
+/// A fixed plane pad of film ratio `ratio` crowned by `crown` (δ, m) in a `flow`: the crown
+/// ratio k = δ/h2 is known from a given film; under a given load it is the unknown
+/// ([`Machined::Crown`]).
+fn crowned_fixed_in(
+    ratio: f64,
+    crown: f64,
+    flow: Flow,
+    method: Method,
+    c: &Conditions,
+    budget: &Budget,
+) -> Result<SolvedPad, CalcError> {
+    match c.given {
+        Given::OutletFilm(h2) => {
+            let profile = Profile::Crowned {
+                ratio,
+                crown: crown / h2,
+            };
+            if profile.minimum() <= 0.0 {
+                return Err(CalcError::impossible(
+                    "/crown_m",
+                    format!("a crown of {crown:e} m over a trailing-edge film of {h2:e} m at h1/h2 = {ratio} touches the runner: δ/h2 must stay below (√(h1/h2) + 1)²/4 = {:.4}", crown_touching(ratio)),
+                ));
+            }
+            at_ratio(profile, flow, None, method, c, budget)
+        }
+        Given::Load(_) => with_machined(Machined::Crown { ratio, crown }, flow, method, c, budget),
+    }
+}
+
+/// The crown ratio δ/h2 at which a crowned pad of film ratio a first touches the runner:
+/// the minimum of h̄ = a − (a − 1) x̄ − 4 k x̄(1 − x̄), a − (a − 1 + 4k)²/(16k) at the vertex, is
+/// zero at k = (√a + 1)²/4 (the other root, (√a − 1)²/4, puts the vertex off the pad).
+pub fn crown_touching(ratio: f64) -> f64 {
+    (ratio.sqrt() + 1.0).powi(2) / 4.0
 }
 
 /// A fixed pad in a given `flow`.
@@ -117,7 +157,9 @@ fn fixed_in(
         }
         RatioChoice::Depth(depth) => match c.given {
             Given::OutletFilm(h2) => (profile.with_ratio(depth_ratio(depth, h2)?), None),
-            Given::Load(_) => return with_depth(profile, depth, flow, method, c, budget),
+            Given::Load(_) => {
+                return with_machined(Machined::Depth { profile, depth }, flow, method, c, budget)
+            }
         },
     };
     at_ratio(profile, flow, evaluations, method, c, budget)
@@ -166,54 +208,126 @@ fn depth_ratio(depth: f64, h2: f64) -> Result<f64, CalcError> {
     }
 }
 
-/// A pad of machined depth d under its load (Khonsari & Booser §7.4's iteration, solved): at
-/// viscosity μ the ratio a balances W̄(a) (a − 1)² = W d²/(μ U B² L) — h2 = d/(a − 1) carrying W —
-/// a root on a that rises monotonically; with the thermal effect the viscosity's temperature
-/// and the ratio are iterated to a fixed point under the driver (the film at μ(T_eff) must give
-/// back T_eff).
-fn with_depth(
-    profile: Profile,
-    depth: f64,
+/// A length fixed in metres that sets a fixed pad's film under its load: the machined depth
+/// d = h1 − h2 (the film ratio a is the unknown, h2 = d/(a − 1)) or the crown δ at a given
+/// ratio (u = ln(δ/h2) is the unknown, h2 = δ/eᵘ).
+#[derive(Debug, Clone, Copy)]
+enum Machined {
+    Depth { profile: Profile, depth: f64 },
+    Crown { ratio: f64, crown: f64 },
+}
+
+/// The thinnest crown ratio δ/h2 searched under a load (a crown of 1e-14 of the film is a flat
+/// pad to round-off).
+const CROWN_RATIO_MIN: f64 = 1e-14;
+
+impl Machined {
+    /// d or δ, m.
+    fn length(self) -> f64 {
+        match self {
+            Machined::Depth { depth, .. } => depth,
+            Machined::Crown { crown, .. } => crown,
+        }
+    }
+
+    /// The unknown's bracket: the film ratios a pad may have; ln k from [`CROWN_RATIO_MIN`] to
+    /// 1 % short of the crown that touches the runner ([`crown_touching`]).
+    fn bracket(self) -> (f64, f64) {
+        match self {
+            Machined::Depth { .. } => RATIOS,
+            Machined::Crown { ratio, .. } => {
+                (CROWN_RATIO_MIN.ln(), (0.99 * crown_touching(ratio)).ln())
+            }
+        }
+    }
+
+    /// The film at the unknown `s`, and h2/length there.
+    fn at(self, s: f64) -> (Profile, f64) {
+        match self {
+            Machined::Depth { profile, .. } => (profile.with_ratio(s), 1.0 / (s - 1.0)),
+            Machined::Crown { ratio, .. } => (
+                Profile::Crowned {
+                    ratio,
+                    crown: s.exp(),
+                },
+                (-s).exp(),
+            ),
+        }
+    }
+
+    /// The refusal when the load cannot be balanced in the bracket (`light`: even its low end
+    /// carries more).
+    fn refusal(self, light: bool) -> CalcError {
+        match self {
+            Machined::Depth { depth, .. } => {
+                let which = if light {
+                    "below 1.01: the depth is too shallow for so light a load"
+                } else {
+                    "above 10: the depth is too deep for so heavy a load"
+                };
+                CalcError::impossible(
+                    "/profile/depth_m",
+                    format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
+                )
+            }
+            Machined::Crown { ratio, crown } => {
+                let why = if light {
+                    format!("the load is so light that the film exceeds {:e} times the crown: the crown is lost in it (omit crown_m)", 1.0 / CROWN_RATIO_MIN)
+                } else {
+                    format!("the load needs a film so thin that the crown touches the runner (δ/h2 reaches 0.99 × (√(h1/h2) + 1)²/4 = {:.4}): lower the crown or the load, or raise the film ratio", 0.99 * crown_touching(ratio))
+                };
+                CalcError::impossible(
+                    "/crown_m",
+                    format!("a crown of {crown:e} m at h1/h2 = {ratio}: {why}"),
+                )
+            }
+        }
+    }
+}
+
+/// A fixed pad whose film is set by a length fixed in metres under its load (Khonsari &
+/// Booser §7.4's iteration for a machined depth, Ex 7.1, solved; a crown likewise): at
+/// viscosity μ the unknown s balances W̄(s) (length/h2(s))² = W length²/(μ U B² L) — h2 carrying
+/// W — a bracketed root (W̄ h2⁻² rises as the film thins); with the thermal effect the
+/// viscosity's temperature and s are iterated to a fixed point under the driver (the film at
+/// μ(T_eff) must give back T_eff).
+fn with_machined(
+    machined: Machined,
     flow: Flow,
     method: Method,
     c: &Conditions,
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     let Given::Load(load) = c.given else {
-        unreachable!("with_depth is for a given load")
+        unreachable!("with_machined is for a given load")
     };
     let (pad, u) = (c.pad, c.sliding_speed_m_s);
     let l_over_b = pad.l_over_b();
+    let length = machined.length();
     let evaluations = Cell::new(0u32);
-    let ratio_at = |mu: f64| -> Result<f64, CalcError> {
-        let target = load * depth * depth / (mu * u * pad.breadth_m.powi(2) * pad.length_m);
+    let unknown_at = |mu: f64| -> Result<f64, CalcError> {
+        let target = load * length * length / (mu * u * pad.breadth_m.powi(2) * pad.length_m);
         let failure = Cell::new(None);
-        let balance = |a: f64| match evaluate(profile.with_ratio(a), flow, l_over_b, method, budget)
-        {
-            Ok(e) => {
-                evaluations.set(evaluations.get() + 1);
-                e.performance.load * (a - 1.0).powi(2) - target
-            }
-            Err(e) => {
-                failure.set(Some(e));
-                0.0
+        let balance = |s: f64| {
+            let (profile, film) = machined.at(s);
+            match evaluate(profile, flow, l_over_b, method, budget) {
+                Ok(e) => {
+                    evaluations.set(evaluations.get() + 1);
+                    e.performance.load / film.powi(2) - target
+                }
+                Err(e) => {
+                    failure.set(Some(e));
+                    0.0
+                }
             }
         };
-        let (lo, hi) = RATIOS;
+        let (lo, hi) = machined.bracket();
         let (at_lo, at_hi) = (balance(lo), balance(hi));
         if let Some(e) = failure.take() {
             return Err(e.into());
         }
         if at_lo > 0.0 || at_hi < 0.0 {
-            let which = if at_lo > 0.0 {
-                "below 1.01: the depth is too shallow for so light a load"
-            } else {
-                "above 10: the depth is too deep for so heavy a load"
-            };
-            return Err(CalcError::impossible(
-                "/profile/depth_m",
-                format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
-            ));
+            return Err(machined.refusal(at_lo > 0.0));
         }
         let root = brent_bracketed(
             balance,
@@ -228,20 +342,21 @@ fn with_depth(
             return Err(e.into());
         }
         Ok(root
-            .map_err(|e| CalcError::from_root("thrust_depth_ratio", e))?
+            .map_err(|e| match machined {
+                Machined::Depth { .. } => CalcError::from_root("thrust_depth_ratio", e),
+                Machined::Crown { .. } => CalcError::from_root("thrust_crown_ratio", e),
+            })?
             .x)
     };
     let lub = &c.lubricant;
-    let mut ratio = ratio_at(lub.viscosity_pa_s(c.inlet_temperature_c))?;
+    let mut unknown = unknown_at(lub.viscosity_pa_s(c.inlet_temperature_c))?;
     let mut failure = None;
-    let run = Driver::new(
-        "thrust_depth_temperature_fixed_point",
-        IterationUnit::Evaluations,
-        50,
-        budget,
-    )
-    .run(|_| {
-        let solved = match at_ratio(profile.with_ratio(ratio), flow, None, method, c, budget) {
+    let name = match machined {
+        Machined::Depth { .. } => "thrust_depth_temperature_fixed_point",
+        Machined::Crown { .. } => "thrust_crown_temperature_fixed_point",
+    };
+    let run = Driver::new(name, IterationUnit::Evaluations, 50, budget).run(|_| {
+        let solved = match at_ratio(machined.at(unknown).0, flow, None, method, c, budget) {
             Ok(s) => s,
             Err(e) => {
                 failure = Some(e);
@@ -257,15 +372,16 @@ fn with_depth(
         {
             return Verdict::Converged(solved, 0.0);
         }
-        let next = match ratio_at(lub.viscosity_pa_s(solved.operating.effective_temperature_c)) {
+        let next = match unknown_at(lub.viscosity_pa_s(solved.operating.effective_temperature_c)) {
             Ok(r) => r,
             Err(e) => {
                 failure = Some(e);
                 return Verdict::Stalled(f64::NAN);
             }
         };
-        let change = (next - ratio).abs() / ratio;
-        ratio = next;
+        // Relative in a (≥ 1.01), absolute in ln k near k = 1.
+        let change = (next - unknown).abs() / unknown.abs().max(1.0);
+        unknown = next;
         if change <= 1e-9 {
             Verdict::Converged(solved, change)
         } else {

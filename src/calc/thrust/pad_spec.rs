@@ -117,6 +117,30 @@ pub fn method(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Method
     }
 }
 
+/// A pad's crown δ (`crown_m` at `pointer`), checked: at most 1e-3 m, and a numerical fidelity
+/// (a crowned film diverges behind its crown and cavitates).
+pub fn crown(
+    crown: Option<Positive>,
+    pointer: &str,
+    method: Method,
+    errors: &mut Vec<FieldError>,
+) -> Option<f64> {
+    let crown = crown.map(Positive::get)?;
+    if crown > 1e-3 {
+        errors.push(FieldError::new(
+            pointer,
+            format!("must be at most 1e-3 m, got {crown}"),
+        ));
+    }
+    if method == Method::LongPad {
+        errors.push(FieldError::new(
+            "/fidelity",
+            "a crowned pad's film diverges behind its crown and cavitates, which the infinitely long pad's closed form does not model: give a numerical fidelity",
+        ));
+    }
+    Some(crown)
+}
+
 /// Table 7.2's coefficients of this pad.
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct PadCoefficients {

@@ -114,21 +114,7 @@ impl Validate for TiltingPadInput {
         };
         let given = given(None, Some(self.load_n), false, &mut errors);
         let method = pad_spec::method(self.fidelity, &mut errors);
-        let crown_m = self.crown_m.map(Positive::get);
-        if let Some(crown) = crown_m {
-            if crown > 1e-3 {
-                errors.push(FieldError::new(
-                    "/crown_m",
-                    format!("must be at most 1e-3 m, got {crown}"),
-                ));
-            }
-            if method == Method::LongPad {
-                errors.push(FieldError::new(
-                    "/fidelity",
-                    "a crowned pad's film diverges behind its crown and cavitates, which the infinitely long pad's closed form does not model: give a numerical fidelity",
-                ));
-            }
-        }
+        let crown_m = pad_spec::crown(self.crown_m, "/crown_m", method, &mut errors);
         let conditions = conditions(
             pad,
             self.sliding_speed_m_s,
