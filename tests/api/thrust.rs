@@ -632,3 +632,48 @@ fn a_bearing_of_crowned_pads_carries_its_load() {
         other => panic!("{other:?}"),
     }
 }
+
+/// The crowned central pivot over the texts' range of crowns, δ/h_min from 0.5 to 2 (Khonsari &
+/// Booser §7.5), and on to the fold where its equilibrium branch ends: above δ/h2 ≈ 1 a second,
+/// pinched equilibrium appears near the film ratio at which the crown touches and meets the
+/// main one at a fold; the pad follows the main branch (the film ratio rises as the pivot moves
+/// back) and refuses a crown past the fold, naming it.
+#[test]
+fn a_crowned_central_pivot_spans_the_texts_crown_range_up_to_its_fold() {
+    let pad = |crown: f64| {
+        json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087}, "pivot_position_fraction": 0.5,
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "load_n": 16000, "crown_m": crown, "fidelity": "fast",
+            "effects": {"thermal": "off"},
+        })
+    };
+    let mut spans: Vec<f64> = Vec::new();
+    for crown in [5e-6, 1e-5, 2e-5, 4e-5, 6e-5, 8e-5, 1e-4, 1.2e-4, 1.4e-4] {
+        let v = run(TILTING, &pad(crown)).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - 0.5).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-9);
+        // The main branch: the film ratio rises as the pivot moves back.
+        assert!(
+            number(&v, "/result/film_ratio_per_pivot_fraction") > 0.0,
+            "crown {crown}"
+        );
+        let over_min = crown / number(&v, "/result/minimum_film_m");
+        assert!(
+            spans.last().is_none_or(|&last| over_min > last),
+            "crown {crown}: {over_min} after {spans:?}"
+        );
+        spans.push(over_min);
+    }
+    // Measured: δ/h_min from 0.108 to 3.56 (δ/h2 from 0.108 to 1.52).
+    assert!(spans[0] < 0.5 && spans[spans.len() - 1] > 2.0, "{spans:?}");
+    // Past the fold (near δ/h2 = 1.62, δ/h_min = 7.0 on the fast mesh): refused, naming it.
+    match run(TILTING, &pad(5e-4)) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/crown_m");
+            assert!(message.contains("fold near δ/h2 = 1.6"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+}

@@ -346,7 +346,7 @@ fn a_crowned_central_pivot_balances_its_moment_and_carries_more_with_more_crown(
         last = w;
         crown_over_min.push(k / profile.minimum());
     }
-    // The sweep (up to a crown as high as the trailing-edge film, the searched range) spans
+    // The sweep (up to a crown as high as the trailing-edge film; the rooms go on to the fold)
     // crowns from under half the minimum film to 1.3 of it: the texts' range from its start.
     let (lo, hi) = (crown_over_min[0], crown_over_min[crown_over_min.len() - 1]);
     assert!(lo < 0.5 && hi > 1.25, "δ/h_min from {lo} to {hi}");
