@@ -9,13 +9,15 @@ use std::cell::Cell;
 
 use super::crowned;
 use super::long_pad;
-use super::operating::{self, Conditions, Given, Operating, TRANSITION_END_REYNOLDS};
+use super::operating::{
+    self, Conditions, Given, Operating, TurbulenceLaw, TRANSITION_END_REYNOLDS, TURBULENT_REYNOLDS,
+};
 use super::performance::{self, evaluate, Evaluated, Method, RATIOS};
 use super::pivot::{equilibrium, Equilibrium, Pivot};
 use super::profile::Profile;
-use crate::calc::turbulence::Flow;
+use crate::calc::turbulence::{missana_friction_factor, Flow};
 use crate::calc::{Budget, CalcError};
-use crate::effects::Mode;
+use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::driver::{Driver, Verdict};
 use crate::numerics::roots::{brent_bracketed, Stopping};
@@ -60,7 +62,7 @@ impl SolvedPad {
 
 /// Refuse an inlet temperature where the lubricant's viscosity law has no value.
 fn check_viscosity(c: &Conditions) -> Result<(), CalcError> {
-    let mu = c.lubricant.viscosity_pa_s(c.inlet_temperature_c);
+    let mu = c.viscosity_pa_s(c.inlet_temperature_c);
     if mu.is_finite() && mu > 0.0 {
         Ok(())
     } else {
@@ -97,7 +99,7 @@ pub fn fixed(
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
-    in_regime(c, budget, |flow| match crown {
+    in_regime(c, budget, |flow, c| match crown {
         None => fixed_in(profile, choice, flow, method, c, budget),
         Some(crown) => crowned_fixed_in(profile.ratio(), crown, flow, method, c, budget),
     })
@@ -348,8 +350,7 @@ fn with_machined(
             })?
             .x)
     };
-    let lub = &c.lubricant;
-    let mut unknown = unknown_at(lub.viscosity_pa_s(c.inlet_temperature_c))?;
+    let mut unknown = unknown_at(c.viscosity_pa_s(c.inlet_temperature_c))?;
     let mut failure = None;
     let name = match machined {
         Machined::Depth { .. } => "thrust_depth_temperature_fixed_point",
@@ -372,7 +373,7 @@ fn with_machined(
         {
             return Verdict::Converged(solved, 0.0);
         }
-        let next = match unknown_at(lub.viscosity_pa_s(solved.operating.effective_temperature_c)) {
+        let next = match unknown_at(c.viscosity_pa_s(solved.operating.effective_temperature_c)) {
             Ok(r) => r,
             Err(e) => {
                 failure = Some(e);
@@ -407,8 +408,10 @@ pub fn tilting(
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
     match crown_m {
-        None => in_regime(c, budget, |flow| tilting_in(pivot, flow, method, c, budget)),
-        Some(crown) => in_regime(c, budget, |flow| {
+        None => in_regime(c, budget, |flow, c| {
+            tilting_in(pivot, flow, method, c, budget)
+        }),
+        Some(crown) => in_regime(c, budget, |flow, c| {
             crowned_in(pivot, crown, flow, method, c, budget)
         }),
     }
@@ -469,9 +472,9 @@ fn crowned_in(
 fn in_regime(
     c: &Conditions,
     budget: &Budget,
-    solve: impl Fn(Flow) -> Result<SolvedPad, CalcError>,
+    solve: impl Fn(Flow, &Conditions) -> Result<SolvedPad, CalcError>,
 ) -> Result<SolvedPad, CalcError> {
-    let laminar = solve(Flow::Laminar)?;
+    let laminar = solve(Flow::Laminar, c)?;
     let applies = c.effects.turbulence != Mode::Off
         && laminar
             .operating
@@ -481,6 +484,9 @@ fn in_regime(
             .any(|(name, d)| *name == "turbulence" && d.applied);
     if !applies {
         return Ok(laminar);
+    }
+    if c.effects.turbulence_law == TurbulenceLaw::Missana {
+        return missana(laminar, c, solve);
     }
     let mut x = laminar.operating.outlet_reynolds_number.ln();
     let mut previous: Option<(f64, f64)> = None;
@@ -492,9 +498,12 @@ fn in_regime(
         budget,
     )
     .run(|_| {
-        let solved = match solve(Flow::Turbulent {
-            reference_reynolds: x.exp(),
-        }) {
+        let solved = match solve(
+            Flow::Turbulent {
+                reference_reynolds: x.exp(),
+            },
+            c,
+        ) {
             Ok(s) => s,
             Err(e) => {
                 failure = Some(e);
@@ -523,6 +532,58 @@ fn in_regime(
             "turbulence_transition",
             format!("the laminar pad-average Reynolds number ρ U h_mean/μ = {re:.0} lies in the transition range 580–800 (Khonsari & Booser §7.11): the result is the turbulent film, power loss {:.4e} W against the laminar {:.4e} W; the texts advise expecting the larger", solved.operating.power_loss_w, laminar.operating.power_loss_w),
         );
+    }
+    Ok(solved)
+}
+
+/// The texts' empirical turbulent pad (Khonsari & Booser §7.11): at the `laminar` pad's
+/// pad-average Re = ρ U h_mean/μ the friction factor f = 0.026/Re^0.25 (Eq. 7.20) gives the
+/// power loss E_t = f (ρ U²/2) U B L (Eq. 7.17); where E_t exceeds the laminar loss by X, the
+/// pad is solved again laminar at the viscosity × (1 + X), the texts' "effective" viscosity for
+/// Table 7.2's film and flows, and carries E_t as its power loss (friction E_t/U, rise
+/// E_t/(ρ c_p Q₁)). One step, as the texts take it: a rough approximation, they say, which is
+/// why Ng–Pan's film stays the default.
+fn missana(
+    laminar: SolvedPad,
+    c: &Conditions,
+    solve: impl Fn(Flow, &Conditions) -> Result<SolvedPad, CalcError>,
+) -> Result<SolvedPad, CalcError> {
+    let op = &laminar.operating;
+    let re = op.reynolds_number;
+    let f = missana_friction_factor(re);
+    let u = c.sliding_speed_m_s;
+    let rho = c.lubricant.density_kg_m3(op.effective_temperature_c);
+    let empirical = f * 0.5 * rho * u * u * u * c.pad.area_m2();
+    let factor = (empirical / op.power_loss_w).max(1.0);
+    let thick = Conditions {
+        viscosity_factor: c.viscosity_factor * factor,
+        ..c.clone()
+    };
+    let mut solved = solve(Flow::Laminar, &thick)?;
+    let o = &mut solved.operating;
+    let t = o.effective_temperature_c;
+    let heat = c.lubricant.density_kg_m3(t) * c.lubricant.specific_heat_j_kg_k(t);
+    // The larger of the two losses is the one to expect (§7.11).
+    let power = empirical.max(o.power_loss_w);
+    o.power_loss_w = power;
+    o.friction_force_n = power / u;
+    o.temperature_rise_k = power / (heat * o.inlet_flow_m3_s);
+    let reason = format!("turbulent film by Khonsari & Booser §7.11's empirical rule: friction factor f = 0.026/Re^0.25 = {f:.4e} (Eq. 7.20) at the laminar pad-average Re = ρ U h_mean/μ = {re:.4e}, power loss f (ρ U²/2) U B L = {empirical:.4e} W (Eq. 7.17) against the laminar {:.4e} W, the larger carried; film and flows at the viscosity × {factor:.4} (the texts' effective viscosity)", op.power_loss_w);
+    for (name, d) in o.notes.decisions.iter_mut() {
+        if *name == "turbulence" {
+            *d = Decision {
+                applied: true,
+                reason,
+                criterion: Some(Criterion {
+                    name: "pad_reynolds_number",
+                    value: re,
+                    threshold: TURBULENT_REYNOLDS,
+                }),
+                model: Some("missana"),
+                mode: d.mode,
+            };
+            break;
+        }
     }
     Ok(solved)
 }

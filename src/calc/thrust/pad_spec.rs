@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::film::Mesh;
-use super::operating::{Conditions, Effects, Given, Operating, Pad};
+use super::operating::{Conditions, Effects, Given, Operating, Pad, TurbulenceLaw};
 use super::performance::Method;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{ratio_within, Celsius, Positive};
@@ -71,6 +71,26 @@ pub struct PadEffects {
     /// gives both power losses.
     #[serde(default)]
     pub turbulence: Mode,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default; the
+    /// linearised turbulent Reynolds equation above), or `missana`: Khonsari & Booser §7.11's
+    /// empirical rule — the power loss E_p = f (ρ U²/2) U B L (Eq. 7.17) with the turbulent
+    /// friction factor f = 0.026/Re^0.25 (Eq. 7.20, Missana et al.'s test, parasitic losses
+    /// included) at the laminar pad-average Re = ρ U h_mean/μ, and the film, flows and
+    /// temperatures of the laminar pad at the viscosity multiplied by that loss over the
+    /// laminar one (the texts' "effective" viscosity; a rough approximation, they say).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
+}
+
+/// The turbulent film's law.
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PadTurbulenceModel {
+    /// Ng–Pan's linearised turbulent Reynolds equation (Eq. 6.26–6.31).
+    #[default]
+    NgPan,
+    /// The empirical f = 0.026/Re^0.25 (Eq. 7.20) and the effective-viscosity rule (§7.11).
+    Missana,
 }
 
 impl From<PadEffects> for Effects {
@@ -78,6 +98,10 @@ impl From<PadEffects> for Effects {
         Effects {
             thermal: e.thermal,
             turbulence: e.turbulence,
+            turbulence_law: match e.turbulence_model {
+                PadTurbulenceModel::NgPan => TurbulenceLaw::NgPan,
+                PadTurbulenceModel::Missana => TurbulenceLaw::Missana,
+            },
         }
     }
 }
@@ -327,6 +351,7 @@ pub fn conditions(
             inlet_temperature_c: inlet_temperature_c.map_or(40.0, Celsius::get),
             given,
             effects: effects.into(),
+            viscosity_factor: 1.0,
         }),
         Err(mut e) => {
             errors.append(&mut e);
