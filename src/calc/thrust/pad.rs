@@ -568,6 +568,9 @@ fn missana(
     o.power_loss_w = power;
     o.friction_force_n = power / u;
     o.temperature_rise_k = power / (heat * o.inlet_flow_m3_s);
+    // The Reynolds numbers are the real oil's (the criterion's), not the effective viscosity's.
+    o.reynolds_number = re;
+    o.outlet_reynolds_number = op.outlet_reynolds_number;
     let reason = format!("turbulent film by Khonsari & Booser §7.11's empirical rule: friction factor f = 0.026/Re^0.25 = {f:.4e} (Eq. 7.20) at the laminar pad-average Re = ρ U h_mean/μ = {re:.4e}, power loss f (ρ U²/2) U B L = {empirical:.4e} W (Eq. 7.17) against the laminar {:.4e} W, the larger carried; film and flows at the viscosity × {factor:.4} (the texts' effective viscosity)", op.power_loss_w);
     for (name, d) in o.notes.decisions.iter_mut() {
         if *name == "turbulence" {
