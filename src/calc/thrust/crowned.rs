@@ -332,17 +332,20 @@ fn bracketed(
     Ok((eq, operating))
 }
 
+/// (ln k, g(ln k)): a point of the load balance.
+type Point = (f64, f64);
+
 /// The load balance's bracket when the growing bracket steps past the fold at `past` (ln k):
 /// bisection in ln k between the last crown ratio with an equilibrium, `good` (g < 0 there),
 /// and `past`, until g ≥ 0 at one with an equilibrium (the bracket) or the fold is located to
 /// [`FOLD_TOLERANCE`] (the refusal: the load is too heavy for the crown about this pivot).
 fn fold_bracket(
-    good: (f64, f64),
+    good: Point,
     past: f64,
     crown: f64,
     balance: &impl Fn(f64) -> Result<f64, CalcError>,
     at: &impl Fn(f64) -> Result<(Equilibrium, Operating), CalcError>,
-) -> Result<((f64, f64), (f64, f64)), CalcError> {
+) -> Result<(Point, Point), CalcError> {
     let (mut good, mut past) = (good, past);
     while past - good.0 > FOLD_TOLERANCE {
         let mid = 0.5 * (good.0 + past);
