@@ -690,7 +690,8 @@ fn the_empirical_turbulent_friction_of_section_7_11_matches_its_formula() {
             "pad": {"breadth_m": 0.3, "length_m": 0.3},
             "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": 80.0,
             "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
-            "load_n": 3e4, "effects": {"turbulence": mode, "thermal": "off", "turbulence_model": model},
+            "load_n": 3e4, "effects": {"turbulence": mode, "thermal": "off"},
+            "turbulence_model": model,
         })
     };
     let laminar = run(FIXED, &pad("off", "missana")).unwrap();

@@ -8,7 +8,7 @@ use utoipa::ToSchema;
 use super::fixed_pad::PadProfileSpec;
 use super::operating::Given;
 use super::pad::{self, RatioChoice, SolvedPad};
-use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult};
+use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult, PadTurbulenceModel};
 use super::pivot::Pivot;
 use super::profile::Profile;
 use super::sector::{allowable_film_m, PadType, Sectors};
@@ -93,6 +93,10 @@ pub struct BearingInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
 }
 
 /// What the pads are.
@@ -266,6 +270,7 @@ impl Validate for BearingInput {
                 self.inlet_temperature_c,
                 Given::Load(load / count as f64),
                 self.effects,
+                self.turbulence_model,
                 &mut errors,
             ),
             Err(_) => {

@@ -8,7 +8,9 @@ use utoipa::ToSchema;
 
 use super::operating::Conditions;
 use super::pad::{self, RatioChoice};
-use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
+use super::pad_spec::{
+    self, check_finite, conditions, given, PadEffects, PadResult, PadSpec, PadTurbulenceModel,
+};
 use super::performance::{Method, RATIOS};
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
@@ -244,6 +246,10 @@ pub struct FixedPadInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
     /// Include the mid-plane pressure profile (numerical fidelities; default false).
     #[serde(default)]
     #[schema(example = false)]
@@ -278,6 +284,7 @@ impl Validate for FixedPadInput {
             self.inlet_temperature_c,
             given,
             self.effects,
+            self.turbulence_model,
             &mut errors,
         );
         match conditions {

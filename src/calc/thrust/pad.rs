@@ -352,11 +352,21 @@ fn with_machined(
     };
     let mut unknown = unknown_at(c.viscosity_pa_s(c.inlet_temperature_c))?;
     let mut failure = None;
-    let name = match machined {
-        Machined::Depth { .. } => "thrust_depth_temperature_fixed_point",
-        Machined::Crown { .. } => "thrust_crown_temperature_fixed_point",
+    let driver = match machined {
+        Machined::Depth { .. } => Driver::new(
+            "thrust_depth_temperature_fixed_point",
+            IterationUnit::Evaluations,
+            50,
+            budget,
+        ),
+        Machined::Crown { .. } => Driver::new(
+            "thrust_crown_temperature_fixed_point",
+            IterationUnit::Evaluations,
+            50,
+            budget,
+        ),
     };
-    let run = Driver::new(name, IterationUnit::Evaluations, 50, budget).run(|_| {
+    let run = driver.run(|_| {
         let solved = match at_ratio(machined.at(unknown).0, flow, None, method, c, budget) {
             Ok(s) => s,
             Err(e) => {

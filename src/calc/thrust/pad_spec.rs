@@ -71,18 +71,15 @@ pub struct PadEffects {
     /// gives both power losses.
     #[serde(default)]
     pub turbulence: Mode,
-    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default; the
-    /// linearised turbulent Reynolds equation above), or `missana`: Khonsari & Booser §7.11's
-    /// empirical rule — the power loss E_p = f (ρ U²/2) U B L (Eq. 7.17) with the turbulent
-    /// friction factor f = 0.026/Re^0.25 (Eq. 7.20, Missana et al.'s test, parasitic losses
-    /// included) at the laminar pad-average Re = ρ U h_mean/μ, and the film, flows and
-    /// temperatures of the laminar pad at the viscosity multiplied by that loss over the
-    /// laminar one (the texts' "effective" viscosity; a rough approximation, they say).
-    #[serde(default)]
-    pub turbulence_model: PadTurbulenceModel,
 }
 
-/// The turbulent film's law.
+/// The turbulent film's law where the turbulence effect applies: `ng_pan` (default; the
+/// linearised turbulent Reynolds equation of the `turbulence` effect), or `missana`: Khonsari &
+/// Booser §7.11's empirical rule — the power loss E_p = f (ρ U²/2) U B L (Eq. 7.17) with the
+/// turbulent friction factor f = 0.026/Re^0.25 (Eq. 7.20, Missana et al.'s test, parasitic
+/// losses included) at the laminar pad-average Re = ρ U h_mean/μ, and the film, flows and
+/// temperatures of the laminar pad at the viscosity multiplied by that loss over the laminar
+/// one (the texts' "effective" viscosity; a rough approximation, they say).
 #[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, ToSchema)]
 #[serde(rename_all = "snake_case")]
 pub enum PadTurbulenceModel {
@@ -93,12 +90,13 @@ pub enum PadTurbulenceModel {
     Missana,
 }
 
-impl From<PadEffects> for Effects {
-    fn from(e: PadEffects) -> Effects {
+impl PadEffects {
+    /// The effects, with the turbulent film's law `model`.
+    fn with_law(self, model: PadTurbulenceModel) -> Effects {
         Effects {
-            thermal: e.thermal,
-            turbulence: e.turbulence,
-            turbulence_law: match e.turbulence_model {
+            thermal: self.thermal,
+            turbulence: self.turbulence,
+            turbulence_law: match model {
                 PadTurbulenceModel::NgPan => TurbulenceLaw::NgPan,
                 PadTurbulenceModel::Missana => TurbulenceLaw::Missana,
             },
@@ -335,6 +333,7 @@ pub fn conditions(
     inlet_temperature_c: Option<Celsius>,
     given: Given,
     effects: PadEffects,
+    turbulence_model: PadTurbulenceModel,
     errors: &mut Vec<FieldError>,
 ) -> Option<Conditions> {
     if speed.get() > 500.0 {
@@ -350,7 +349,7 @@ pub fn conditions(
             lubricant,
             inlet_temperature_c: inlet_temperature_c.map_or(40.0, Celsius::get),
             given,
-            effects: effects.into(),
+            effects: effects.with_law(turbulence_model),
             viscosity_factor: 1.0,
         }),
         Err(mut e) => {

@@ -9,7 +9,9 @@ use utoipa::ToSchema;
 use super::fixed_pad::OptimumKeyword;
 use super::operating::Conditions;
 use super::pad;
-use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
+use super::pad_spec::{
+    self, check_finite, conditions, given, PadEffects, PadResult, PadSpec, PadTurbulenceModel,
+};
 use super::performance::Method;
 use super::pivot::Pivot;
 use super::profile::Profile;
@@ -79,6 +81,10 @@ pub struct TiltingPadInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
     /// Include the mid-plane pressure profile (numerical fidelities; default false).
     #[serde(default)]
     #[schema(example = false)]
@@ -122,6 +128,7 @@ impl Validate for TiltingPadInput {
             self.inlet_temperature_c,
             given,
             self.effects,
+            self.turbulence_model,
             &mut errors,
         );
         match conditions {
