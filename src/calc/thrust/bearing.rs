@@ -269,8 +269,7 @@ impl Validate for BearingInput {
                 self.lubricant,
                 self.inlet_temperature_c,
                 Given::Load(load / count as f64),
-                self.effects,
-                self.turbulence_model,
+                self.effects.with_law(self.turbulence_model),
                 &mut errors,
             ),
             Err(_) => {

@@ -92,7 +92,7 @@ pub enum PadTurbulenceModel {
 
 impl PadEffects {
     /// The effects, with the turbulent film's law `model`.
-    fn with_law(self, model: PadTurbulenceModel) -> Effects {
+    pub fn with_law(self, model: PadTurbulenceModel) -> Effects {
         Effects {
             thermal: self.thermal,
             turbulence: self.turbulence,
@@ -332,8 +332,7 @@ pub fn conditions(
     lubricant: LubricantSpec,
     inlet_temperature_c: Option<Celsius>,
     given: Given,
-    effects: PadEffects,
-    turbulence_model: PadTurbulenceModel,
+    effects: Effects,
     errors: &mut Vec<FieldError>,
 ) -> Option<Conditions> {
     if speed.get() > 500.0 {
@@ -349,7 +348,7 @@ pub fn conditions(
             lubricant,
             inlet_temperature_c: inlet_temperature_c.map_or(40.0, Celsius::get),
             given,
-            effects: effects.with_law(turbulence_model),
+            effects,
             viscosity_factor: 1.0,
         }),
         Err(mut e) => {

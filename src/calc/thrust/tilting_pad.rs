@@ -127,8 +127,7 @@ impl Validate for TiltingPadInput {
             self.lubricant,
             self.inlet_temperature_c,
             given,
-            self.effects,
-            self.turbulence_model,
+            self.effects.with_law(self.turbulence_model),
             &mut errors,
         );
         match conditions {
