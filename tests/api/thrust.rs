@@ -733,3 +733,25 @@ fn the_empirical_turbulent_friction_of_section_7_11_matches_its_formula() {
     // parasitic losses, §7.11); h2 158, 266 and 357 µm.
     assert!(ng > number(&laminar, "/result/power_loss_w"));
 }
+
+/// The bearing reports how far the texts' mapping of its sector pads to the rectangle at the
+/// mean radius lies from the sector solved in polar coordinates: Ex 7.2's pads (L/R_m = 0.75)
+/// carry about half a percent less as sectors; the infinitely long pad reports nothing.
+#[test]
+fn the_bearing_reports_its_sector_mapping_deviation() {
+    let bearing = |fidelity: &str| {
+        json!({
+            "inner_radius_m": 0.073, "outer_radius_m": 0.16, "pad_count": 7,
+            "pad_angle_deg": 43.7, "pads": {"kind": "tilting", "pivot_position_fraction": 0.6},
+            "speed_rpm": 3600, "load_n": 111200, "lubricant": {"iso_vg": 32},
+            "inlet_temperature_c": 49, "fidelity": fidelity,
+        })
+    };
+    for fidelity in ["fast", "standard"] {
+        let v = run(BEARING, &bearing(fidelity)).unwrap();
+        let d = number(&v, "/result/sector_load_deviation");
+        assert!((-0.01..-0.002).contains(&d), "{fidelity}: {d}");
+    }
+    let v = run(BEARING, &bearing("closed_form")).unwrap();
+    assert!(v["result"].get("sector_load_deviation").is_none());
+}

@@ -5,10 +5,12 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::film;
 use super::fixed_pad::PadProfileSpec;
 use super::operating::Given;
 use super::pad::{self, RatioChoice, SolvedPad};
 use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult, PadTurbulenceModel};
+use super::performance::Method;
 use super::pivot::Pivot;
 use super::profile::Profile;
 use super::sector::{allowable_film_m, PadType, Sectors};
@@ -122,7 +124,7 @@ pub struct Case {
     pub sectors: Sectors,
     pub pads: CrownedPads,
     pub conditions: super::operating::Conditions,
-    pub method: super::performance::Method,
+    pub method: Method,
     pub allowable_film_m: f64,
     pub max_temperature_limit_c: f64,
 }
@@ -356,6 +358,12 @@ pub struct BearingOutput {
     pub effective_temperature_c: f64,
     /// Estimated maximum film temperature, °C.
     pub max_temperature_c: f64,
+    /// How far the texts' mapping of a sector pad to the rectangle at the mean radius is from
+    /// the sector solved in polar coordinates (r, θ): W̄ of the sector over the rectangle's at
+    /// this film ratio, minus 1 (laminar and isoviscous, on the fidelity's mesh; second order in
+    /// (R2 − R1)/R_m). Numerical fidelities only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sector_load_deviation: Option<f64>,
     /// The design checks (Khonsari & Booser §7.2–7.9).
     pub checks: Vec<Check>,
     /// Whether every check passed.
@@ -392,6 +400,7 @@ impl Calculation for Bearing {
         ctx.report(solved.report(case.method, &budget));
         let result = PadResult::new(&solved.operating, solved.ratio, None);
         check_finite(&result)?;
+        let deviation = sector_deviation(&case, &solved, &budget)?;
         let pad_type = match case.pads.pads {
             Pads::Fixed {
                 profile: Profile::Step { .. },
@@ -400,8 +409,39 @@ impl Calculation for Bearing {
             Pads::Fixed { .. } => PadType::Taper,
             Pads::Tilting(_) => PadType::TiltPad,
         };
-        Ok(output(&case, &solved, pad_type, result))
+        let mut out = output(&case, &solved, pad_type, result);
+        out.sector_load_deviation = deviation;
+        Ok(out)
     }
+}
+
+/// The sector's W̄ solved in polar coordinates over the rectangle's, minus 1, both on the
+/// fidelity's mesh across the whole width ([`film::solve_sector`]); none for `closed_form`.
+fn sector_deviation(
+    case: &Case,
+    solved: &SolvedPad,
+    budget: &crate::calc::Budget,
+) -> Result<Option<f64>, CalcError> {
+    let Method::Numerical { mesh, .. } = case.method else {
+        return Ok(None);
+    };
+    let h2 = solved.operating.outlet_film_m;
+    let profile = match (case.pads.pads, case.pads.crown_m) {
+        (_, Some(crown)) => Profile::Crowned {
+            ratio: solved.ratio,
+            crown: crown / h2,
+        },
+        (Pads::Fixed { profile, .. }, None) => profile.with_ratio(solved.ratio),
+        (Pads::Tilting(_), None) => Profile::PlaneInclined {
+            ratio: solved.ratio,
+        },
+    };
+    let s = &case.sectors;
+    let curvature = (s.outer_radius_m - s.inner_radius_m) / s.mean_radius_m();
+    let l_over_b = s.pad().l_over_b();
+    let (sector, _, _) = film::solve_sector(profile, l_over_b, curvature, mesh, budget)?;
+    let (rectangle, _, _) = film::solve_sector(profile, l_over_b, 0.0, mesh, budget)?;
+    Ok(Some(sector / rectangle - 1.0))
 }
 
 /// A pad's refusal points at the bearing's fields: the load is the bearing's.
@@ -497,6 +537,7 @@ fn output(case: &Case, solved: &SolvedPad, pad_type: PadType, result: PadResult)
         temperature_rise_k: op.temperature_rise_k,
         effective_temperature_c: op.effective_temperature_c,
         max_temperature_c: op.max_temperature_c,
+        sector_load_deviation: None,
         checks_passed: checks.iter().all(|c| c.passed),
         checks,
         pad: result,
