@@ -129,7 +129,7 @@ pub const TAGS: &[(&str, &str)] = &[
     ("thrust-bearings", "Hydrodynamic thrust bearings: fixed and tilting pads, and a whole pad bearing with its design checks."),
     ("contacts", "Concentrated contacts: Hertz, elastohydrodynamic film formulas and the numerical EHL solve, flash temperature."),
     ("rolling-bearings", "Rolling bearings: kinematics, ISO 281 life, load distribution, ISO 76 static capacity, friction, grease life, and the analysis that composes them."),
-    ("squeeze-films", "Squeeze films: parallel plates and the squeezed journal."),
+    ("squeeze-films", "Squeeze films: parallel plates, the squeezed journal and the piston ring."),
     ("gas-bearings", "Gas-lubricated bearings: self-acting journal and slider, aerostatic pad, foil journal."),
     ("hydrostatic-bearings", "Externally pressurised (hydrostatic) pads and their design for minimum power or oil lift."),
     ("composite-bearings", "Harnoy's composite bearing (a rolling bearing and a fluid-film sleeve in series): speed split, start-up, orbit."),

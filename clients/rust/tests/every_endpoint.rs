@@ -59,6 +59,7 @@ async fn calculate(client: &Client, path: &str, example: &str) -> Value {
         "/v1/rolling-bearings/load-distribution" => typed!(rolling_bearings_load_distribution),
         "/v1/rolling-bearings/static-capacity" => typed!(rolling_bearings_static_capacity),
         "/v1/squeeze-films/journal" => typed!(squeeze_films_journal),
+        "/v1/squeeze-films/piston-ring" => typed!(squeeze_films_piston_ring),
         "/v1/squeeze-films/plates" => typed!(squeeze_films_plates),
         "/v1/thrust-bearings/bearing" => typed!(thrust_bearings_bearing),
         "/v1/thrust-bearings/fixed-pad" => typed!(thrust_bearings_fixed_pad),

@@ -319,7 +319,7 @@ fn finite_within(errors: &mut Vec<FieldError>, pointer: &str, v: f64, lo: f64, h
 }
 
 /// Angles (degrees) ascending within [0, period): radians.
-fn ascending_angles(
+pub(crate) fn ascending_angles(
     errors: &mut Vec<FieldError>,
     pointer: &str,
     angles: &[f64],

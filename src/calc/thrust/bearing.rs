@@ -6,7 +6,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::film;
-use super::fixed_pad::PadProfileSpec;
+use super::fixed_pad::{flat_land_warning, PadProfileSpec};
 use super::operating::Given;
 use super::pad::{self, RatioChoice, SolvedPad};
 use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult, PadTurbulenceModel};
@@ -397,6 +397,11 @@ impl Calculation for Bearing {
         }
         .map_err(per_pad_pointers)?;
         ctx.record(&solved.operating.notes);
+        if let Pads::Fixed { profile, .. } = case.pads.pads {
+            if let Some(message) = flat_land_warning(profile) {
+                ctx.warn("flat_land_empirical", message);
+            }
+        }
         ctx.report(solved.report(case.method, &budget));
         let result = PadResult::new(&solved.operating, solved.ratio, None);
         check_finite(&result)?;
@@ -416,7 +421,8 @@ impl Calculation for Bearing {
 }
 
 /// The sector's W̄ solved in polar coordinates over the rectangle's, minus 1, both on the
-/// fidelity's mesh across the whole width ([`film::solve_sector`]); none for `closed_form`.
+/// fidelity's mesh across the whole width ([`film::solve_sector`]); none for `closed_form` and
+/// for flat lands.
 fn sector_deviation(
     case: &Case,
     solved: &SolvedPad,
@@ -431,6 +437,14 @@ fn sector_deviation(
             ratio: solved.ratio,
             crown: crown / h2,
         },
+        // The texts' empirical rule, with no film to solve.
+        (
+            Pads::Fixed {
+                profile: Profile::FlatLand { .. },
+                ..
+            },
+            None,
+        ) => return Ok(None),
         (Pads::Fixed { profile, .. }, None) => profile.with_ratio(solved.ratio),
         (Pads::Tilting(_), None) => Profile::PlaneInclined {
             ratio: solved.ratio,

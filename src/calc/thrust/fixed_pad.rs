@@ -33,6 +33,10 @@ pub enum PadProfileKind {
     TaperedLand,
     /// h = h2 + (h1 − h2)(1 − x/B)², tangent to the runner at the trailing edge.
     Parabolic,
+    /// Parallel faces: the texts' empirical rule (Khonsari & Booser Eq. 7.14), K_h =
+    /// `flat_land_multiplier` × K_h of the 1.2 film-ratio plane pad, K_f = 1, K_q = 0.5; no
+    /// film ratio.
+    FlatLand,
 }
 
 /// The film ratio: a number, or `"optimum"`.
@@ -92,19 +96,36 @@ pub struct PadProfileSpec {
     /// pad; typical 0.2).
     #[schema(minimum = 0.0, maximum = 0.9, example = 0.2)]
     pub land_fraction: Option<f64>,
+    /// `flat_land`: the multiplier on the 1.2 film-ratio plane pad's K_h (0.4 … 0.8; default
+    /// 0.6, Ex 7.4): about 0.4 for small flat lands at low speed and load, 0.8 for a long
+    /// breadth, high speed and load, where the thermal wedge is stronger (§7.8).
+    #[schema(minimum = 0.4, maximum = 0.8, example = 0.6)]
+    pub flat_land_multiplier: Option<f64>,
 }
+
+/// The flat land's default multiplier (Khonsari & Booser Ex 7.4).
+const FLAT_LAND_MULTIPLIER: f64 = 0.6;
 
 impl PadProfileSpec {
     /// The shape (with the ratio 2 standing in until a search or the film fixes it) and how its
     /// film ratio is chosen. A `crowned` pad is plane with its film ratio given, from 1.
     pub fn parse(self, crowned: bool, errors: &mut Vec<FieldError>) -> (Profile, RatioChoice) {
-        let lowest = if crowned { 1.0 } else { RATIOS.0 };
         if crowned && self.kind != PadProfileKind::PlaneInclined {
             errors.push(FieldError::new(
                 "/profile/kind",
                 "a crown (crown_m) is offered on a plane_inclined pad: h/h2 = a − (a − 1)x/B − 4(δ/h2)(x/B)(1 − x/B)",
             ));
         }
+        if self.kind == PadProfileKind::FlatLand {
+            return (self.flat_land(errors), RatioChoice::Given);
+        }
+        if self.flat_land_multiplier.is_some() {
+            errors.push(FieldError::new(
+                "/profile/flat_land_multiplier",
+                "applies only to a flat_land profile",
+            ));
+        }
+        let lowest = if crowned { 1.0 } else { RATIOS.0 };
         let (ratio, choice) = match (self.film_ratio, self.depth_m) {
             (Some(PadFilmRatio::Value(r)), None) if (lowest..=RATIOS.1).contains(&r) => {
                 (r, RatioChoice::Given)
@@ -200,8 +221,48 @@ impl PadProfileSpec {
                 land_fraction: land,
             },
             PadProfileKind::Parabolic => Profile::Parabolic { ratio },
+            PadProfileKind::FlatLand => unreachable!("parsed above"),
         };
         (profile, choice)
+    }
+
+    /// A flat land: parallel faces, only its multiplier.
+    fn flat_land(self, errors: &mut Vec<FieldError>) -> Profile {
+        let foreign = [
+            ("film_ratio", self.film_ratio.is_some()),
+            ("depth_m", self.depth_m.is_some()),
+            (
+                "step_position_fraction",
+                self.step_position_fraction.is_some(),
+            ),
+            ("land_fraction", self.land_fraction.is_some()),
+        ];
+        for (name, given) in foreign {
+            if given {
+                errors.push(FieldError::new(
+                    format!("/profile/{name}"),
+                    "a flat_land profile has parallel faces: give only flat_land_multiplier",
+                ));
+            }
+        }
+        let multiplier = self.flat_land_multiplier.unwrap_or(FLAT_LAND_MULTIPLIER);
+        if !(0.4..=0.8).contains(&multiplier) {
+            errors.push(FieldError::new(
+                "/profile/flat_land_multiplier",
+                format!("must be within [0.4, 0.8] (the texts' range), got {multiplier}"),
+            ));
+        }
+        Profile::FlatLand { multiplier }
+    }
+}
+
+/// The warning a flat land's result carries: its numbers are the texts' empirical rule.
+pub fn flat_land_warning(profile: Profile) -> Option<String> {
+    match profile {
+        Profile::FlatLand { multiplier } => Some(format!(
+            "a flat land carries load only by a thermal wedge the isoviscous film does not model: its performance is the texts' empirical rule (Khonsari & Booser Eq. 7.14), K_h = {multiplier} × K_h of the 1.2 film-ratio plane pad, K_f = 1, K_q = 0.5 — an estimate, not a film solution"
+        )),
+        _ => None,
     }
 }
 
@@ -331,6 +392,9 @@ impl Calculation for FixedPad {
             &budget,
         )?;
         ctx.record(&solved.operating.notes);
+        if let Some(message) = flat_land_warning(case.profile) {
+            ctx.warn("flat_land_empirical", message);
+        }
         ctx.report(solved.report(case.method, &budget));
         let mid_plane = solved
             .evaluated
@@ -340,5 +404,58 @@ impl Calculation for FixedPad {
         let pad = PadResult::new(&solved.operating, solved.ratio, mid_plane);
         check_finite(&pad)?;
         Ok(FixedPadOutput { pad })
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::calc::testing::{invalid_pointers, ok, result_field, warning_codes};
+    use serde_json::json;
+
+    /// Ex 7.4's pad (B = 1.06 in, L = 0.625 in, U = 224 in/s, μ = 1.3e-6 reyn) at h2 = 5.6 μm.
+    fn pad(profile: serde_json::Value) -> serde_json::Value {
+        json!({"pad": {"breadth_m": 0.026924, "length_m": 0.015875}, "profile": profile,
+               "sliding_speed_m_s": 5.6896, "lubricant": {"viscosity_pa_s": 8.963e-3},
+               "outlet_film_m": 5.6e-6})
+    }
+
+    #[test]
+    fn a_flat_land_is_the_plane_pads_k_h_times_its_multiplier_with_k_f_1_and_k_q_half() {
+        let plane = ok::<FixedPad>(&pad(json!({"kind": "plane_inclined", "film_ratio": 1.2})));
+        for m in [0.4, 0.6, 0.8] {
+            let flat = ok::<FixedPad>(&pad(
+                json!({"kind": "flat_land", "flat_land_multiplier": m}),
+            ));
+            let k =
+                |v: &serde_json::Value, f: &str| v["result"]["coefficients"][f].as_f64().unwrap();
+            assert!((k(&flat, "k_h") / (m * k(&plane, "k_h")) - 1.0).abs() < 1e-12);
+            assert_eq!(k(&flat, "k_f"), 1.0);
+            assert_eq!(k(&flat, "k_q"), 0.5);
+            assert!(
+                (result_field(&flat, "load_n") / (m * m * result_field(&plane, "load_n")) - 1.0)
+                    .abs()
+                    < 1e-12
+            );
+            // Parallel faces: h1 = h2.
+            assert_eq!(result_field(&flat, "film_ratio"), 1.0);
+            assert!(warning_codes(&flat).contains(&"flat_land_empirical".to_owned()));
+        }
+        assert!(!warning_codes(&plane).contains(&"flat_land_empirical".to_owned()));
+    }
+
+    #[test]
+    fn a_flat_land_takes_no_film_ratio_and_its_multiplier_stays_in_the_texts_range() {
+        let got =
+            invalid_pointers::<FixedPad>(&pad(json!({"kind": "flat_land", "film_ratio": 1.2})));
+        assert_eq!(got, ["/profile/film_ratio"]);
+        let got = invalid_pointers::<FixedPad>(&pad(
+            json!({"kind": "flat_land", "flat_land_multiplier": 0.9}),
+        ));
+        assert_eq!(got, ["/profile/flat_land_multiplier"]);
+        let got = invalid_pointers::<FixedPad>(&pad(
+            json!({"kind": "step", "film_ratio": 1.7, "step_position_fraction": 0.55, "flat_land_multiplier": 0.6}),
+        ));
+        assert_eq!(got, ["/profile/flat_land_multiplier"]);
     }
 }

@@ -5,7 +5,7 @@
 pub use super::coefficients::Performance;
 use super::film::{self, Mesh};
 use super::long_pad;
-use super::profile::Profile;
+use super::profile::{Profile, FLAT_LAND_EQUIVALENT_RATIO};
 use crate::calc::turbulence::Flow;
 use crate::calc::Budget;
 use crate::fidelity::{Level, SolverReport};
@@ -69,6 +69,10 @@ pub struct Evaluated {
 }
 
 /// The performance of `profile` in a `flow` on a pad of aspect L/B = `l_over_b` by `method`.
+/// A flat land's is the texts' empirical rule on the equivalent plane pad's (Eq. 7.14; see
+/// [`Profile::FlatLand`]): W̄ and the pressures scale with the multiplier squared (h2 ∝ K_h
+/// at a given load), K_f = 1 (Couette shear over parallel faces), K_q = 0.5 in and out (the
+/// Couette flow; no side leakage).
 pub fn evaluate(
     profile: Profile,
     flow: Flow,
@@ -76,6 +80,27 @@ pub fn evaluate(
     method: Method,
     budget: &Budget,
 ) -> Result<Evaluated, SolveError> {
+    if let Profile::FlatLand { multiplier } = profile {
+        let plane = Profile::PlaneInclined {
+            ratio: FLAT_LAND_EQUIVALENT_RATIO,
+        };
+        let mut e = evaluate(plane, flow, l_over_b, method, budget)?;
+        let scale = multiplier * multiplier;
+        let p = &mut e.performance;
+        p.load *= scale;
+        p.max_pressure *= scale;
+        p.friction = 1.0;
+        p.inlet_flow = 0.5;
+        p.side_flow = 0.0;
+        p.outlet_flow = 0.5;
+        if let Some(mid) = e.mid_plane.as_mut() {
+            for (_, pressure) in mid.iter_mut() {
+                *pressure *= scale;
+            }
+        }
+        e.report = e.report.named("flat_land_empirical_on_plane_pad");
+        return Ok(e);
+    }
     match method {
         Method::LongPad => Ok(Evaluated {
             performance: long_pad::performance(profile, flow),

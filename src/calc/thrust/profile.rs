@@ -23,7 +23,16 @@ pub enum Profile {
     /// proud of the line through its edges, c = δ/h2. The film converges then diverges where
     /// the crown outweighs the tilt.
     Crowned { ratio: f64, crown: f64 },
+    /// A flat land: parallel faces (h̄ = 1), which carry load in the isoviscous model only by
+    /// the thermal wedge the texts leave unmodelled. Its performance is the texts' empirical
+    /// rule (Khonsari & Booser §7.8, Eq. 7.14, Ex 7.4): K_h = `multiplier` × K_h of the plane
+    /// pad of film ratio [`FLAT_LAND_EQUIVALENT_RATIO`] on the same L/B (0.4 for small, slow,
+    /// lightly loaded lands to 0.8 for long, fast, hot ones), K_f = 1, K_q = 0.5.
+    FlatLand { multiplier: f64 },
 }
+
+/// The film ratio of the plane pad whose K_h the flat-land rule scales (Eq. 7.14).
+pub const FLAT_LAND_EQUIVALENT_RATIO: f64 = 1.2;
 
 impl Profile {
     /// h1/h2.
@@ -34,6 +43,7 @@ impl Profile {
             | Profile::TaperedLand { ratio, .. }
             | Profile::Parabolic { ratio }
             | Profile::Crowned { ratio, .. } => ratio,
+            Profile::FlatLand { .. } => 1.0,
         }
     }
 
@@ -52,6 +62,8 @@ impl Profile {
             },
             Profile::Parabolic { .. } => Profile::Parabolic { ratio },
             Profile::Crowned { crown, .. } => Profile::Crowned { ratio, crown },
+            // Parallel: the empirical rule fixes the equivalent wedge.
+            Profile::FlatLand { .. } => self,
         }
     }
 
@@ -63,6 +75,7 @@ impl Profile {
             Profile::TaperedLand { .. } => "tapered_land",
             Profile::Parabolic { .. } => "parabolic",
             Profile::Crowned { .. } => "crowned",
+            Profile::FlatLand { .. } => "flat_land",
         }
     }
 
@@ -95,6 +108,7 @@ impl Profile {
             Profile::Crowned { ratio, crown } => {
                 ratio - (ratio - 1.0) * x - 4.0 * crown * x * (1.0 - x)
             }
+            Profile::FlatLand { .. } => 1.0,
         }
     }
 
@@ -117,6 +131,7 @@ impl Profile {
             }
             Profile::Parabolic { ratio } => -2.0 * (ratio - 1.0) * (1.0 - x),
             Profile::Crowned { ratio, crown } => 1.0 - ratio - 4.0 * crown * (1.0 - 2.0 * x),
+            Profile::FlatLand { .. } => 0.0,
         }
     }
 

@@ -98,7 +98,7 @@ impl Numbering {
 
 impl Stencil {
     /// Node k's west neighbour: across the seam of a periodic film, column nx − 1.
-    fn west(&self, k: usize) -> usize {
+    pub(super) fn west(&self, k: usize) -> usize {
         if self.periodic && k.is_multiple_of(self.nx + 1) {
             k + self.nx - 1
         } else {
@@ -296,8 +296,10 @@ impl Stencil {
         let mut r = vec![0.0; p.len()];
         let w = self.nx + 1;
         let rows = self.rows - usize::from(self.far_edge);
+        // A periodic film's column 0 holds unknowns too (column nx mirrors it).
+        let first = usize::from(!self.periodic);
         for j in 1..rows {
-            for i in 1..self.nx {
+            for i in first..self.nx {
                 let k = j * w + i;
                 if !self.held[k] {
                     r[k] = self.ap[k] * p[k] - pull(self, p, k);

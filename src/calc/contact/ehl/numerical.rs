@@ -21,7 +21,7 @@ use super::formulas::{
     Groups, MoesAsymptotes, Regime, HARD_FIT_ELLIPTICITY,
 };
 use super::line::LineProblem;
-use super::point::{HertzEllipse, PointProblem};
+use super::point::{self, HertzEllipse, PointProblem};
 use super::solve::{solve_line, solve_point, Cells, PointGrids};
 use super::traction::{self, ShearLaw, TractionLaw};
 use crate::calc::contact::hertz::{
@@ -388,6 +388,43 @@ fn point_grids(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Optio
             }
         },
     }
+}
+
+/// A point contact solved on an explicit `cells`² grid (a power of two, at least 64), which
+/// may be finer than the wire's 1024²: the accuracy bench's reference (2048² takes tens of
+/// seconds and about 1 GB, beyond a request's deadline and memory). `body` is a request the
+/// wire accepts; its fidelity is replaced. Returns the response's `result`, `solver` and
+/// `warnings` as the wire would, or the refusal.
+pub fn point_reference(
+    body: &[u8],
+    cells: usize,
+    deadline: std::time::Instant,
+) -> Result<serde_json::Value, CalcError> {
+    let invalid =
+        |why: String| CalcError::Internal(format!("not a point-contact reference: {why}"));
+    let input: NumericalEhlInput =
+        serde_json::from_slice(body).map_err(|e| invalid(e.to_string()))?;
+    let mut case = input.validate().map_err(|e| invalid(format!("{e:?}")))?;
+    if case.length_m.is_some() || !cells.is_power_of_two() || cells < point::MIN_CELLS {
+        return Err(invalid(format!("{cells}² cells for a point contact")));
+    }
+    case.grids = Grids::Point(PointGrids {
+        level: Level::Standard,
+        cells,
+        finest: cells,
+        central_tolerance: POINT_CENTRAL_TOLERANCE[1],
+        min_tolerance: POINT_MIN_TOLERANCE[1],
+    });
+    let mut ctx = Context::new(
+        deadline,
+        std::sync::Arc::new(std::sync::atomic::AtomicBool::new(false)),
+    );
+    let result = Ehl::run(case, &mut ctx)?;
+    Ok(serde_json::json!({
+        "result": result,
+        "solver": ctx.report,
+        "warnings": ctx.warnings,
+    }))
 }
 
 /// Profiles along x (a point contact's along its centre line y = 0).

@@ -219,7 +219,6 @@ pub struct PointRun {
 /// The films of one solve on `cells`² cells: extrapolated, with their estimated errors.
 struct Films {
     cells: usize,
-    fine: PointSolution,
     central: f64,
     min: f64,
     min_y: f64,
@@ -255,9 +254,9 @@ fn film_error(films: &[f64], value: f64) -> f64 {
 }
 
 impl Films {
-    /// The films of the converged levels (coarsest first) on `cells`² cells, or the refusal
-    /// when the finest level does not resolve them (a film closes).
-    fn of(mut solved: Vec<PointSolution>, cells: usize) -> Result<Films, CalcError> {
+    /// The films of the converged levels `solved` (coarsest first) on `cells`² cells, or the
+    /// refusal when the finest level does not resolve them (a film closes).
+    fn of(solved: &[PointSolution], cells: usize) -> Result<Films, CalcError> {
         let central_films: Vec<f64> = solved.iter().map(PointSolution::central_film).collect();
         let mins: Vec<(f64, f64, f64)> = solved.iter().map(PointSolution::min_film).collect();
         let min_films: Vec<f64> = mins.iter().map(|m| m.0).collect();
@@ -276,17 +275,17 @@ impl Films {
         let extrapolated = richardson::extrapolate(m0, m1);
         let min_extrapolated = m0 > 0.0 && extrapolated > 0.0;
         let min = if min_extrapolated { extrapolated } else { m1 };
-        let fine = solved.pop().expect("the two finest levels");
-        let coarse = solved.pop().expect("the two finest levels");
+        let (coarse, fine) = (&solved[n - 2], &solved[n - 1]);
+        // The extrapolated value (4f₁ − f₀)/3 carries the levels' iteration errors so weighted.
         let cycles_left = (4.0 * fine.iteration_error + coarse.iteration_error) / 3.0;
+        let min_cycles_left = (4.0 * fine.min_iteration_error + coarse.min_iteration_error) / 3.0;
         let discretisation = film_error(&central_films, central);
         Ok(Films {
             cells,
             central_error: discretisation + cycles_left,
-            min_error: film_error(&min_films, min) + cycles_left,
+            min_error: film_error(&min_films, min) + min_cycles_left,
             discretisation,
             cycles_left,
-            fine,
             central,
             min,
             min_y,
@@ -302,8 +301,8 @@ impl Films {
 /// The point problem solved on `grids.cells` per direction with the coarser levels
 /// ([`solve_levels`]), the films extrapolated and their errors estimated ([`Films`]); while an
 /// estimate exceeds its tolerance (or a film closes) the solve steps up to a grid twice as
-/// fine, up to `grids.finest`, if the budget allows the step (about four times the last
-/// solve's time): the warnings `grid_stepped_up`, and `grid_limited` when the finest grid
+/// fine ([`PointProblem::step_up`]: only the new level is cycled), up to `grids.finest`, if the
+/// budget allows the step (about four times the last solve's time): the warnings `grid_stepped_up`, and `grid_limited` when the finest grid
 /// tried, or the deadline, leaves an estimate above its tolerance.
 pub fn solve_point(
     problem: &PointProblem,
@@ -320,7 +319,8 @@ pub fn solve_point(
     } else {
         grids.finest
     };
-    let mut films = Films::of(solved, cells);
+    let mut films = Films::of(&solved, cells);
+    let mut levels = solved;
     let mut last_time = started.elapsed();
     let first_errors = films.as_ref().ok().map(|f| (f.central_error, f.min_error));
     let mut cells = cells;
@@ -335,9 +335,10 @@ pub fn solve_point(
             break;
         }
         let step = Instant::now();
-        match problem.solve(next, grids.central_tolerance, budget) {
+        match problem.step_up(levels.clone(), grids.central_tolerance, budget) {
             Ok(solved) => {
-                films = Films::of(solved, next);
+                films = Films::of(&solved, next);
+                levels = solved;
                 cells = next;
                 last_time = step.elapsed();
             }
@@ -383,8 +384,8 @@ pub fn solve_point(
             message: format!("the films' estimated errors, central {:.2} % ({:.2} % the grid's, {:.2} % the cycles') and minimum {:.2} %, exceed the level's {:.1} % and {:.1} % {why}: the Hertz zone is thin for this grid; a higher fidelity resolves it", films.central_error * 100.0, films.discretisation * 100.0, films.cycles_left * 100.0, films.min_error * 100.0, grids.central_tolerance * 100.0, grids.min_tolerance * 100.0),
         });
     }
-    let report = films
-        .fine
+    let fine = levels.pop().expect("the two finest levels");
+    let report = fine
         .report
         .clone()
         .named("fas_multigrid_finite_difference_richardson")
@@ -392,7 +393,7 @@ pub fn solve_point(
         .on_grid(vec![films.cells as u32, films.cells as u32])
         .with_error_estimate(Some(films.central_error.max(films.min_error)));
     Ok(PointRun {
-        fine: films.fine,
+        fine,
         central: films.central,
         min: films.min,
         min_y: films.min_y,
@@ -403,13 +404,14 @@ pub fn solve_point(
     })
 }
 
-/// A step up to a grid twice as fine costs about four times the last solve (four times the
-/// nodes, the same cycles): the step is taken only when the budget allows this multiple.
+/// A step up to a grid twice as fine costs about four times the last solve's finest level
+/// (four times the nodes, about the same cycles), less than four times the whole last solve:
+/// the step is taken only when the budget allows this multiple of the last solve.
 const STEP_UP_COST: f64 = 4.5;
 
-/// The point problem's two finest levels on `cells` per direction, or on half as many (and so
-/// on, down to [`point::MIN_CELLS`]) when the finest level's cycles stall or diverge (strongly
-/// piezoviscous contacts on fine grids). The attempts run under the solver driver (one
+/// The point problem's two finest levels on `cells` per direction, or, when a level's cycles
+/// stall or diverge (strongly piezoviscous contacts, or light loads, on fine grids), on the grid
+/// half as fine as that level (and so on, down to [`point::MIN_CELLS`]). The attempts run under the solver driver (one
 /// iteration: one whole multigrid solve; the deadline polled before each); the driver's report
 /// is not the room's, which is the finest level's own. Returns the levels, the cells they
 /// reached and the `grid_fallback` warning when they are not the requested ones.
@@ -433,15 +435,17 @@ fn solve_levels(
     )
     .run(|_| match problem.solve(cells, tolerance, budget) {
         Ok(solved) => Verdict::Converged(solved, 0.0),
+        // A level that stalls stalls the same way as the finest of a coarser solve: the next
+        // attempt's finest is the grid below it.
         Err(PointFailure::NotConverged {
             residual,
             cycles,
             cells: stalled,
-        }) if stalled == cells && cells / 2 >= point::MIN_CELLS => {
+        }) if stalled <= cells && stalled / 2 >= point::MIN_CELLS => {
             failed.push(format!(
-                "{cells}² cells (after {cycles} cycles, scaled residual {residual:.3e})"
+                "{stalled}² cells (after {cycles} cycles, scaled residual {residual:.3e})"
             ));
-            cells /= 2;
+            cells = stalled / 2;
             Verdict::Continue(residual)
         }
         Err(failure) => {
