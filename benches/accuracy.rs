@@ -6,7 +6,8 @@
 //! converged quadrature. Writes `docs/accuracy.md`.
 //!
 //! `cargo bench --bench accuracy` (release, one thread); `STRIBECK_ACCURACY_SECTION=gas` (or
-//! `ehl-line`, `ehl-point`, `orbit`, `squeeze`) before it regenerates only that section.
+//! `ehl-line`, `ehl-point`, `orbit`, `squeeze`, `thrust-effects`) before it regenerates only
+//! that section.
 
 use std::fmt::Write;
 use std::time::Instant;
@@ -419,15 +420,17 @@ fn regenerate(heading: &str, fill: fn(&mut String)) {
 }
 
 fn main() {
-    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-line`, `ehl-point`, `orbit`, `squeeze`) regenerates
-    // only the gas-bearing (or the numerical EHL line- or point-contact, the orbit or the squeezed
-    // journal) section, in place.
+    // `STRIBECK_ACCURACY_SECTION=gas` (or `ehl-line`, `ehl-point`, `orbit`, `squeeze`,
+    // `thrust-effects`) regenerates only the gas-bearing (or the numerical EHL line- or
+    // point-contact, the orbit, the squeezed journal or the crowned and turbulent thrust pad)
+    // section, in place.
     match std::env::var("STRIBECK_ACCURACY_SECTION").as_deref() {
         Ok("gas") => return regenerate(GAS_HEADING, gas_bearings),
         Ok("ehl-line") => return regenerate(EHL_LINE_HEADING, ehl_line),
         Ok("ehl-point") => return regenerate(EHL_POINT_HEADING, ehl_point),
         Ok("orbit") => return regenerate(ORBIT_HEADING, journal_orbits),
         Ok("squeeze") => return regenerate(SQUEEZE_HEADING, squeeze_journal),
+        Ok("thrust-effects") => return regenerate(THRUST_EFFECTS_HEADING, thrust_effects),
         _ => {}
     }
     let text = std::fs::read_to_string(concat!(
@@ -705,6 +708,110 @@ fn thrust_pads(out: &mut String) {
         );
     }
     out.push_str("\nThe infinitely long pad is exact for its idealised pad; its error here is the side leakage it ignores (largest on the short pads).\n");
+}
+
+const THRUST_EFFECTS_HEADING: &str = "\n## Crowned and turbulent thrust pads";
+
+/// Crowned and turbulent pads: per fidelity, the error in W̄ of the film alone against a
+/// 256 × 64 mesh (extrapolated) with the reported estimate and the time per pad; and the whole
+/// crowned central-pivot request (its 2-D equilibrium) against the same request on that mesh, in
+/// h2, with its time.
+fn thrust_effects(out: &mut String) {
+    use stribeck::calc::thrust::film::Mesh as PadMesh;
+    use stribeck::calc::thrust::performance::{evaluate, Method as PadMethod};
+    use stribeck::calc::thrust::profile::Profile;
+    use stribeck::calc::turbulence::Flow;
+    let films = [
+        (
+            "crowned, parallel edges, δ/h2 = 0.5",
+            Profile::Crowned {
+                ratio: 1.0,
+                crown: 0.5,
+            },
+            Flow::Laminar,
+        ),
+        (
+            "crowned, h1/h2 = 3, δ/h2 = 1 (δ/h_min 1.33)",
+            Profile::Crowned {
+                ratio: 3.0,
+                crown: 1.0,
+            },
+            Flow::Laminar,
+        ),
+        (
+            "turbulent (Ng–Pan), h1/h2 = 2, Re₂ = 2000",
+            Profile::PlaneInclined { ratio: 2.0 },
+            Flow::Turbulent {
+                reference_reynolds: 2000.0,
+            },
+        ),
+    ];
+    let budget = Budget::unlimited();
+    let fine = PadMethod::mesh(PadMesh {
+        along: 256,
+        across_half: 64,
+    });
+    out.push_str(THRUST_EFFECTS_HEADING);
+    out.push_str("\n\nThe film of a square pad (`thrust::performance::evaluate`): error in W̄ against the film on a 256 × 64 mesh (extrapolated), the estimate it reports (a third of its two meshes' difference) and the median time per pad (both meshes). A crowned film converges, then diverges and cavitates behind the crown (the active set finds the boundary); the turbulent film carries Ng–Pan's factors at the local Re.\n\n");
+    out.push_str("| film | fidelity | grid | error in W̄ | reported estimate | estimate ≥ error | time per pad |\n|---|---|---|---|---|---|---|\n");
+    for (name, profile, flow) in films {
+        let want = evaluate(profile, flow, 1.0, fine, &budget)
+            .unwrap()
+            .performance
+            .load;
+        for (level, fidelity) in [
+            (Level::Fast, "fast"),
+            (Level::Standard, "standard"),
+            (Level::High, "high"),
+        ] {
+            let method = PadMethod::level(level);
+            let mut got = None;
+            let ms =
+                median_ms(|| got = Some(evaluate(profile, flow, 1.0, method, &budget).unwrap()));
+            let got = got.unwrap();
+            let error = (got.performance.load / want - 1.0).abs();
+            let estimate = got.error_estimate.unwrap_or(f64::NAN);
+            let PadMethod::Numerical { mesh, .. } = method else {
+                unreachable!("a numerical level")
+            };
+            let _ = writeln!(
+                out,
+                "| {name} | {fidelity} | {} × {} (and half) | {:.3} % | {:.3} % | {} | {ms:.3} ms |",
+                mesh.along,
+                mesh.across_half,
+                100.0 * error,
+                100.0 * estimate,
+                if estimate >= error { "yes" } else { "no" }
+            );
+        }
+    }
+    let request = |crown: f64, fidelity: &str| {
+        format!(
+            r#"{{"pad": {{"breadth_m": 0.089, "length_m": 0.087}}, "pivot_position_fraction": 0.5, "sliding_speed_m_s": 44, "lubricant": {{"iso_vg": 32}}, "inlet_temperature_c": 49, "load_n": 16000, "crown_m": {crown}, "fidelity": {fidelity}}}"#
+        )
+    };
+    out.push_str("\nThe whole crowned central-pivot request (`/v1/thrust-bearings/tilting-pad`, Ex 7.2's pad at 16 kN, ISO VG 32 from 49 °C, thermal): error in h2 against the same request on the 256 × 64 mesh, the δ/h_min it settles at, the film solves and the median time per request (parse, the 2-D equilibrium, envelope).\n\n");
+    out.push_str("| crown | fidelity | error in h2 | δ/h_min | film solves | time per request |\n|---|---|---|---|---|---|\n");
+    let path = "/v1/thrust-bearings/tilting-pad";
+    for crown in [2e-5, 1e-4] {
+        let (reference, _) = timed_request(path, &request(crown, r#"{"grid": [256, 64]}"#));
+        let want = reference["result"]["outlet_film_m"].as_f64().unwrap();
+        for level in ["fast", "standard", "high"] {
+            let body = request(crown, &format!("\"{level}\""));
+            let mut got = Value::Null;
+            let ms = median_ms(|| got = timed_request(path, &body).0);
+            let h2 = got["result"]["outlet_film_m"].as_f64().unwrap();
+            let h_min = got["result"]["minimum_film_m"].as_f64().unwrap();
+            let _ = writeln!(
+                out,
+                "| {:.0} µm | {level} | {:.3} % | {:.2} | {} | {ms:.2} ms |",
+                crown * 1e6,
+                100.0 * (h2 / want - 1.0).abs(),
+                crown / h_min,
+                got["solver"]["film_solves"]
+            );
+        }
+    }
 }
 
 /// Ex 9.4's piston pin (D = 38.1 mm, C = 25.4 µm, μ = 0.014479 Pa·s, W = 5589.8 N) at L/D

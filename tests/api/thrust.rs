@@ -452,3 +452,306 @@ fn a_crowned_pad_carries_load_on_a_central_pivot_and_tends_to_the_flat_pad() {
         }
     }
 }
+
+/// A crowned fixed pad (the tilting pad's crown, Khonsari & Booser §7.5, on a fixed plane pad):
+/// as the crown vanishes it is the flat pad, from its film to 1e-12 and from its load to 1e-9;
+/// with parallel edges (film ratio 1, which a flat pad may not have: it would carry nothing) it
+/// carries its load on the crown, the thinnest film at mid-pad; the crown's bad inputs name it.
+#[test]
+fn a_crowned_fixed_pad_tends_to_the_flat_pad_and_carries_load_with_parallel_edges() {
+    let pad = |ratio: f64, crown: Option<f64>, given: Value| {
+        let mut body = json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087},
+            "profile": {"kind": "plane_inclined", "film_ratio": ratio},
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "fidelity": "fast", "effects": {"thermal": "off"},
+        });
+        for (k, v) in given.as_object().unwrap() {
+            body[k] = v.clone();
+        }
+        if let Some(crown) = crown {
+            body["crown_m"] = json!(crown);
+        }
+        body
+    };
+    let fields = [
+        "/result/load_n",
+        "/result/outlet_film_m",
+        "/result/friction_force_n",
+        "/result/center_of_pressure_fraction",
+        "/result/max_pressure_pa",
+        "/result/inlet_flow_m3_s",
+        "/result/side_flow_m3_s",
+        "/result/temperature_rise_k",
+    ];
+    for (given, crown, tolerance) in [
+        (json!({"outlet_film_m": 3e-5}), 1e-18, 1e-12),
+        (json!({"load_n": 16000}), 1e-16, 1e-9),
+    ] {
+        let flat = run(FIXED, &pad(2.0, None, given.clone())).unwrap();
+        let crowned = run(FIXED, &pad(2.0, Some(crown), given.clone())).unwrap();
+        for field in fields {
+            let (a, b) = (number(&crowned, field), number(&flat, field));
+            assert!(
+                (a / b - 1.0).abs() < tolerance,
+                "{given}: {field}: {a} vs {b}"
+            );
+        }
+    }
+    // Parallel edges: refused flat (outside the film ratios a flat pad may have), carried crowned.
+    match run(FIXED, &pad(1.0, None, json!({"outlet_film_m": 2e-5}))) {
+        Err(Failure::Invalid(errors)) => {
+            assert!(errors.iter().any(|e| e.pointer == "/profile/film_ratio"))
+        }
+        other => panic!("{other:?}"),
+    }
+    let mut last = 0.0;
+    for crown in [2e-6, 5e-6, 1e-5] {
+        let v = run(
+            FIXED,
+            &pad(1.0, Some(crown), json!({"outlet_film_m": 2e-5})),
+        )
+        .unwrap();
+        assert_finite(&v);
+        let load = number(&v, "/result/load_n");
+        assert!(load > last, "crown {crown}: {load} after {last}");
+        last = load;
+        // The film converges to mid-pad and cavitates behind it: the pressure's centre is ahead.
+        assert!(number(&v, "/result/center_of_pressure_fraction") < 0.5);
+    }
+    let v = run(FIXED, &pad(1.0, Some(1e-5), json!({"load_n": 5000}))).unwrap();
+    assert!((number(&v, "/result/load_n") / 5000.0 - 1.0).abs() < 1e-9);
+    let h2 = number(&v, "/result/outlet_film_m");
+    assert!(h2 > 1e-5, "h2 {h2}: the crown stays below the film here");
+    for (body, pointer, invalid) in [
+        (
+            pad(2.0, Some(2e-3), json!({"load_n": 5000})),
+            "/crown_m",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["fidelity"] = json!("closed_form");
+                b
+            },
+            "/fidelity",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["profile"] =
+                    json!({"kind": "step", "film_ratio": 2, "step_position_fraction": 0.7});
+                b
+            },
+            "/profile/kind",
+            true,
+        ),
+        (
+            {
+                let mut b = pad(2.0, Some(1e-5), json!({"load_n": 5000}));
+                b["profile"]["film_ratio"] = json!("optimum");
+                b
+            },
+            "/profile/film_ratio",
+            true,
+        ),
+        // A film as thin as the crown's touch point: the crown would touch the runner.
+        (
+            pad(1.0, Some(1e-5), json!({"outlet_film_m": 1e-5})),
+            "/crown_m",
+            false,
+        ),
+        (
+            pad(1.0, Some(1e-4), json!({"load_n": 1e8})),
+            "/crown_m",
+            false,
+        ),
+    ] {
+        match run(FIXED, &body) {
+            Err(Failure::Invalid(errors)) if invalid => assert!(
+                errors.iter().any(|e| e.pointer == pointer),
+                "{pointer}: {errors:?}"
+            ),
+            Err(Failure::Calc(CalcError::Impossible {
+                pointer: p,
+                message,
+            })) if !invalid => {
+                assert_eq!(p, pointer, "{message}");
+                assert!(message.contains("touches the runner"), "{message}");
+            }
+            other => panic!("{pointer}: {other:?}"),
+        }
+    }
+}
+
+/// A whole bearing of crowned pads: centrally pivoted tilting pads carry the load their flat
+/// twins refuse, and crowned fixed pads with parallel edges carry theirs; the minimum-film check
+/// reads the thinnest film, inside the pad, and a pad's crown refusal points at the bearing's
+/// field.
+#[test]
+fn a_bearing_of_crowned_pads_carries_its_load() {
+    let bearing = |pads: Value| {
+        json!({
+            "inner_radius_m": 0.073, "outer_radius_m": 0.16, "pad_count": 7,
+            "pad_angle_deg": 43.7, "pads": pads, "speed_rpm": 3600, "load_n": 111200,
+            "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49, "fidelity": "fast",
+        })
+    };
+    let tilting = json!({"kind": "tilting", "pivot_position_fraction": 0.5});
+    match run(BEARING, &bearing(tilting.clone())) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/pads/pivot_position_fraction")
+        }
+        other => panic!("{other:?}"),
+    }
+    let mut crowned_tilting = tilting;
+    crowned_tilting["crown_m"] = json!(2e-5);
+    let fixed = json!({"kind": "fixed", "profile": {"kind": "plane_inclined", "film_ratio": 1},
+                       "crown_m": 2e-5});
+    for pads in [crowned_tilting, fixed] {
+        let v = run(BEARING, &bearing(pads.clone())).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/load_per_pad_n") * 7.0 / 111200.0 - 1.0).abs() < 1e-9);
+        let (h_min, h2) = (
+            number(&v, "/result/min_film_m"),
+            number(&v, "/result/pad/outlet_film_m"),
+        );
+        assert!(h_min < h2 && h_min > 0.0, "{pads}: h_min {h_min}, h2 {h2}");
+        assert_eq!(number(&v, "/result/checks/0/value"), h_min);
+    }
+    let heavy = json!({"kind": "fixed", "profile": {"kind": "plane_inclined", "film_ratio": 1},
+                       "crown_m": 1e-3});
+    let mut body = bearing(heavy);
+    body["load_n"] = json!(1e10);
+    match run(BEARING, &body) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, .. })) => {
+            assert_eq!(pointer, "/pads/crown_m")
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The crowned central pivot over the texts' range of crowns, δ/h_min from 0.5 to 2 (Khonsari &
+/// Booser §7.5), and on to the fold where its equilibrium branch ends: above δ/h2 ≈ 1 a second,
+/// pinched equilibrium appears near the film ratio at which the crown touches and meets the
+/// main one at a fold; the pad follows the main branch (the film ratio rises as the pivot moves
+/// back) and refuses a crown past the fold, naming it.
+#[test]
+fn a_crowned_central_pivot_spans_the_texts_crown_range_up_to_its_fold() {
+    let pad = |crown: f64| {
+        json!({
+            "pad": {"breadth_m": 0.089, "length_m": 0.087}, "pivot_position_fraction": 0.5,
+            "sliding_speed_m_s": 44, "lubricant": {"iso_vg": 32}, "inlet_temperature_c": 49,
+            "load_n": 16000, "crown_m": crown, "fidelity": "fast",
+            "effects": {"thermal": "off"},
+        })
+    };
+    let mut spans: Vec<f64> = Vec::new();
+    for crown in [5e-6, 1e-5, 2e-5, 4e-5, 6e-5, 8e-5, 1e-4, 1.2e-4, 1.4e-4] {
+        let v = run(TILTING, &pad(crown)).unwrap();
+        assert_finite(&v);
+        assert!((number(&v, "/result/center_of_pressure_fraction") - 0.5).abs() < 1e-8);
+        assert!((number(&v, "/result/load_n") / 16000.0 - 1.0).abs() < 1e-9);
+        // The main branch: the film ratio rises as the pivot moves back.
+        assert!(
+            number(&v, "/result/film_ratio_per_pivot_fraction") > 0.0,
+            "crown {crown}"
+        );
+        let over_min = crown / number(&v, "/result/minimum_film_m");
+        assert!(
+            spans.last().is_none_or(|&last| over_min > last),
+            "crown {crown}: {over_min} after {spans:?}"
+        );
+        spans.push(over_min);
+    }
+    // Measured: δ/h_min from 0.108 to 3.56 (δ/h2 from 0.108 to 1.52).
+    assert!(spans[0] < 0.5 && spans[spans.len() - 1] > 2.0, "{spans:?}");
+    // Past the fold (near δ/h2 = 1.62, δ/h_min = 7.0 on the fast mesh): refused, naming it.
+    match run(TILTING, &pad(5e-4)) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/crown_m");
+            assert!(message.contains("fold near δ/h2 = 1.6"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
+/// The texts' empirical turbulent pad (Khonsari & Booser §7.11, `turbulence_model: missana`):
+/// the power loss is f (ρ U²/2) U B L (Eq. 7.17) with f = 0.026/Re^0.25 (Eq. 7.20) at the
+/// laminar pad-average Re, checked against the formula; the film is the laminar pad's at the
+/// viscosity multiplied by that loss over the laminar one (under a load, h2 grows by its square
+/// root); the effect says which law and the Re.
+#[test]
+fn the_empirical_turbulent_friction_of_section_7_11_matches_its_formula() {
+    let pad = |mode: &str, model: &str| {
+        json!({
+            "pad": {"breadth_m": 0.3, "length_m": 0.3},
+            "profile": {"kind": "plane_inclined", "film_ratio": 2}, "sliding_speed_m_s": 80.0,
+            "lubricant": {"viscosity_pa_s": 0.005, "density_15c_kg_m3": 870.0},
+            "load_n": 3e4, "effects": {"turbulence": mode, "thermal": "off"},
+            "turbulence_model": model,
+        })
+    };
+    let laminar = run(FIXED, &pad("off", "missana")).unwrap();
+    let empirical = run(FIXED, &pad("auto", "missana")).unwrap();
+    let ng_pan = run(FIXED, &pad("auto", "ng_pan")).unwrap();
+    let d = &empirical["effects"]["turbulence"];
+    assert_eq!(d["applied"], true, "{d}");
+    assert_eq!(d["model"], "missana", "{d}");
+    let re = number(&laminar, "/result/reynolds_number");
+    assert!(re > 580.0, "Re {re}");
+    assert_eq!(number(d, "/criterion/value"), re);
+    assert!(
+        d["reason"].as_str().unwrap().contains(&format!("{re:.4e}")),
+        "{d}"
+    );
+    // ρ at the 40 °C inlet (Eq. 2.19), U = 80 m/s, B L = 0.09 m².
+    let rho = 870.0 * (1.0 - 0.00063 * (40.0 - 15.0));
+    let want = 0.026 / re.powf(0.25) * 0.5 * rho * 80f64.powi(3) * 0.09;
+    let power = number(&empirical, "/result/power_loss_w");
+    assert!((power / want - 1.0).abs() < 1e-12, "{power} vs {want}");
+    assert!((number(&empirical, "/result/friction_force_n") * 80.0 / power - 1.0).abs() < 1e-12);
+    let factor = want / number(&laminar, "/result/power_loss_w");
+    assert!(factor > 1.0, "the turbulent loss is the larger: × {factor}");
+    let (h_t, h_l) = (
+        number(&empirical, "/result/outlet_film_m"),
+        number(&laminar, "/result/outlet_film_m"),
+    );
+    assert!(
+        (h_t / (h_l * factor.sqrt()) - 1.0).abs() < 1e-9,
+        "{h_t} vs {h_l} × √{factor}"
+    );
+    assert!(
+        (number(&empirical, "/result/effective_viscosity_pa_s") / (0.005 * factor) - 1.0).abs()
+            < 1e-12
+    );
+    // The two laws on the same pad: both above the laminar loss (measured ratios in the report).
+    let ng = number(&ng_pan, "/result/power_loss_w");
+    // Measured (Re 3245): laminar 13.3 kW, Ng–Pan 36.9 kW, Missana 68.0 kW (its 0.026 carries
+    // parasitic losses, §7.11); h2 158, 266 and 357 µm.
+    assert!(ng > number(&laminar, "/result/power_loss_w"));
+}
+
+/// The bearing reports how far the texts' mapping of its sector pads to the rectangle at the
+/// mean radius lies from the sector solved in polar coordinates: Ex 7.2's pads (L/R_m = 0.75)
+/// carry about half a percent less as sectors; the infinitely long pad reports nothing.
+#[test]
+fn the_bearing_reports_its_sector_mapping_deviation() {
+    let bearing = |fidelity: &str| {
+        json!({
+            "inner_radius_m": 0.073, "outer_radius_m": 0.16, "pad_count": 7,
+            "pad_angle_deg": 43.7, "pads": {"kind": "tilting", "pivot_position_fraction": 0.6},
+            "speed_rpm": 3600, "load_n": 111200, "lubricant": {"iso_vg": 32},
+            "inlet_temperature_c": 49, "fidelity": fidelity,
+        })
+    };
+    for fidelity in ["fast", "standard"] {
+        let v = run(BEARING, &bearing(fidelity)).unwrap();
+        let d = number(&v, "/result/sector_load_deviation");
+        assert!((-0.01..-0.002).contains(&d), "{fidelity}: {d}");
+    }
+    let v = run(BEARING, &bearing("closed_form")).unwrap();
+    assert!(v["result"].get("sector_load_deviation").is_none());
+}

@@ -5,10 +5,12 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::film;
 use super::fixed_pad::{flat_land_warning, PadProfileSpec};
 use super::operating::Given;
 use super::pad::{self, RatioChoice, SolvedPad};
-use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult};
+use super::pad_spec::{self, check_finite, conditions, PadEffects, PadResult, PadTurbulenceModel};
+use super::performance::Method;
 use super::pivot::Pivot;
 use super::profile::Profile;
 use super::sector::{allowable_film_m, PadType, Sectors};
@@ -41,6 +43,11 @@ pub struct PadsSpec {
     /// `tilting`: the pivot, x/B from the leading edge, or `"optimum"`.
     #[schema(example = 0.6)]
     pub pivot_position_fraction: Option<PivotPosition>,
+    /// Optional parabolic crown of each pad over its breadth, m (> 0, at most 1e-3): as the
+    /// tilting pad's `crown_m` (a central pivot carries load) or, on fixed `plane_inclined`
+    /// pads of a given `film_ratio` (from 1), the fixed pad's. Numerical fidelities only.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e-3, example = 2e-5)]
+    pub crown_m: Option<Positive>,
 }
 
 /// Request.
@@ -88,6 +95,10 @@ pub struct BearingInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
 }
 
 /// What the pads are.
@@ -100,13 +111,20 @@ pub enum Pads {
     Tilting(Pivot),
 }
 
+/// The pads and their crown δ, m.
+#[derive(Debug, Clone, Copy)]
+pub struct CrownedPads {
+    pub pads: Pads,
+    pub crown_m: Option<f64>,
+}
+
 /// The parsed request.
 #[derive(Debug, Clone)]
 pub struct Case {
     pub sectors: Sectors,
-    pub pads: Pads,
+    pub pads: CrownedPads,
     pub conditions: super::operating::Conditions,
-    pub method: super::performance::Method,
+    pub method: Method,
     pub allowable_film_m: f64,
     pub max_temperature_limit_c: f64,
 }
@@ -156,6 +174,8 @@ impl Validate for BearingInput {
                 format!("each pad's L/B = (R2 − R1)/(R_m β) must be within [0.1, 10], got {l_over_b:.4}"),
             ));
         }
+        let method = pad_spec::method(self.fidelity, &mut errors);
+        let crown_m = pad_spec::crown(self.pads.crown_m, "/pads/crown_m", method, &mut errors);
         let pads =
             match self.pads.kind {
                 PadsKind::Fixed => {
@@ -168,7 +188,7 @@ impl Validate for BearingInput {
                     match self.pads.profile {
                         Some(p) => {
                             let mut inner = Vec::new();
-                            let (profile, ratio) = p.parse(&mut inner);
+                            let (profile, ratio) = p.parse(crown_m.is_some(), &mut inner);
                             errors.extend(inner.into_iter().map(|e| {
                                 FieldError::new(format!("/pads{}", e.pointer), e.message)
                             }));
@@ -243,7 +263,6 @@ impl Validate for BearingInput {
             }
             None => allowable_film_m(roughness),
         };
-        let method = pad_spec::method(self.fidelity, &mut errors);
         let speed = sectors.sliding_speed_m_s(self.speed_rpm.get());
         let conditions = match Positive::try_from(speed) {
             Ok(u) => conditions(
@@ -252,7 +271,7 @@ impl Validate for BearingInput {
                 self.lubricant,
                 self.inlet_temperature_c,
                 Given::Load(load / count as f64),
-                self.effects,
+                self.effects.with_law(self.turbulence_model),
                 &mut errors,
             ),
             Err(_) => {
@@ -274,7 +293,7 @@ impl Validate for BearingInput {
         match conditions {
             Some(conditions) if errors.is_empty() => Ok(Case {
                 sectors,
-                pads,
+                pads: CrownedPads { pads, crown_m },
                 conditions,
                 method,
                 allowable_film_m: allowable,
@@ -317,7 +336,8 @@ pub struct BearingOutput {
     pub load_per_pad_n: f64,
     /// Unit load W/(N B L), Pa.
     pub unit_load_pa: f64,
-    /// The trailing-edge film h2, m.
+    /// The thinnest film, m: the trailing-edge film h2 but on crowned pads whose crown
+    /// outweighs their tilt (then inside the pad).
     pub min_film_m: f64,
     /// h1/h2.
     pub film_ratio: f64,
@@ -338,6 +358,12 @@ pub struct BearingOutput {
     pub effective_temperature_c: f64,
     /// Estimated maximum film temperature, °C.
     pub max_temperature_c: f64,
+    /// How far the texts' mapping of a sector pad to the rectangle at the mean radius is from
+    /// the sector solved in polar coordinates (r, θ): W̄ of the sector over the rectangle's at
+    /// this film ratio, minus 1 (laminar and isoviscous, on the fidelity's mesh; second order in
+    /// (R2 − R1)/R_m). Numerical fidelities only.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sector_load_deviation: Option<f64>,
     /// The design checks (Khonsari & Booser §7.2–7.9).
     pub checks: Vec<Check>,
     /// Whether every check passed.
@@ -362,13 +388,16 @@ impl Calculation for Bearing {
     fn run(case: Case, ctx: &mut Context) -> Result<BearingOutput, CalcError> {
         let budget = ctx.budget();
         let c = &case.conditions;
-        let solved = match case.pads {
-            Pads::Fixed { profile, ratio } => pad::fixed(profile, ratio, case.method, c, &budget),
-            Pads::Tilting(pivot) => pad::tilting(pivot, None, case.method, c, &budget),
+        let crown = case.pads.crown_m;
+        let solved = match case.pads.pads {
+            Pads::Fixed { profile, ratio } => {
+                pad::fixed(profile, ratio, crown, case.method, c, &budget)
+            }
+            Pads::Tilting(pivot) => pad::tilting(pivot, crown, case.method, c, &budget),
         }
         .map_err(per_pad_pointers)?;
         ctx.record(&solved.operating.notes);
-        if let Pads::Fixed { profile, .. } = case.pads {
+        if let Pads::Fixed { profile, .. } = case.pads.pads {
             if let Some(message) = flat_land_warning(profile) {
                 ctx.warn("flat_land_empirical", message);
             }
@@ -376,7 +405,8 @@ impl Calculation for Bearing {
         ctx.report(solved.report(case.method, &budget));
         let result = PadResult::new(&solved.operating, solved.ratio, None);
         check_finite(&result)?;
-        let pad_type = match case.pads {
+        let deviation = sector_deviation(&case, &solved, &budget)?;
+        let pad_type = match case.pads.pads {
             Pads::Fixed {
                 profile: Profile::Step { .. },
                 ..
@@ -384,8 +414,48 @@ impl Calculation for Bearing {
             Pads::Fixed { .. } => PadType::Taper,
             Pads::Tilting(_) => PadType::TiltPad,
         };
-        Ok(output(&case, &solved, pad_type, result))
+        let mut out = output(&case, &solved, pad_type, result);
+        out.sector_load_deviation = deviation;
+        Ok(out)
     }
+}
+
+/// The sector's W̄ solved in polar coordinates over the rectangle's, minus 1, both on the
+/// fidelity's mesh across the whole width ([`film::solve_sector`]); none for `closed_form` and
+/// for flat lands.
+fn sector_deviation(
+    case: &Case,
+    solved: &SolvedPad,
+    budget: &crate::calc::Budget,
+) -> Result<Option<f64>, CalcError> {
+    let Method::Numerical { mesh, .. } = case.method else {
+        return Ok(None);
+    };
+    let h2 = solved.operating.outlet_film_m;
+    let profile = match (case.pads.pads, case.pads.crown_m) {
+        (_, Some(crown)) => Profile::Crowned {
+            ratio: solved.ratio,
+            crown: crown / h2,
+        },
+        // The texts' empirical rule, with no film to solve.
+        (
+            Pads::Fixed {
+                profile: Profile::FlatLand { .. },
+                ..
+            },
+            None,
+        ) => return Ok(None),
+        (Pads::Fixed { profile, .. }, None) => profile.with_ratio(solved.ratio),
+        (Pads::Tilting(_), None) => Profile::PlaneInclined {
+            ratio: solved.ratio,
+        },
+    };
+    let s = &case.sectors;
+    let curvature = (s.outer_radius_m - s.inner_radius_m) / s.mean_radius_m();
+    let l_over_b = s.pad().l_over_b();
+    let (sector, _, _) = film::solve_sector(profile, l_over_b, curvature, mesh, budget)?;
+    let (rectangle, _, _) = film::solve_sector(profile, l_over_b, 0.0, mesh, budget)?;
+    Ok(Some(sector / rectangle - 1.0))
 }
 
 /// A pad's refusal points at the bearing's fields: the load is the bearing's.
@@ -397,9 +467,11 @@ fn per_pad_pointers(e: CalcError) -> CalcError {
                 message,
             }
         }
-        CalcError::Impossible { pointer, message } if pointer == "/profile" => {
+        CalcError::Impossible { pointer, message }
+            if pointer.starts_with("/profile") || pointer == "/crown_m" =>
+        {
             CalcError::Impossible {
-                pointer: "/pads/profile".to_owned(),
+                pointer: format!("/pads{pointer}"),
                 message,
             }
         }
@@ -415,14 +487,22 @@ fn output(case: &Case, solved: &SolvedPad, pad_type: PadType, result: PadResult)
     let unit_load = op.load_n / pad.area_m2();
     let speed_rad_s = case.conditions.sliding_speed_m_s / s.mean_radius_m();
     let (low, high) = pad_type.unit_load_range_pa();
+    let h2 = op.outlet_film_m;
+    let min_film = case.pads.crown_m.map_or(h2, |crown| {
+        let crowned = Profile::Crowned {
+            ratio: solved.ratio,
+            crown: crown / h2,
+        };
+        h2 * crowned.minimum()
+    });
     // Khonsari & Booser §7.3: the target oil rise is 30–40 °F.
     let rise_limit = 40.0 / 1.8;
     let checks = vec![
         Check {
             name: "min_film",
-            value: op.outlet_film_m,
+            value: min_film,
             limit: case.allowable_film_m,
-            passed: op.outlet_film_m >= case.allowable_film_m,
+            passed: min_film >= case.allowable_film_m,
             rule: "minimum film at least the allowable (10 × the composite roughness, Khonsari & Booser §8.12 and Table 8.7, unless given)".to_owned(),
         },
         Check {
@@ -461,7 +541,7 @@ fn output(case: &Case, solved: &SolvedPad, pad_type: PadType, result: PadResult)
         sliding_speed_m_s: case.conditions.sliding_speed_m_s,
         load_per_pad_n: op.load_n,
         unit_load_pa: unit_load,
-        min_film_m: op.outlet_film_m,
+        min_film_m: min_film,
         film_ratio: solved.ratio,
         pivot_position_fraction: solved.equilibrium.as_ref().map(|e| e.pivot),
         power_loss_w: n * op.power_loss_w,
@@ -471,6 +551,7 @@ fn output(case: &Case, solved: &SolvedPad, pad_type: PadType, result: PadResult)
         temperature_rise_k: op.temperature_rise_k,
         effective_temperature_c: op.effective_temperature_c,
         max_temperature_c: op.max_temperature_c,
+        sector_load_deviation: None,
         checks_passed: checks.iter().all(|c| c.passed),
         checks,
         pad: result,

@@ -7,6 +7,13 @@
 //! (W̄(a, k) μ U B² L/W)^½ at the effective viscosity. A damped 2-D Newton on (a, ln k)
 //! ([`newton`]) solves both at once in a few pad solves; where it does not converge to the
 //! branch the bracketed search follows, the bracketed nested search ([`bracketed`]) answers.
+//!
+//! The branch: above δ/h2 ≈ 1 a second, pinched equilibrium appears near the film ratio at
+//! which the crown touches the runner (the centre of pressure falls, then rises, with h1/h2), and
+//! the two meet at a fold — for a central pivot on a square pad near δ/h2 = 1.62, δ/h_min = 7,
+//! h1/h2 = 3.0, well past the texts' crowns of 0.5–2 h_min. Both searches follow the main
+//! branch (the film ratio rising as the pivot moves back) to the fold and refuse a load or
+//! crown past it, naming where it lies.
 
 use std::cell::Cell;
 
@@ -158,8 +165,9 @@ impl NewtonSystem for Balance<'_> {
 
 /// Newton on (a, ln k) from a = 2, k = ½ to a residual of 1e-10 (the pivot to 1e-10 of B, h2
 /// to 1e-10 relative), under the driver (at most 40 steps of at most 8 halvings). None when it
-/// stalls, reaches its cap or settles outside the bracketed search's range (k ≤ 1, a ≥ 1): the
-/// bracketed search then answers. Each step costs three pad solves (the point and the
+/// stalls, reaches its cap, settles outside the bracketed search's range (k ≤ 8, a ≥ 1) or on
+/// the pinched branch (where the film ratio falls as the pivot moves back): the bracketed
+/// search then answers. Each step costs three pad solves (the point and the
 /// Jacobian's two) and its line search's trials.
 fn newton(
     x_p: f64,
@@ -196,6 +204,10 @@ fn newton(
     };
     let profile = Balance::shape(&x);
     let mut eq = settled(profile, x_p, flow, c.pad.l_over_b(), method, budget)?;
+    if eq.ratio_per_pivot <= 0.0 {
+        // The pinched branch (x̄_cp falling with a), which the bracketed search leaves aside.
+        return Ok(None);
+    }
     eq.evaluations += system.evaluations.get();
     Ok(Some((eq, operating)))
 }
@@ -205,11 +217,21 @@ const CROWN_RATIO_START: f64 = 0.5;
 /// The thinnest crown ratio the bracket reaches before it gives up (a crown of 1e-8 of the film
 /// is a flat pad).
 const CROWN_RATIO_MIN: f64 = 1e-8;
-/// The thickest crown ratio searched: a crown as high as the trailing-edge film. Beyond it a
-/// central pivot's equilibrium branch folds (a second, pinched film appears near the crown's
-/// thinnest point and the centre of pressure stops moving monotonically with the film ratio),
-/// which this bracketed search does not follow.
-const CROWN_RATIO_MAX: f64 = 1.0;
+/// The thickest crown ratio searched. Well before it a pivot's equilibrium branch ends: above
+/// about δ/h2 = 1 a second, pinched equilibrium appears near the film ratio at which the crown
+/// touches, the two meet at a fold (a central pivot on a square pad: between δ/h2 = 1.5 and 2,
+/// δ/h_min above 3) and beyond it the centre of pressure lies behind the pivot for every film
+/// ratio.
+const CROWN_RATIO_MAX: f64 = 8.0;
+/// The bracket grows above δ/h2 = ½ by this factor.
+const CROWN_RATIO_GROWTH: f64 = 1.5;
+/// How closely, in ln(δ/h2), the fold is located when a load needs a crown ratio past it.
+const FOLD_TOLERANCE: f64 = 1e-3;
+
+/// Whether `e` says the pivot has no equilibrium at this crown ratio (the branch has ended).
+fn branch_ended(e: &CalcError) -> bool {
+    matches!(e, CalcError::Impossible { pointer, .. } if pointer == "/pivot_position_fraction")
+}
 
 /// The bracketed nested search: δ is fixed in metres, so the film's shape h̄ = h/h2 depends on k = δ/h2 as well as on
 /// a = h1/h2, and the equilibrium is two-dimensional in (a, h2). It is solved nested: at a given
@@ -218,9 +240,10 @@ const CROWN_RATIO_MAX: f64 = 1.0;
 /// with the thermal effect); the load balance is the root of g(ln k) = ln h2' − ln(δ/k).
 /// g rises with k (a relatively larger crown carries more, and h2 = δ/k falls) and tends to −∞
 /// as k → 0 (a flat pad's h2' is finite, a central pivot's tends to 0): the bracket grows from
-/// k = ½ — down by quarters, or up by halving the distance to [`CROWN_RATIO_MAX`] — until g
-/// changes sign, then Brent's method finds the root in ln k. A load too heavy for the crown
-/// (g < 0 up to k = 1: the crown would exceed the film) is refused with the reason.
+/// k = ½ — down by quarters, or up by half again — until g changes sign, then Brent's method
+/// finds the root in ln k. Above k ≈ 1 the pivot's equilibrium follows its main branch
+/// ([`pivot_equilibrium`]) to the fold where it ends; a load that needs a crown ratio past the
+/// fold (g < 0 up to it, located by bisection) is refused with the fold's δ/h2 and δ/h_min.
 fn bracketed(
     pivot: Pivot,
     crown: f64,
@@ -272,16 +295,17 @@ fn bracketed(
         if k >= CROWN_RATIO_MAX {
             return Err(CalcError::impossible(
                 "/crown_m",
-                format!("a crown of {crown:e} m is too high for this load about this pivot: the load needs a trailing-edge film thinner than the crown, beyond the crowns searched (up to the trailing-edge film); lower the crown or the load"),
+                format!("a crown of {crown:e} m is too high for this load about this pivot: the load needs a trailing-edge film thinner than 1/{CROWN_RATIO_MAX} of the crown; lower the crown or the load"),
             ));
         }
-        let next = if k > 0.999 * CROWN_RATIO_MAX {
-            CROWN_RATIO_MAX
-        } else {
-            CROWN_RATIO_MAX - (CROWN_RATIO_MAX - k) / 2.0
-        };
-        lo = hi;
-        hi = (next.ln(), balance(next.ln())?);
+        let next = (k * CROWN_RATIO_GROWTH).min(CROWN_RATIO_MAX).ln();
+        match balance(next) {
+            Ok(g) => (lo, hi) = (hi, (next, g)),
+            Err(e) if branch_ended(&e) => {
+                (lo, hi) = fold_bracket(hi, next, crown, &balance, &at)?;
+            }
+            Err(e) => return Err(e),
+        }
     }
     let mut failure = None;
     let root = brent_bracketed(
@@ -308,6 +332,45 @@ fn bracketed(
     Ok((eq, operating))
 }
 
+/// (ln k, g(ln k)): a point of the load balance.
+type Point = (f64, f64);
+
+/// The load balance's bracket when the growing bracket steps past the fold at `past` (ln k):
+/// bisection in ln k between the last crown ratio with an equilibrium, `good` (g < 0 there),
+/// and `past`, until g ≥ 0 at one with an equilibrium (the bracket) or the fold is located to
+/// [`FOLD_TOLERANCE`] (the refusal: the load is too heavy for the crown about this pivot).
+fn fold_bracket(
+    good: Point,
+    past: f64,
+    crown: f64,
+    balance: &impl Fn(f64) -> Result<f64, CalcError>,
+    at: &impl Fn(f64) -> Result<(Equilibrium, Operating), CalcError>,
+) -> Result<(Point, Point), CalcError> {
+    let (mut good, mut past) = (good, past);
+    while past - good.0 > FOLD_TOLERANCE {
+        let mid = 0.5 * (good.0 + past);
+        match balance(mid) {
+            Ok(g) if g >= 0.0 => return Ok((good, (mid, g))),
+            Ok(g) => good = (mid, g),
+            Err(e) if branch_ended(&e) => past = mid,
+            Err(e) => return Err(e),
+        }
+    }
+    let (eq, op) = at(good.0)?;
+    let k = good.0.exp();
+    let over_min = k / Profile::Crowned {
+        ratio: eq.ratio,
+        crown: k,
+    }
+    .minimum();
+    // At a fixed shape the load carried goes as h2⁻²: at h2 = δ/k it is W e^{2g}.
+    let most = op.load_n * (2.0 * good.1).exp();
+    Err(CalcError::impossible(
+        "/crown_m",
+        format!("a crown of {crown:e} m is too high for this load about this pivot: the pad's equilibrium branch ends at a fold near δ/h2 = {k:.4} (δ/h_min = {over_min:.3}, h1/h2 = {:.4}), where the crowned pad carries about {most:.4e} N at most; beyond it the centre of pressure lies behind the pivot for every tilt. Lower the crown or the load", eq.ratio),
+    ))
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -327,7 +390,16 @@ mod tests {
         .unwrap();
         let c = input.validate().unwrap().conditions;
         let (budget, method) = (Budget::unlimited(), Method::level(Level::Fast));
-        for (x_p, crown) in [(0.5, 1e-5), (0.5, 3e-5), (0.55, 2e-5), (0.6, 1e-6)] {
+        // (0.5, 1e-4) and (0.5, 1.2e-4) settle above δ/h2 = 1, on the main branch past the
+        // pinched one's appearance.
+        for (x_p, crown) in [
+            (0.5, 1e-5),
+            (0.5, 3e-5),
+            (0.55, 2e-5),
+            (0.6, 1e-6),
+            (0.5, 1e-4),
+            (0.5, 1.2e-4),
+        ] {
             let (fast, fast_op) = newton(x_p, crown, Flow::Laminar, method, &c, &budget)
                 .unwrap()
                 .expect("Newton converges");

@@ -101,7 +101,7 @@ pub fn solve(
     budget: &Budget,
 ) -> Result<Field, SolveError> {
     let g = grid(mesh, profile, halves);
-    let stencil = assemble(profile, flow, l_over_b, &g);
+    let stencil = assemble(profile, flow, l_over_b, &g, 0.0);
     // Start with every node free: a converging pad has no cavitated node, so one active-set
     // step solves it; a diverging part cavitates in the next steps.
     let n = (g.nx() + 1) * (g.ny + 1);
@@ -126,10 +126,62 @@ pub fn solve(
     })
 }
 
+/// A sector pad's load and centre of pressure from its film in polar coordinates (θ, r),
+/// solved rather than mapped to the rectangle at the mean radius as the texts do (Khonsari &
+/// Booser §7.2): with x̄ = θ/β along the runner, ȳ = (r − R1)/L across, ρ̄ = r/R_m =
+/// 1 + (ȳ − ½) L/R_m, B = R_m β and U = ω R_m, the polar Reynolds equation
+/// ∂r(r h³ ∂r p) + ∂θ(h³/r ∂θ p) = 6 μ ω r ∂θ h scales as Table 7.2's pads to
+///
+/// ```text
+/// ∂x̄(h̄³/ρ̄ ∂x̄ P̄) + (B/L)² ∂ȳ(ρ̄ h̄³ ∂ȳ P̄) = 6 ρ̄ ∂x̄ h̄,   W̄ = ∫∫ P̄ ρ̄ dx̄ dȳ,
+/// ```
+///
+/// the rectangle's equation as L/R_m → 0. The basement takes ρ̄ h̄ as the film (the Couette
+/// flux) and h̄³/ρ̄, ρ̄ h̄³ as the conductances; the sector is not symmetric about its mean
+/// radius, so its whole width is solved (2 × `mesh.across_half` cells). Laminar, isoviscous:
+/// (W̄, x̄_cp) and the solve's report.
+pub fn solve_sector(
+    profile: Profile,
+    l_over_b: f64,
+    curvature: f64,
+    mesh: Mesh,
+    budget: &Budget,
+) -> Result<(f64, f64, Solved), SolveError> {
+    let g = Grid {
+        ny: 2 * mesh.across_half,
+        width: 1.0,
+        symmetric: false,
+        ..grid(mesh, profile, false)
+    };
+    let stencil = assemble(profile, Flow::Laminar, l_over_b, &g, curvature);
+    let mut p = vec![0.0; (g.nx() + 1) * (g.ny + 1)];
+    for j in 1..g.ny {
+        for i in 1..g.nx() {
+            p[at(&g, i, j)] = 1.0;
+        }
+    }
+    budget.count_field_solve();
+    let solved = reynolds::solve(&stencil, &mut p, true, budget)?;
+    let (mut load, mut moment) = (0.0, 0.0);
+    for j in 0..=g.ny {
+        let w = g.cv_y(j) * (1.0 + (g.y(j) - 0.5) * curvature);
+        for i in 0..=g.nx() {
+            let v = p[at(&g, i, j)] * g.cv_x(i) * w;
+            load += v;
+            moment += v * g.x[i];
+        }
+    }
+    Ok((load, moment / load, solved))
+}
+
 /// The five-point stencil of the pad on `g`. A node on a step takes the mean of the
 /// conductance over its control volume for the flow across (h̄ differs on its two halves).
-fn assemble(profile: Profile, flow: Flow, l_over_b: f64, g: &Grid) -> Stencil {
-    let thickness = |x: f64, _y: f64| profile.thickness(x);
+/// `curvature` is L/R_m of a sector pad solved in polar coordinates ([`solve_sector`]), 0 for
+/// the rectangle: then ρ̄ = 1 exactly and the stencil is the rectangle's bit for bit.
+fn assemble(profile: Profile, flow: Flow, l_over_b: f64, g: &Grid, curvature: f64) -> Stencil {
+    let radius = |y: f64| 1.0 + (y - 0.5) * curvature;
+    // The Couette flux per unit ȳ: ρ̄ h̄ (ω r h/2 on a sector).
+    let thickness = |x: f64, y: f64| radius(y) * profile.thickness(x);
     // h̄³ scaled by the flow's factor of the direction (1 when laminar).
     let along = |h: f64, axis: Axis| {
         let (gx, gy) = flow.pressure_factors(h);
@@ -147,11 +199,19 @@ fn assemble(profile: Profile, flow: Flow, l_over_b: f64, g: &Grid) -> Stencil {
         }
         _ => None,
     };
-    let conductance = |x: f64, _y: f64, axis: Axis| match step {
-        Some((at, mean)) if axis == Axis::Y && x == at => mean,
-        _ => along(profile.thickness(x), axis),
+    let conductance = |x: f64, y: f64, axis: Axis| {
+        let c = match step {
+            Some((at, mean)) if axis == Axis::Y && x == at => mean,
+            _ => along(profile.thickness(x), axis),
+        };
+        // h̄³/ρ̄ around the sector, ρ̄ h̄³ across it.
+        if axis == Axis::X {
+            c / radius(y)
+        } else {
+            c * radius(y)
+        }
     };
-    let scaled = step.is_some() || flow != Flow::Laminar;
+    let scaled = step.is_some() || flow != Flow::Laminar || curvature != 0.0;
     let problem = Problem {
         film: &thickness,
         conductance: scaled.then_some(&conductance as &dyn Fn(f64, f64, Axis) -> f64),

@@ -1,5 +1,5 @@
-//! `POST /v1/thrust-bearings/fixed-pad`: one fixed (non-pivoted) pad — plane inclined, step,
-//! tapered land or parabolic — from its film or its load: film, friction, power, flows,
+//! `POST /v1/thrust-bearings/fixed-pad`: one fixed (non-pivoted) pad — plane inclined (optionally
+//! crowned), step, tapered land or parabolic — from its film or its load: film, friction, power, flows,
 //! temperature rise and Table 7.2's coefficients (Khonsari & Booser ch. 6–7; Stachowiak &
 //! Batchelor ch. 4).
 
@@ -8,7 +8,9 @@ use utoipa::ToSchema;
 
 use super::operating::Conditions;
 use super::pad::{self, RatioChoice};
-use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
+use super::pad_spec::{
+    self, check_finite, conditions, given, PadEffects, PadResult, PadSpec, PadTurbulenceModel,
+};
 use super::performance::{Method, RATIOS};
 use super::profile::Profile;
 use crate::calc::lubricant::LubricantSpec;
@@ -44,7 +46,7 @@ pub enum PadProfileKind {
     expecting = "a film ratio h1/h2 (a number from 1.01 to 10) or \"optimum\""
 )]
 pub enum PadFilmRatio {
-    /// h1/h2, 1.01 … 10.
+    /// h1/h2, 1.01 … 10 (from 1 on a crowned pad).
     Value(f64),
     /// The ratio that maximises the load at the given outlet film.
     Optimum(OptimumKeyword),
@@ -54,9 +56,9 @@ range_schemas::number_or_keyword_schema!(
     PadFilmRatio,
     OptimumKeyword,
     "The film ratio: a number, or `\"optimum\"`.",
-    "h1/h2, 1.01 … 10.",
+    "h1/h2, 1.01 … 10 (from 1 on a crowned pad: `crown_m`).",
     range_schemas::Range {
-        minimum: Some(1.01),
+        minimum: Some(1.0),
         exclusive_minimum: None,
         maximum: Some(10.0),
         exclusive_maximum: None,
@@ -76,8 +78,9 @@ pub enum OptimumKeyword {
 #[serde(deny_unknown_fields)]
 pub struct PadProfileSpec {
     pub kind: PadProfileKind,
-    /// h1/h2 (1.01 … 10), or `"optimum"`: the ratio that maximises the load for the given h2
-    /// and the shape's other proportions. Give this or `depth_m`.
+    /// h1/h2 (1.01 … 10; from 1, parallel edges, on a crowned pad), or `"optimum"`: the ratio
+    /// that maximises the load for the given h2 and the shape's other proportions (not with a
+    /// crown). Give this or `depth_m`.
     #[schema(example = 2.0)]
     pub film_ratio: Option<PadFilmRatio>,
     /// h1 − h2, m (1e-8 … 1e-2): the machined taper depth (or step height), instead of
@@ -105,8 +108,14 @@ const FLAT_LAND_MULTIPLIER: f64 = 0.6;
 
 impl PadProfileSpec {
     /// The shape (with the ratio 2 standing in until a search or the film fixes it) and how its
-    /// film ratio is chosen.
-    pub fn parse(self, errors: &mut Vec<FieldError>) -> (Profile, RatioChoice) {
+    /// film ratio is chosen. A `crowned` pad is plane with its film ratio given, from 1.
+    pub fn parse(self, crowned: bool, errors: &mut Vec<FieldError>) -> (Profile, RatioChoice) {
+        if crowned && self.kind != PadProfileKind::PlaneInclined {
+            errors.push(FieldError::new(
+                "/profile/kind",
+                "a crown (crown_m) is offered on a plane_inclined pad: h/h2 = a − (a − 1)x/B − 4(δ/h2)(x/B)(1 − x/B)",
+            ));
+        }
         if self.kind == PadProfileKind::FlatLand {
             return (self.flat_land(errors), RatioChoice::Given);
         }
@@ -116,14 +125,29 @@ impl PadProfileSpec {
                 "applies only to a flat_land profile",
             ));
         }
+        let lowest = if crowned { 1.0 } else { RATIOS.0 };
         let (ratio, choice) = match (self.film_ratio, self.depth_m) {
-            (Some(PadFilmRatio::Value(r)), None) if (RATIOS.0..=RATIOS.1).contains(&r) => {
+            (Some(PadFilmRatio::Value(r)), None) if (lowest..=RATIOS.1).contains(&r) => {
                 (r, RatioChoice::Given)
             }
             (Some(PadFilmRatio::Value(r)), None) => {
                 errors.push(FieldError::new(
                     "/profile/film_ratio",
-                    format!("must be within [1.01, 10] or \"optimum\", got {r}"),
+                    format!("must be within [{lowest}, 10] or \"optimum\", got {r}"),
+                ));
+                (2.0, RatioChoice::Given)
+            }
+            (Some(PadFilmRatio::Optimum(_)), None) if crowned => {
+                errors.push(FieldError::new(
+                    "/profile/film_ratio",
+                    "a crowned pad takes its film ratio as a number (the load-maximising ratio depends on δ/h2)",
+                ));
+                (2.0, RatioChoice::Given)
+            }
+            (None, Some(_)) if crowned => {
+                errors.push(FieldError::new(
+                    "/profile/depth_m",
+                    "a crowned pad takes its film ratio, not a depth",
                 ));
                 (2.0, RatioChoice::Given)
             }
@@ -270,6 +294,12 @@ pub struct FixedPadInput {
     /// Load on the pad W, N (1e-6 … 1e9), instead of `outlet_film_m`.
     #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e9, example = 16000.0)]
     pub load_n: Option<Positive>,
+    /// Optional parabolic crown over the breadth of a `plane_inclined` pad, m (> 0, at most
+    /// 1e-3): the pad's middle stands this far proud of the line through its edges, the
+    /// tilting pad's crown (Khonsari & Booser §7.5). A crowned pad with parallel edges
+    /// (`film_ratio` 1) carries load on its crown. Numerical fidelities only.
+    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e-3, example = 1e-5)]
+    pub crown_m: Option<Positive>,
     /// `closed_form` (the infinitely long pad, whatever L: no side leakage), `fast`,
     /// `standard` (default), `high`, or `{"grid": [cells along B 8…512, cells across half of L
     /// 2…256]}`. Levels and even grids are Richardson-extrapolated from the half mesh.
@@ -277,6 +307,10 @@ pub struct FixedPadInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
     /// Include the mid-plane pressure profile (numerical fidelities; default false).
     #[serde(default)]
     #[schema(example = false)]
@@ -289,6 +323,8 @@ pub struct Case {
     pub conditions: Conditions,
     pub profile: Profile,
     pub ratio: RatioChoice,
+    /// The crown δ, m.
+    pub crown_m: Option<f64>,
     pub method: Method,
     pub include_field: bool,
 }
@@ -298,16 +334,17 @@ impl Validate for FixedPadInput {
     fn validate(self) -> Result<Case, Vec<FieldError>> {
         let mut errors = Vec::new();
         let pad = self.pad.parse(&mut errors);
-        let (profile, ratio) = self.profile.parse(&mut errors);
+        let (profile, ratio) = self.profile.parse(self.crown_m.is_some(), &mut errors);
         let given = given(self.outlet_film_m, self.load_n, true, &mut errors);
         let method = pad_spec::method(self.fidelity, &mut errors);
+        let crown_m = pad_spec::crown(self.crown_m, "/crown_m", method, &mut errors);
         let conditions = conditions(
             pad,
             self.sliding_speed_m_s,
             self.lubricant,
             self.inlet_temperature_c,
             given,
-            self.effects,
+            self.effects.with_law(self.turbulence_model),
             &mut errors,
         );
         match conditions {
@@ -315,6 +352,7 @@ impl Validate for FixedPadInput {
                 conditions,
                 profile,
                 ratio,
+                crown_m,
                 method,
                 include_field: self.include_field,
             }),
@@ -348,6 +386,7 @@ impl Calculation for FixedPad {
         let solved = pad::fixed(
             case.profile,
             case.ratio,
+            case.crown_m,
             case.method,
             &case.conditions,
             &budget,

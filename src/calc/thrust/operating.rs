@@ -48,6 +48,19 @@ pub enum Given {
 pub struct Effects {
     pub thermal: Mode,
     pub turbulence: Mode,
+    pub turbulence_law: TurbulenceLaw,
+}
+
+/// How a turbulent pad film is computed (Khonsari & Booser §7.11).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum TurbulenceLaw {
+    /// The linearised turbulent Reynolds equation: Ng–Pan's G_x, G_y and G_f (Eq. 6.26–6.31).
+    #[default]
+    NgPan,
+    /// The texts' empirical rule: the power loss from the turbulent friction factor
+    /// f = 0.026/Re^0.25 (Eq. 7.20) on the pad's area (Eq. 7.17), and the laminar film at the
+    /// viscosity multiplied by that loss over the laminar one.
+    Missana,
 }
 
 /// The running conditions.
@@ -59,6 +72,16 @@ pub struct Conditions {
     pub inlet_temperature_c: f64,
     pub given: Given,
     pub effects: Effects,
+    /// The factor on the lubricant's viscosity: 1, or the texts' turbulent "effective"
+    /// viscosity multiplier (§7.11, [`TurbulenceLaw::Missana`]).
+    pub viscosity_factor: f64,
+}
+
+impl Conditions {
+    /// The film's viscosity at t (°C), Pa·s: the lubricant's, times [`Conditions::viscosity_factor`].
+    pub fn viscosity_pa_s(&self, t_c: f64) -> f64 {
+        self.viscosity_factor * self.lubricant.viscosity_pa_s(t_c)
+    }
 }
 
 /// Transition to turbulence in a thrust film: pad-average Reynolds number 580–800 (local
@@ -135,7 +158,7 @@ pub fn operate(
     };
     // ΔT at temperature t (the viscosity and the heat capacity taken there), Eq. 7.8.
     let rise = |t: f64| {
-        let mu = lub.viscosity_pa_s(t);
+        let mu = c.viscosity_pa_s(t);
         let h2 = film(mu);
         let power = p.friction * mu * u * u * b * l / h2;
         let flow = p.inlet_flow * u * l * h2;
@@ -145,7 +168,7 @@ pub fn operate(
     let fits = jang_khonsari(plane, ratio, c, &mut notes);
     // The mean and maximum rises at temperature t, and a ceiling of the mean rise.
     let rises = |t: f64| match fits {
-        Some(f) => f.temperature_rises((ratio - 1.0) * film(lub.viscosity_pa_s(t)), ratio),
+        Some(f) => f.temperature_rises((ratio - 1.0) * film(c.viscosity_pa_s(t)), ratio),
         None => {
             let r = rise(t);
             (2.0 * r, r)
@@ -157,7 +180,7 @@ pub fn operate(
         None => isothermal_rise,
     };
     let heated = (t_in + isothermal_rise).min(MAX_FILM_TEMPERATURE_C.max(t_in));
-    let drop = 1.0 - lub.viscosity_pa_s(heated) / lub.viscosity_pa_s(t_in);
+    let drop = 1.0 - c.viscosity_pa_s(heated) / c.viscosity_pa_s(t_in);
     let thermal = Decision::decide(
         c.effects.thermal,
         Criterion {
@@ -194,7 +217,7 @@ pub fn operate(
         t_in
     };
     notes.decide("thermal", thermal);
-    let mu = lub.viscosity_pa_s(t_eff);
+    let mu = c.viscosity_pa_s(t_eff);
     let h2 = film(mu);
     let rho = lub.density_kg_m3(t_eff);
     let reynolds = rho * u * mean_film * h2 / mu;
@@ -326,7 +349,7 @@ fn jang_khonsari(
     Some(thd::Parameters {
         diffusivity_m2_s: k / (lub.density_kg_m3(t_in) * lub.specific_heat_j_kg_k(t_in)),
         conductivity_w_m_k: k,
-        inlet_viscosity_pa_s: lub.viscosity_pa_s(t_in),
+        inlet_viscosity_pa_s: c.viscosity_pa_s(t_in),
         beta_1_k: beta,
         speed_m_s: c.sliding_speed_m_s,
         breadth_m: c.pad.breadth_m,

@@ -9,13 +9,15 @@ use std::cell::Cell;
 
 use super::crowned;
 use super::long_pad;
-use super::operating::{self, Conditions, Given, Operating, TRANSITION_END_REYNOLDS};
+use super::operating::{
+    self, Conditions, Given, Operating, TurbulenceLaw, TRANSITION_END_REYNOLDS, TURBULENT_REYNOLDS,
+};
 use super::performance::{self, evaluate, Evaluated, Method, RATIOS};
 use super::pivot::{equilibrium, Equilibrium, Pivot};
 use super::profile::Profile;
-use crate::calc::turbulence::Flow;
+use crate::calc::turbulence::{missana_friction_factor, Flow};
 use crate::calc::{Budget, CalcError};
-use crate::effects::Mode;
+use crate::effects::{Criterion, Decision, Mode};
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::driver::{Driver, Verdict};
 use crate::numerics::roots::{brent_bracketed, Stopping};
@@ -60,7 +62,7 @@ impl SolvedPad {
 
 /// Refuse an inlet temperature where the lubricant's viscosity law has no value.
 fn check_viscosity(c: &Conditions) -> Result<(), CalcError> {
-    let mu = c.lubricant.viscosity_pa_s(c.inlet_temperature_c);
+    let mu = c.viscosity_pa_s(c.inlet_temperature_c);
     if mu.is_finite() && mu > 0.0 {
         Ok(())
     } else {
@@ -85,18 +87,58 @@ pub enum RatioChoice {
     Depth(f64),
 }
 
-/// A fixed pad of shape `profile`, its film ratio chosen by `choice`, in its flow regime.
+/// A fixed pad of shape `profile`, its film ratio chosen by `choice`, in its flow regime;
+/// with `crown` (δ, m) a plane pad crowned as a tilting pad is ([`Profile::Crowned`]), at its
+/// given film ratio.
 pub fn fixed(
     profile: Profile,
     choice: RatioChoice,
+    crown: Option<f64>,
     method: Method,
     c: &Conditions,
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
-    in_regime(c, budget, |flow| {
-        fixed_in(profile, choice, flow, method, c, budget)
+    in_regime(c, budget, |flow, c| match crown {
+        None => fixed_in(profile, choice, flow, method, c, budget),
+        Some(crown) => crowned_fixed_in(profile.ratio(), crown, flow, method, c, budget),
     })
+}
+
+/// A fixed plane pad of film ratio `ratio` crowned by `crown` (δ, m) in a `flow`: the crown
+/// ratio k = δ/h2 is known from a given film; under a given load it is the unknown
+/// ([`Machined::Crown`]).
+fn crowned_fixed_in(
+    ratio: f64,
+    crown: f64,
+    flow: Flow,
+    method: Method,
+    c: &Conditions,
+    budget: &Budget,
+) -> Result<SolvedPad, CalcError> {
+    match c.given {
+        Given::OutletFilm(h2) => {
+            let profile = Profile::Crowned {
+                ratio,
+                crown: crown / h2,
+            };
+            if profile.minimum() <= 0.0 {
+                return Err(CalcError::impossible(
+                    "/crown_m",
+                    format!("a crown of {crown:e} m over a trailing-edge film of {h2:e} m at h1/h2 = {ratio} touches the runner: δ/h2 must stay below (√(h1/h2) + 1)²/4 = {:.4}", crown_touching(ratio)),
+                ));
+            }
+            at_ratio(profile, flow, None, method, c, budget)
+        }
+        Given::Load(_) => with_machined(Machined::Crown { ratio, crown }, flow, method, c, budget),
+    }
+}
+
+/// The crown ratio δ/h2 at which a crowned pad of film ratio a first touches the runner:
+/// the minimum of h̄ = a − (a − 1) x̄ − 4 k x̄(1 − x̄), a − (a − 1 + 4k)²/(16k) at the vertex, is
+/// zero at k = (√a + 1)²/4 (the other root, (√a − 1)²/4, puts the vertex off the pad).
+pub fn crown_touching(ratio: f64) -> f64 {
+    (ratio.sqrt() + 1.0).powi(2) / 4.0
 }
 
 /// A fixed pad in a given `flow`.
@@ -117,7 +159,9 @@ fn fixed_in(
         }
         RatioChoice::Depth(depth) => match c.given {
             Given::OutletFilm(h2) => (profile.with_ratio(depth_ratio(depth, h2)?), None),
-            Given::Load(_) => return with_depth(profile, depth, flow, method, c, budget),
+            Given::Load(_) => {
+                return with_machined(Machined::Depth { profile, depth }, flow, method, c, budget)
+            }
         },
     };
     at_ratio(profile, flow, evaluations, method, c, budget)
@@ -166,54 +210,126 @@ fn depth_ratio(depth: f64, h2: f64) -> Result<f64, CalcError> {
     }
 }
 
-/// A pad of machined depth d under its load (Khonsari & Booser §7.4's iteration, solved): at
-/// viscosity μ the ratio a balances W̄(a) (a − 1)² = W d²/(μ U B² L) — h2 = d/(a − 1) carrying W —
-/// a root on a that rises monotonically; with the thermal effect the viscosity's temperature
-/// and the ratio are iterated to a fixed point under the driver (the film at μ(T_eff) must give
-/// back T_eff).
-fn with_depth(
-    profile: Profile,
-    depth: f64,
+/// A length fixed in metres that sets a fixed pad's film under its load: the machined depth
+/// d = h1 − h2 (the film ratio a is the unknown, h2 = d/(a − 1)) or the crown δ at a given
+/// ratio (u = ln(δ/h2) is the unknown, h2 = δ/eᵘ).
+#[derive(Debug, Clone, Copy)]
+enum Machined {
+    Depth { profile: Profile, depth: f64 },
+    Crown { ratio: f64, crown: f64 },
+}
+
+/// The thinnest crown ratio δ/h2 searched under a load (a crown of 1e-14 of the film is a flat
+/// pad to round-off).
+const CROWN_RATIO_MIN: f64 = 1e-14;
+
+impl Machined {
+    /// d or δ, m.
+    fn length(self) -> f64 {
+        match self {
+            Machined::Depth { depth, .. } => depth,
+            Machined::Crown { crown, .. } => crown,
+        }
+    }
+
+    /// The unknown's bracket: the film ratios a pad may have; ln k from [`CROWN_RATIO_MIN`] to
+    /// 1 % short of the crown that touches the runner ([`crown_touching`]).
+    fn bracket(self) -> (f64, f64) {
+        match self {
+            Machined::Depth { .. } => RATIOS,
+            Machined::Crown { ratio, .. } => {
+                (CROWN_RATIO_MIN.ln(), (0.99 * crown_touching(ratio)).ln())
+            }
+        }
+    }
+
+    /// The film at the unknown `s`, and h2/length there.
+    fn at(self, s: f64) -> (Profile, f64) {
+        match self {
+            Machined::Depth { profile, .. } => (profile.with_ratio(s), 1.0 / (s - 1.0)),
+            Machined::Crown { ratio, .. } => (
+                Profile::Crowned {
+                    ratio,
+                    crown: s.exp(),
+                },
+                (-s).exp(),
+            ),
+        }
+    }
+
+    /// The refusal when the load cannot be balanced in the bracket (`light`: even its low end
+    /// carries more).
+    fn refusal(self, light: bool) -> CalcError {
+        match self {
+            Machined::Depth { depth, .. } => {
+                let which = if light {
+                    "below 1.01: the depth is too shallow for so light a load"
+                } else {
+                    "above 10: the depth is too deep for so heavy a load"
+                };
+                CalcError::impossible(
+                    "/profile/depth_m",
+                    format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
+                )
+            }
+            Machined::Crown { ratio, crown } => {
+                let why = if light {
+                    format!("the load is so light that the film exceeds {:e} times the crown: the crown is lost in it (omit crown_m)", 1.0 / CROWN_RATIO_MIN)
+                } else {
+                    format!("the load needs a film so thin that the crown touches the runner (δ/h2 reaches 0.99 × (√(h1/h2) + 1)²/4 = {:.4}): lower the crown or the load, or raise the film ratio", 0.99 * crown_touching(ratio))
+                };
+                CalcError::impossible(
+                    "/crown_m",
+                    format!("a crown of {crown:e} m at h1/h2 = {ratio}: {why}"),
+                )
+            }
+        }
+    }
+}
+
+/// A fixed pad whose film is set by a length fixed in metres under its load (Khonsari &
+/// Booser §7.4's iteration for a machined depth, Ex 7.1, solved; a crown likewise): at
+/// viscosity μ the unknown s balances W̄(s) (length/h2(s))² = W length²/(μ U B² L) — h2 carrying
+/// W — a bracketed root (W̄ h2⁻² rises as the film thins); with the thermal effect the
+/// viscosity's temperature and s are iterated to a fixed point under the driver (the film at
+/// μ(T_eff) must give back T_eff).
+fn with_machined(
+    machined: Machined,
     flow: Flow,
     method: Method,
     c: &Conditions,
     budget: &Budget,
 ) -> Result<SolvedPad, CalcError> {
     let Given::Load(load) = c.given else {
-        unreachable!("with_depth is for a given load")
+        unreachable!("with_machined is for a given load")
     };
     let (pad, u) = (c.pad, c.sliding_speed_m_s);
     let l_over_b = pad.l_over_b();
+    let length = machined.length();
     let evaluations = Cell::new(0u32);
-    let ratio_at = |mu: f64| -> Result<f64, CalcError> {
-        let target = load * depth * depth / (mu * u * pad.breadth_m.powi(2) * pad.length_m);
+    let unknown_at = |mu: f64| -> Result<f64, CalcError> {
+        let target = load * length * length / (mu * u * pad.breadth_m.powi(2) * pad.length_m);
         let failure = Cell::new(None);
-        let balance = |a: f64| match evaluate(profile.with_ratio(a), flow, l_over_b, method, budget)
-        {
-            Ok(e) => {
-                evaluations.set(evaluations.get() + 1);
-                e.performance.load * (a - 1.0).powi(2) - target
-            }
-            Err(e) => {
-                failure.set(Some(e));
-                0.0
+        let balance = |s: f64| {
+            let (profile, film) = machined.at(s);
+            match evaluate(profile, flow, l_over_b, method, budget) {
+                Ok(e) => {
+                    evaluations.set(evaluations.get() + 1);
+                    e.performance.load / film.powi(2) - target
+                }
+                Err(e) => {
+                    failure.set(Some(e));
+                    0.0
+                }
             }
         };
-        let (lo, hi) = RATIOS;
+        let (lo, hi) = machined.bracket();
         let (at_lo, at_hi) = (balance(lo), balance(hi));
         if let Some(e) = failure.take() {
             return Err(e.into());
         }
         if at_lo > 0.0 || at_hi < 0.0 {
-            let which = if at_lo > 0.0 {
-                "below 1.01: the depth is too shallow for so light a load"
-            } else {
-                "above 10: the depth is too deep for so heavy a load"
-            };
-            return Err(CalcError::impossible(
-                "/profile/depth_m",
-                format!("with a depth of {depth:e} m this load needs h1/h2 {which}"),
-            ));
+            return Err(machined.refusal(at_lo > 0.0));
         }
         let root = brent_bracketed(
             balance,
@@ -228,20 +344,30 @@ fn with_depth(
             return Err(e.into());
         }
         Ok(root
-            .map_err(|e| CalcError::from_root("thrust_depth_ratio", e))?
+            .map_err(|e| match machined {
+                Machined::Depth { .. } => CalcError::from_root("thrust_depth_ratio", e),
+                Machined::Crown { .. } => CalcError::from_root("thrust_crown_ratio", e),
+            })?
             .x)
     };
-    let lub = &c.lubricant;
-    let mut ratio = ratio_at(lub.viscosity_pa_s(c.inlet_temperature_c))?;
+    let mut unknown = unknown_at(c.viscosity_pa_s(c.inlet_temperature_c))?;
     let mut failure = None;
-    let run = Driver::new(
-        "thrust_depth_temperature_fixed_point",
-        IterationUnit::Evaluations,
-        50,
-        budget,
-    )
-    .run(|_| {
-        let solved = match at_ratio(profile.with_ratio(ratio), flow, None, method, c, budget) {
+    let driver = match machined {
+        Machined::Depth { .. } => Driver::new(
+            "thrust_depth_temperature_fixed_point",
+            IterationUnit::Evaluations,
+            50,
+            budget,
+        ),
+        Machined::Crown { .. } => Driver::new(
+            "thrust_crown_temperature_fixed_point",
+            IterationUnit::Evaluations,
+            50,
+            budget,
+        ),
+    };
+    let run = driver.run(|_| {
+        let solved = match at_ratio(machined.at(unknown).0, flow, None, method, c, budget) {
             Ok(s) => s,
             Err(e) => {
                 failure = Some(e);
@@ -257,15 +383,16 @@ fn with_depth(
         {
             return Verdict::Converged(solved, 0.0);
         }
-        let next = match ratio_at(lub.viscosity_pa_s(solved.operating.effective_temperature_c)) {
+        let next = match unknown_at(c.viscosity_pa_s(solved.operating.effective_temperature_c)) {
             Ok(r) => r,
             Err(e) => {
                 failure = Some(e);
                 return Verdict::Stalled(f64::NAN);
             }
         };
-        let change = (next - ratio).abs() / ratio;
-        ratio = next;
+        // Relative in a (≥ 1.01), absolute in ln k near k = 1.
+        let change = (next - unknown).abs() / unknown.abs().max(1.0);
+        unknown = next;
         if change <= 1e-9 {
             Verdict::Converged(solved, change)
         } else {
@@ -291,8 +418,10 @@ pub fn tilting(
 ) -> Result<SolvedPad, CalcError> {
     check_viscosity(c)?;
     match crown_m {
-        None => in_regime(c, budget, |flow| tilting_in(pivot, flow, method, c, budget)),
-        Some(crown) => in_regime(c, budget, |flow| {
+        None => in_regime(c, budget, |flow, c| {
+            tilting_in(pivot, flow, method, c, budget)
+        }),
+        Some(crown) => in_regime(c, budget, |flow, c| {
             crowned_in(pivot, crown, flow, method, c, budget)
         }),
     }
@@ -353,9 +482,9 @@ fn crowned_in(
 fn in_regime(
     c: &Conditions,
     budget: &Budget,
-    solve: impl Fn(Flow) -> Result<SolvedPad, CalcError>,
+    solve: impl Fn(Flow, &Conditions) -> Result<SolvedPad, CalcError>,
 ) -> Result<SolvedPad, CalcError> {
-    let laminar = solve(Flow::Laminar)?;
+    let laminar = solve(Flow::Laminar, c)?;
     let applies = c.effects.turbulence != Mode::Off
         && laminar
             .operating
@@ -365,6 +494,9 @@ fn in_regime(
             .any(|(name, d)| *name == "turbulence" && d.applied);
     if !applies {
         return Ok(laminar);
+    }
+    if c.effects.turbulence_law == TurbulenceLaw::Missana {
+        return missana(laminar, c, solve);
     }
     let mut x = laminar.operating.outlet_reynolds_number.ln();
     let mut previous: Option<(f64, f64)> = None;
@@ -376,9 +508,12 @@ fn in_regime(
         budget,
     )
     .run(|_| {
-        let solved = match solve(Flow::Turbulent {
-            reference_reynolds: x.exp(),
-        }) {
+        let solved = match solve(
+            Flow::Turbulent {
+                reference_reynolds: x.exp(),
+            },
+            c,
+        ) {
             Ok(s) => s,
             Err(e) => {
                 failure = Some(e);
@@ -407,6 +542,61 @@ fn in_regime(
             "turbulence_transition",
             format!("the laminar pad-average Reynolds number ρ U h_mean/μ = {re:.0} lies in the transition range 580–800 (Khonsari & Booser §7.11): the result is the turbulent film, power loss {:.4e} W against the laminar {:.4e} W; the texts advise expecting the larger", solved.operating.power_loss_w, laminar.operating.power_loss_w),
         );
+    }
+    Ok(solved)
+}
+
+/// The texts' empirical turbulent pad (Khonsari & Booser §7.11): at the `laminar` pad's
+/// pad-average Re = ρ U h_mean/μ the friction factor f = 0.026/Re^0.25 (Eq. 7.20) gives the
+/// power loss E_t = f (ρ U²/2) U B L (Eq. 7.17); where E_t exceeds the laminar loss by X, the
+/// pad is solved again laminar at the viscosity × (1 + X), the texts' "effective" viscosity for
+/// Table 7.2's film and flows, and carries E_t as its power loss (friction E_t/U, rise
+/// E_t/(ρ c_p Q₁)). One step, as the texts take it: a rough approximation, they say, which is
+/// why Ng–Pan's film stays the default.
+fn missana(
+    laminar: SolvedPad,
+    c: &Conditions,
+    solve: impl Fn(Flow, &Conditions) -> Result<SolvedPad, CalcError>,
+) -> Result<SolvedPad, CalcError> {
+    let op = &laminar.operating;
+    let re = op.reynolds_number;
+    let f = missana_friction_factor(re);
+    let u = c.sliding_speed_m_s;
+    let rho = c.lubricant.density_kg_m3(op.effective_temperature_c);
+    let empirical = f * 0.5 * rho * u * u * u * c.pad.area_m2();
+    let factor = (empirical / op.power_loss_w).max(1.0);
+    let thick = Conditions {
+        viscosity_factor: c.viscosity_factor * factor,
+        ..c.clone()
+    };
+    let mut solved = solve(Flow::Laminar, &thick)?;
+    let o = &mut solved.operating;
+    let t = o.effective_temperature_c;
+    let heat = c.lubricant.density_kg_m3(t) * c.lubricant.specific_heat_j_kg_k(t);
+    // The larger of the two losses is the one to expect (§7.11).
+    let power = empirical.max(o.power_loss_w);
+    o.power_loss_w = power;
+    o.friction_force_n = power / u;
+    o.temperature_rise_k = power / (heat * o.inlet_flow_m3_s);
+    // The Reynolds numbers are the real oil's (the criterion's), not the effective viscosity's.
+    o.reynolds_number = re;
+    o.outlet_reynolds_number = op.outlet_reynolds_number;
+    let reason = format!("turbulent film by Khonsari & Booser §7.11's empirical rule: friction factor f = 0.026/Re^0.25 = {f:.4e} (Eq. 7.20) at the laminar pad-average Re = ρ U h_mean/μ = {re:.4e}, power loss f (ρ U²/2) U B L = {empirical:.4e} W (Eq. 7.17) against the laminar {:.4e} W, the larger carried; film and flows at the viscosity × {factor:.4} (the texts' effective viscosity)", op.power_loss_w);
+    for (name, d) in o.notes.decisions.iter_mut() {
+        if *name == "turbulence" {
+            *d = Decision {
+                applied: true,
+                reason,
+                criterion: Some(Criterion {
+                    name: "pad_reynolds_number",
+                    value: re,
+                    threshold: TURBULENT_REYNOLDS,
+                }),
+                model: Some("missana"),
+                mode: d.mode,
+            };
+            break;
+        }
     }
     Ok(solved)
 }

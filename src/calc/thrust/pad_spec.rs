@@ -5,7 +5,7 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::film::Mesh;
-use super::operating::{Conditions, Effects, Given, Operating, Pad};
+use super::operating::{Conditions, Effects, Given, Operating, Pad, TurbulenceLaw};
 use super::performance::Method;
 use crate::calc::lubricant::LubricantSpec;
 use crate::calc::quantity::{ratio_within, Celsius, Positive};
@@ -73,11 +73,33 @@ pub struct PadEffects {
     pub turbulence: Mode,
 }
 
-impl From<PadEffects> for Effects {
-    fn from(e: PadEffects) -> Effects {
+/// The turbulent film's law where the turbulence effect applies: `ng_pan` (default; the
+/// linearised turbulent Reynolds equation of the `turbulence` effect), or `missana`: Khonsari &
+/// Booser §7.11's empirical rule — the power loss E_p = f (ρ U²/2) U B L (Eq. 7.17) with the
+/// turbulent friction factor f = 0.026/Re^0.25 (Eq. 7.20, Missana et al.'s test, parasitic
+/// losses included) at the laminar pad-average Re = ρ U h_mean/μ, and the film, flows and
+/// temperatures of the laminar pad at the viscosity multiplied by that loss over the laminar
+/// one (the texts' "effective" viscosity; a rough approximation, they say).
+#[derive(Debug, Clone, Copy, Default, PartialEq, Eq, Deserialize, ToSchema)]
+#[serde(rename_all = "snake_case")]
+pub enum PadTurbulenceModel {
+    /// Ng–Pan's linearised turbulent Reynolds equation (Eq. 6.26–6.31).
+    #[default]
+    NgPan,
+    /// The empirical f = 0.026/Re^0.25 (Eq. 7.20) and the effective-viscosity rule (§7.11).
+    Missana,
+}
+
+impl PadEffects {
+    /// The effects, with the turbulent film's law `model`.
+    pub fn with_law(self, model: PadTurbulenceModel) -> Effects {
         Effects {
-            thermal: e.thermal,
-            turbulence: e.turbulence,
+            thermal: self.thermal,
+            turbulence: self.turbulence,
+            turbulence_law: match model {
+                PadTurbulenceModel::NgPan => TurbulenceLaw::NgPan,
+                PadTurbulenceModel::Missana => TurbulenceLaw::Missana,
+            },
         }
     }
 }
@@ -115,6 +137,30 @@ pub fn method(fidelity: FidelityRequest, errors: &mut Vec<FieldError>) -> Method
             }
         }
     }
+}
+
+/// A pad's crown δ (`crown_m` at `pointer`), checked: at most 1e-3 m, and a numerical fidelity
+/// (a crowned film diverges behind its crown and cavitates).
+pub fn crown(
+    crown: Option<Positive>,
+    pointer: &str,
+    method: Method,
+    errors: &mut Vec<FieldError>,
+) -> Option<f64> {
+    let crown = crown.map(Positive::get)?;
+    if crown > 1e-3 {
+        errors.push(FieldError::new(
+            pointer,
+            format!("must be at most 1e-3 m, got {crown}"),
+        ));
+    }
+    if method == Method::LongPad {
+        errors.push(FieldError::new(
+            "/fidelity",
+            "a crowned pad's film diverges behind its crown and cavitates, which the infinitely long pad's closed form does not model: give a numerical fidelity",
+        ));
+    }
+    Some(crown)
 }
 
 /// Table 7.2's coefficients of this pad.
@@ -286,7 +332,7 @@ pub fn conditions(
     lubricant: LubricantSpec,
     inlet_temperature_c: Option<Celsius>,
     given: Given,
-    effects: PadEffects,
+    effects: Effects,
     errors: &mut Vec<FieldError>,
 ) -> Option<Conditions> {
     if speed.get() > 500.0 {
@@ -302,7 +348,8 @@ pub fn conditions(
             lubricant,
             inlet_temperature_c: inlet_temperature_c.map_or(40.0, Celsius::get),
             given,
-            effects: effects.into(),
+            effects,
+            viscosity_factor: 1.0,
         }),
         Err(mut e) => {
             errors.append(&mut e);

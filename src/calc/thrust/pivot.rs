@@ -11,7 +11,10 @@
 //! A crowned pad ([`Profile::Crowned`], the crown fixed relative to h2 here) is found the same
 //! way: its converging-diverging film puts the centre of pressure ahead of mid-pad as the edges
 //! become parallel, so a central pivot has an equilibrium; [`super::pad`] nests this root in
-//! the load balance, where the crown's ratio to h2 changes with the film.
+//! the load balance, where the crown's ratio to h2 changes with the film. A crown above about
+//! the trailing-edge film also pinches the film near the ratio at which it touches, which throws
+//! the centre of pressure back: x̄_cp then falls and rises with a, and the equilibrium taken is
+//! the main branch's, on the rising side of x̄_cp's minimum.
 
 use std::cell::Cell;
 
@@ -19,6 +22,7 @@ use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
 use super::profile::Profile;
 use crate::calc::turbulence::Flow;
 use crate::calc::{Budget, CalcError};
+use crate::numerics::optimise::brent_minimise;
 use crate::numerics::roots::{brent_bracketed, Stopping};
 
 /// The film ratios a pivoted pad may settle at: those of a fixed pad.
@@ -89,10 +93,8 @@ pub fn equilibrium(
                 Profile::Crowned { crown, .. } => (crowned_ratio_floor(crown), PIVOT_RATIOS.1),
                 _ => PIVOT_RATIOS,
             };
-            let (x_lo, x_hi) = (
-                at(lo)?.performance.center_of_pressure,
-                at(hi)?.performance.center_of_pressure,
-            );
+            let (mut lo, x_hi) = (lo, at(hi)?.performance.center_of_pressure);
+            let mut x_lo = at(lo)?.performance.center_of_pressure;
             if x_p <= x_lo && matches!(pad, Profile::PlaneInclined { .. }) {
                 return Err(CalcError::impossible(
                     "/pivot_position_fraction",
@@ -100,10 +102,18 @@ pub fn equilibrium(
                 ));
             }
             if x_p <= x_lo {
-                return Err(CalcError::impossible(
-                    "/pivot_position_fraction",
-                    format!("a pivot at {x_p} of B has no equilibrium on this crowned pad: its centre of pressure lies behind {x_lo:.4} of B for every film ratio above {lo}"),
-                ));
+                // A crown higher than about the trailing-edge film pinches the film near the
+                // touching ratio, which throws the centre of pressure back again: x̄_cp falls,
+                // then rises with a. The main branch (the one that continues the lightly crowned
+                // pad's) is the rising side, right of x̄_cp's minimum.
+                let (a_min, x_min) = lowest_center_of_pressure(lo, hi, &at)?;
+                if x_p <= x_min {
+                    return Err(CalcError::impossible(
+                        "/pivot_position_fraction",
+                        format!("a pivot at {x_p} of B has no equilibrium on this crowned pad: its centre of pressure lies behind {x_min:.4} of B for every film ratio above {lo} (the crown, {:.4} of the trailing-edge film, is past the fold where the equilibrium branch ends)", pad_crown(pad)),
+                    ));
+                }
+                (lo, x_lo) = (a_min, x_min);
             }
             if x_p >= x_hi {
                 return Err(CalcError::impossible(
@@ -137,6 +147,40 @@ pub fn equilibrium(
     let mut settled = settled(pad.with_ratio(ratio), pivot, flow, l_over_b, method, budget)?;
     settled.evaluations += evaluations.get();
     Ok(settled)
+}
+
+/// The film ratio over [lo, hi] at which the centre of pressure lies furthest forward, and that
+/// position: Brent's minimisation to 1e-6 in a, errors of the solves kept.
+fn lowest_center_of_pressure(
+    lo: f64,
+    hi: f64,
+    at: &impl Fn(f64) -> Result<Evaluated, CalcError>,
+) -> Result<(f64, f64), CalcError> {
+    let mut failure = None;
+    let (a, x) = brent_minimise(
+        |a| match at(a) {
+            Ok(e) => e.performance.center_of_pressure,
+            Err(e) => {
+                failure.get_or_insert(e);
+                1.0
+            }
+        },
+        lo,
+        hi,
+        1e-6,
+    );
+    match failure {
+        Some(e) => Err(e),
+        None => Ok((a, x)),
+    }
+}
+
+/// The crown ratio k = δ/h2 of a crowned pad (0 for another shape).
+fn pad_crown(pad: Profile) -> f64 {
+    match pad {
+        Profile::Crowned { crown, .. } => crown,
+        _ => 0.0,
+    }
 }
 
 /// The pad `pad` at its equilibrium film ratio about `pivot`, with the sensitivities by central

@@ -9,7 +9,9 @@ use utoipa::ToSchema;
 use super::fixed_pad::OptimumKeyword;
 use super::operating::Conditions;
 use super::pad;
-use super::pad_spec::{self, check_finite, conditions, given, PadEffects, PadResult, PadSpec};
+use super::pad_spec::{
+    self, check_finite, conditions, given, PadEffects, PadResult, PadSpec, PadTurbulenceModel,
+};
 use super::performance::Method;
 use super::pivot::Pivot;
 use super::profile::Profile;
@@ -79,6 +81,10 @@ pub struct TiltingPadInput {
     pub fidelity: FidelityRequest,
     #[serde(default)]
     pub effects: PadEffects,
+    /// The turbulent film's law where the turbulence effect applies: `ng_pan` (default) or
+    /// `missana` (Khonsari & Booser §7.11's f = 0.026/Re^0.25 and effective viscosity).
+    #[serde(default)]
+    pub turbulence_model: PadTurbulenceModel,
     /// Include the mid-plane pressure profile (numerical fidelities; default false).
     #[serde(default)]
     #[schema(example = false)]
@@ -114,28 +120,14 @@ impl Validate for TiltingPadInput {
         };
         let given = given(None, Some(self.load_n), false, &mut errors);
         let method = pad_spec::method(self.fidelity, &mut errors);
-        let crown_m = self.crown_m.map(Positive::get);
-        if let Some(crown) = crown_m {
-            if crown > 1e-3 {
-                errors.push(FieldError::new(
-                    "/crown_m",
-                    format!("must be at most 1e-3 m, got {crown}"),
-                ));
-            }
-            if method == Method::LongPad {
-                errors.push(FieldError::new(
-                    "/fidelity",
-                    "a crowned pad's film diverges behind its crown and cavitates, which the infinitely long pad's closed form does not model: give a numerical fidelity",
-                ));
-            }
-        }
+        let crown_m = pad_spec::crown(self.crown_m, "/crown_m", method, &mut errors);
         let conditions = conditions(
             pad,
             self.sliding_speed_m_s,
             self.lubricant,
             self.inlet_temperature_c,
             given,
-            self.effects,
+            self.effects.with_law(self.turbulence_model),
             &mut errors,
         );
         match conditions {
