@@ -30,6 +30,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<thrust::fixed_pad::FixedPad>().numerical(),
     Entry::of::<thrust::tilting_pad::TiltingPad>().numerical(),
     Entry::of::<thrust::bearing::Bearing>().numerical(),
+    Entry::of::<thrust::parasitic::ParasiticLosses>(),
     Entry::of::<contact::hertz::Hertz>(),
     Entry::of::<contact::ehl::film::EhlFilm>(),
     Entry::of::<contact::ehl::Ehl>().numerical(),

@@ -126,7 +126,7 @@ const REQUEST_ID_HEADER: &str = "x-request-id";
 pub const TAGS: &[(&str, &str)] = &[
     ("lubricants", "Lubricant properties: viscosity against temperature and pressure, viscosity index, density and thermal properties."),
     ("journal-bearings", "Hydrodynamic journal bearings: steady operation (closed forms and the Reynolds grid), dynamic loads and orbits, oil whirl."),
-    ("thrust-bearings", "Hydrodynamic thrust bearings: fixed and tilting pads, and a whole pad bearing with its design checks."),
+    ("thrust-bearings", "Hydrodynamic thrust bearings: fixed and tilting pads, a whole pad bearing with its design checks, and the parasitic losses outside the films."),
     ("contacts", "Concentrated contacts: Hertz, elastohydrodynamic film formulas and the numerical EHL solve, flash temperature."),
     ("rolling-bearings", "Rolling bearings: kinematics, ISO 281 life, load distribution, ISO 76 static capacity, friction, grease life, and the analysis that composes them."),
     ("squeeze-films", "Squeeze films: parallel plates, the squeezed journal and the piston ring."),

@@ -63,6 +63,7 @@ async fn calculate(client: &Client, path: &str, example: &str) -> Value {
         "/v1/squeeze-films/plates" => typed!(squeeze_films_plates),
         "/v1/thrust-bearings/bearing" => typed!(thrust_bearings_bearing),
         "/v1/thrust-bearings/fixed-pad" => typed!(thrust_bearings_fixed_pad),
+        "/v1/thrust-bearings/parasitic-losses" => typed!(thrust_bearings_parasitic_losses),
         "/v1/thrust-bearings/tilting-pad" => typed!(thrust_bearings_tilting_pad),
         other => panic!("{other} has no typed call here: add its operation"),
     }

@@ -12,7 +12,8 @@
 //! - `long_pad`: the infinitely long pad, exact;
 //! - `film`: the finite pad's numerical film (finite-volume Reynolds, exact active-set solve);
 //! - `thd`: Jang & Khonsari's THD temperature fits for a plane pad;
-//! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic).
+//! - `profile`: a fixed pad's film shape (plane, step, tapered land, parabolic);
+//! - `parasitic`: the `/v1/thrust-bearings/parasitic-losses` room (surface drag, through-flow).
 
 pub mod bearing;
 pub mod coefficients;
@@ -23,6 +24,7 @@ pub mod long_pad;
 pub mod operating;
 pub mod pad;
 pub mod pad_spec;
+pub mod parasitic;
 pub mod performance;
 pub mod pivot;
 pub mod profile;
