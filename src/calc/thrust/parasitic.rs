@@ -37,8 +37,9 @@ const MAX_SURFACES: usize = 16;
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum SurfaceSpec {
-    /// The cylindrical rim of a runner (or a shaft's surface) in a casing: surface speed
-    /// V = πDN over the area πD·width.
+    /// The cylindrical rim of a runner in a casing: surface speed V = πDN over the area
+    /// πD·width (Ex 7.6). Eq. 7.18's drag only: for annular spaces round a journal the texts
+    /// raise f by 30–40 % (Vohr's Eq. 7.19), which is not applied.
     Rim {
         /// Rim (runner outer) diameter D, m (1e-4 … 10).
         #[schema(value_type = f64, minimum = 1e-4, maximum = 10.0, example = 0.381)]
@@ -50,8 +51,9 @@ pub enum SurfaceSpec {
         #[schema(value_type = f64, minimum = 1e-6, maximum = 1.0, example = 0.00635)]
         gap_m: Positive,
     },
-    /// A flat annular face of a runner: Eq. 7.17 integrated over the radius, each ring at its
-    /// own speed ωr and Reynolds number ρωrh/μ.
+    /// A flat annular face of a runner: Eq. 7.17 applied ring by ring over the radius, each
+    /// ring at its own speed ωr and Reynolds number ρωrh/μ — an extension of §7.10, which
+    /// treats the rim.
     Face {
         /// Inner diameter of the wetted annulus, m (0 … outer).
         #[schema(value_type = f64, minimum = 0.0, maximum = 10.0, example = 0.15)]
@@ -75,8 +77,9 @@ pub struct ThroughFlowSpec {
     /// Diameter whose surface speed V the oil is brought to, m (1e-4 … 10).
     #[schema(value_type = f64, minimum = 1e-4, maximum = 10.0, example = 0.381)]
     pub diameter_m: Positive,
-    /// Velocity heads k lost (0 … 10, default 1): 1.6–1.9 measured over whole tapered-land and
-    /// pivoted-pad thrust bearings, 1.5–3.2 over journal bearings (§7.10).
+    /// Velocity heads k lost (0 … 10, default 1, one acceleration as in Ex 7.6): a whole
+    /// bearing loses more — 1.6–1.9 measured over tapered-land and pivoted-pad thrust bearings,
+    /// 1.5–3.2 over journal bearings (§7.10).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 1.0)]
     pub velocity_heads: Option<Positive>,
 }
@@ -90,7 +93,8 @@ pub struct ParasiticLossesInput {
     pub speed_rpm: Positive,
     /// The oil (its viscosity and density at `temperature_c`).
     pub lubricant: LubricantSpec,
-    /// Oil temperature, °C (default 40).
+    /// Oil temperature, °C: required by a temperature-dependent viscosity; a constant one
+    /// takes its density at 20 °C when it is absent.
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 15.0)]
     pub temperature_c: Option<Celsius>,
     /// The wetted rotating surfaces (up to 16; default none).
@@ -101,7 +105,7 @@ pub struct ParasiticLossesInput {
     pub through_flow: Option<ThroughFlowSpec>,
 }
 
-/// A surface checked: (inner radius, outer radius or rim radius, width for a rim, gap).
+/// A surface checked, in radii and gaps (m).
 #[derive(Debug, Clone, Copy, PartialEq)]
 enum Surface {
     Rim { radius: f64, width: f64, gap: f64 },
@@ -208,16 +212,26 @@ impl Validate for ParasiticLossesInput {
             );
             (t.flow_m3_s.get(), 0.5 * t.diameter_m.get(), k)
         });
-        let lubricant = self
-            .lubricant
-            .parse("/lubricant")
-            .map_err(|mut e| errors.append(&mut e))
-            .ok();
-        match (errors.is_empty(), lubricant) {
-            (true, Some(lubricant)) => Ok(ParasiticCase {
+        let oil = match self.lubricant.parse("/lubricant") {
+            Ok(lubricant) => {
+                match validity::operating_temperature(&lubricant, self.temperature_c) {
+                    Ok(t) => Some((lubricant, t)),
+                    Err(e) => {
+                        errors.push(e);
+                        None
+                    }
+                }
+            }
+            Err(mut e) => {
+                errors.append(&mut e);
+                None
+            }
+        };
+        match (errors.is_empty(), oil) {
+            (true, Some((lubricant, temperature_c))) => Ok(ParasiticCase {
                 omega: rpm * PI / 30.0,
                 lubricant,
-                temperature_c: self.temperature_c.map_or(40.0, Celsius::get),
+                temperature_c,
                 surfaces,
                 through_flow,
             }),
@@ -343,11 +357,18 @@ impl Calculation for ParasiticLosses {
     type Output = ParasiticLossesOutput;
 
     fn run(case: ParasiticCase, ctx: &mut Context) -> Result<ParasiticLossesOutput, CalcError> {
+        validity::check_temperatures(ctx, &case.lubricant, &[case.temperature_c])?;
         validity::warn_hot_oil(ctx, "the oil", case.temperature_c);
         let oil = Oil {
             viscosity: case.lubricant.viscosity_pa_s(case.temperature_c),
             density: case.lubricant.density_kg_m3(case.temperature_c),
         };
+        if !(oil.viscosity.is_finite() && oil.viscosity > 0.0 && oil.density > 0.0) {
+            return Err(CalcError::impossible(
+                "/temperature_c",
+                format!("the lubricant has no usable viscosity and density at {} °C (μ = {:e} Pa·s, ρ = {:e} kg/m³)", case.temperature_c, oil.viscosity, oil.density),
+            ));
+        }
         let surfaces: Vec<SurfaceDrag> = case
             .surfaces
             .iter()

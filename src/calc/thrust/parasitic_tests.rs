@@ -93,8 +93,12 @@ fn bad_requests_name_their_fields() {
             "/through_flow/velocity_heads"
         ]
     );
+    // Nothing to compute, and an oil whose viscosity needs the temperature it was not given.
     let nothing = json!({"speed_rpm": 3000, "lubricant": {"iso_vg": 32}});
-    assert_eq!(invalid_pointers::<ParasiticLosses>(&nothing), ["/surfaces"]);
+    assert_eq!(
+        invalid_pointers::<ParasiticLosses>(&nothing),
+        ["/surfaces", "/temperature_c"]
+    );
 }
 
 /// A slow, viscous case warns that Eq. 7.18's turbulent drag is outside its range.
