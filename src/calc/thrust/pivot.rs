@@ -18,6 +18,7 @@
 
 use std::cell::Cell;
 
+use super::long_pad;
 use super::performance::{evaluate, optimum_ratio, Evaluated, Method};
 use super::profile::Profile;
 use crate::calc::turbulence::Flow;
@@ -80,6 +81,16 @@ pub fn equilibrium(
         evaluations.set(evaluations.get() + 1);
         Ok(evaluate(plane(a), flow, l_over_b, method, budget)?)
     };
+    // The laminar closed form's root needs only x̄_cp(a), which the plane pad has in closed form.
+    let center = |a: f64| -> Result<f64, CalcError> {
+        match (method, pad, flow) {
+            (Method::LongPad, Profile::PlaneInclined { .. }, Flow::Laminar) => {
+                evaluations.set(evaluations.get() + 1);
+                Ok(long_pad::plane_center_of_pressure(a))
+            }
+            _ => Ok(at(a)?.performance.center_of_pressure),
+        }
+    };
     let (ratio, pivot) = match pivot {
         Pivot::Optimum => {
             let (ratio, n) = optimum_ratio(plane(2.0), flow, l_over_b, method, budget)?;
@@ -93,8 +104,8 @@ pub fn equilibrium(
                 Profile::Crowned { crown, .. } => (crowned_ratio_floor(crown), PIVOT_RATIOS.1),
                 _ => PIVOT_RATIOS,
             };
-            let (mut lo, x_hi) = (lo, at(hi)?.performance.center_of_pressure);
-            let mut x_lo = at(lo)?.performance.center_of_pressure;
+            let (mut lo, x_hi) = (lo, center(hi)?);
+            let mut x_lo = center(lo)?;
             if x_p <= x_lo && matches!(pad, Profile::PlaneInclined { .. }) {
                 return Err(CalcError::impossible(
                     "/pivot_position_fraction",
@@ -123,8 +134,8 @@ pub fn equilibrium(
             }
             let mut failure = None;
             let root = brent_bracketed(
-                |a| match at(a) {
-                    Ok(e) => e.performance.center_of_pressure - x_p,
+                |a| match center(a) {
+                    Ok(x) => x - x_p,
                     Err(e) => {
                         failure = Some(e);
                         0.0

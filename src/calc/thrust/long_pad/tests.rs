@@ -318,3 +318,19 @@ fn turbulence_raises_load_and_friction_monotonically_with_reynolds_number() {
         }
     }
 }
+
+/// The closed-form centre of pressure the pivot's root uses agrees with the quadrature's over
+/// the film ratios a pad may have.
+#[test]
+fn the_plane_pads_closed_form_centre_of_pressure_is_the_quadratures() {
+    for k in 0..=200 {
+        let a = 1.01 * (10.0f64 / 1.01).powf(k as f64 / 200.0);
+        let quadrature = performance(Profile::PlaneInclined { ratio: a }, Flow::Laminar);
+        close(
+            &format!("x_cp at a = {a}"),
+            plane_center_of_pressure(a),
+            quadrature.center_of_pressure,
+            1e-8,
+        );
+    }
+}
