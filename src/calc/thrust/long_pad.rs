@@ -115,10 +115,11 @@ pub fn mean_thickness(profile: Profile) -> f64 {
     mean
 }
 
-/// The laminar, infinitely long plane pad's centre of pressure from the leading edge, a = h1/h2
-/// > 1 (Khonsari & Booser Table 6.2): x̄_cp = ½[2a/(a − 1) − (a² − 1 − 2a ln a)/((a² − 1) ln a
-/// − 2(a − 1)²)]. The pivot's root needs only this; [`performance`]'s quadrature gives the same
-/// to about 1e-9 (the closed form cancels as a → 1).
+/// The laminar, infinitely long plane pad's centre of pressure from the leading edge at the
+/// film ratio a = h1/h2 above 1 (Khonsari & Booser Table 6.2):
+/// x̄_cp = ½[2a/(a − 1) − (a² − 1 − 2a ln a)/((a² − 1) ln a − 2(a − 1)²)]. The pivot's root
+/// needs only this; [`performance`]'s quadrature gives the same to about 1e-9 (the closed form
+/// cancels as a → 1).
 pub fn plane_center_of_pressure(a: f64) -> f64 {
     let ln = a.ln();
     0.5 * (2.0 * a / (a - 1.0)
