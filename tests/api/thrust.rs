@@ -755,3 +755,25 @@ fn the_bearing_reports_its_sector_mapping_deviation() {
     let v = run(BEARING, &bearing("closed_form")).unwrap();
     assert!(v["result"].get("sector_load_deviation").is_none());
 }
+
+/// Ex 7.4's flat-land motor bearing as a whole bearing (6 lands between 1.75 and 3.00 in,
+/// 150 lbf, 1800 rpm): the unit load (about 37 psi) is checked against Table 7.1's range for
+/// flat lands, 20–100 psi, not the tapered land's 150–400.
+#[test]
+fn a_flat_land_bearing_is_checked_against_the_flat_lands_unit_load() {
+    let request = json!({
+        "inner_radius_m": 0.022225, "outer_radius_m": 0.0381, "pad_count": 6,
+        "pads": {"kind": "fixed", "profile": {"kind": "flat_land"}}, "speed_rpm": 1800,
+        "load_n": 667.2, "lubricant": {"viscosity_pa_s": 0.00896}, "inlet_temperature_c": 40,
+    });
+    let v = run(BEARING, &request).unwrap();
+    let checks = v["result"]["checks"].as_array().unwrap();
+    let unit = checks.iter().find(|c| c["name"] == "unit_load").unwrap();
+    let psi = unit["value"].as_f64().unwrap() / 6894.757;
+    assert!((20.0..=100.0).contains(&psi), "{psi} psi");
+    assert_eq!(unit["passed"], json!(true), "{unit}");
+    assert!(
+        unit["rule"].as_str().unwrap().contains("flat land"),
+        "{unit}"
+    );
+}

@@ -411,6 +411,10 @@ impl Calculation for Bearing {
                 profile: Profile::Step { .. },
                 ..
             } => PadType::Step,
+            Pads::Fixed {
+                profile: Profile::FlatLand { .. },
+                ..
+            } => PadType::Flat,
             Pads::Fixed { .. } => PadType::Taper,
             Pads::Tilting(_) => PadType::TiltPad,
         };

@@ -60,16 +60,20 @@ pub enum PadType {
     Taper,
     Step,
     TiltPad,
+    /// Flat land: parallel faces (20–35 psi ungrooved, to about 100 with radial grooves, §7.7).
+    Flat,
 }
 
 impl PadType {
-    /// Table 7.1's unit-load range, Pa (psi: taper 150–400, step 100–300, tilt pad 250–700).
+    /// Table 7.1's unit-load range, Pa (psi: taper 150–400, step 100–300, tilt pad 250–700,
+    /// flat 20–100).
     pub fn unit_load_range_pa(self) -> (f64, f64) {
         const PSI: f64 = 6894.757;
         let (lo, hi) = match self {
             PadType::Taper => (150.0, 400.0),
             PadType::Step => (100.0, 300.0),
             PadType::TiltPad => (250.0, 700.0),
+            PadType::Flat => (20.0, 100.0),
         };
         (lo * PSI, hi * PSI)
     }
@@ -79,6 +83,7 @@ impl PadType {
             PadType::Taper => "taper",
             PadType::Step => "step",
             PadType::TiltPad => "tilt pad",
+            PadType::Flat => "flat land",
         }
     }
 }
