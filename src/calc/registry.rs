@@ -193,6 +193,22 @@ impl FieldError {
             message: message.into(),
         }
     }
+
+    /// Pushes onto `errors` "must be within [lo, hi], got v" at `pointer` unless `v` is a
+    /// finite number in [lo, hi].
+    pub fn check_within(
+        errors: &mut Vec<FieldError>,
+        pointer: impl Into<String>,
+        v: f64,
+        (lo, hi): (f64, f64),
+    ) {
+        if !(v.is_finite() && (lo..=hi).contains(&v)) {
+            errors.push(FieldError::new(
+                pointer,
+                format!("must be within [{lo:e}, {hi:e}], got {v}"),
+            ));
+        }
+    }
 }
 
 /// Why a request produced no result.

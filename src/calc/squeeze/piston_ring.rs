@@ -146,15 +146,6 @@ fn level_numerics(level: Level) -> (usize, f64) {
     }
 }
 
-fn within(errors: &mut Vec<FieldError>, pointer: &str, v: f64, lo: f64, hi: f64) {
-    if !(v.is_finite() && (lo..=hi).contains(&v)) {
-        errors.push(FieldError::new(
-            pointer,
-            format!("must be within [{lo:e}, {hi:e}], got {v}"),
-        ));
-    }
-}
-
 impl Validate for PistonRingInput {
     type Valid = PistonRingCase;
     fn validate(self) -> Result<PistonRingCase, Vec<FieldError>> {
@@ -173,23 +164,22 @@ impl Validate for PistonRingInput {
             engine.rod_length_m.get(),
             engine.speed_rpm.get(),
         );
-        within(&mut errors, "/ring/width_m", b, 0.0, 0.05);
-        within(&mut errors, "/ring/crown_height_m", crown, 0.0, 1e-3);
+        FieldError::check_within(&mut errors, "/ring/width_m", b, (0.0, 0.05));
+        FieldError::check_within(&mut errors, "/ring/crown_height_m", crown, (0.0, 1e-3));
         if crown >= b {
             errors.push(FieldError::new(
                 "/ring/crown_height_m",
                 "must be below the ring's width (a thin film on a gently crowned face)",
             ));
         }
-        within(&mut errors, "/ring/modulus_pa", modulus, 1e8, 1e12);
-        within(
+        FieldError::check_within(&mut errors, "/ring/modulus_pa", modulus, (1e8, 1e12));
+        FieldError::check_within(
             &mut errors,
             "/ring/tension_pressure_pa",
             ring.tension_pressure_pa,
-            0.0,
-            1e8,
+            (0.0, 1e8),
         );
-        within(&mut errors, "/engine/bore_m", bore, 0.005, 2.0);
+        FieldError::check_within(&mut errors, "/engine/bore_m", bore, (0.005, 2.0));
         if t_r >= 0.5 * bore || t_r > 0.05 {
             errors.push(FieldError::new(
                 "/ring/thickness_m",
@@ -199,14 +189,14 @@ impl Validate for PistonRingInput {
         if b >= bore {
             errors.push(FieldError::new("/ring/width_m", "must be below the bore"));
         }
-        within(&mut errors, "/engine/crank_radius_m", crank, 0.0, 1.0);
+        FieldError::check_within(&mut errors, "/engine/crank_radius_m", crank, (0.0, 1.0));
         if !(rod > 1.2 * crank && rod <= 5.0) {
             errors.push(FieldError::new(
                 "/engine/rod_length_m",
                 format!("must exceed 1.2 times the crank radius ({crank} m) and be at most 5 m: a rod no longer than the crank cannot drive the piston through the cycle"),
             ));
         }
-        within(&mut errors, "/engine/speed_rpm", rpm, 1.0, 20000.0);
+        FieldError::check_within(&mut errors, "/engine/speed_rpm", rpm, (1.0, 20000.0));
         let cycle = engine.cycle_deg;
         if cycle != 720.0 && cycle != 360.0 {
             errors.push(FieldError::new(
@@ -224,12 +214,11 @@ impl Validate for PistonRingInput {
                 .collect();
             let angles = ascending_angles(&mut errors, "/gas_pressure", &degrees, cycle);
             for (i, p) in self.gas_pressure.iter().enumerate() {
-                within(
+                FieldError::check_within(
                     &mut errors,
                     &format!("/gas_pressure/{i}/pressure_pa"),
                     p.pressure_pa,
-                    -1e5,
-                    1e9,
+                    (-1e5, 1e9),
                 );
             }
             (
@@ -240,22 +229,20 @@ impl Validate for PistonRingInput {
         let bottom_fraction = self
             .bottom_pressure_fraction
             .unwrap_or(DEFAULT_BOTTOM_FRACTION);
-        within(
+        FieldError::check_within(
             &mut errors,
             "/bottom_pressure_fraction",
             bottom_fraction,
-            0.0,
-            1.0,
+            (0.0, 1.0),
         );
         let friction = self
             .boundary_friction_coefficient
             .unwrap_or(DEFAULT_FRICTION_COEFFICIENT);
-        within(
+        FieldError::check_within(
             &mut errors,
             "/boundary_friction_coefficient",
             friction,
-            0.0,
-            1.0,
+            (0.0, 1.0),
         );
         if self.boundary_friction_coefficient.is_some() && self.composite_roughness_m.is_none() {
             errors.push(FieldError::new(
@@ -264,18 +251,17 @@ impl Validate for PistonRingInput {
             ));
         }
         if let Some(sigma) = self.composite_roughness_m {
-            within(
+            FieldError::check_within(
                 &mut errors,
                 "/composite_roughness_m",
                 sigma.get(),
-                0.0,
-                1e-4,
+                (0.0, 1e-4),
             );
         }
         let guess = self
             .initial_film_m
             .map_or(DEFAULT_GUESS_OVER_CROWN * crown, Positive::get);
-        within(&mut errors, "/initial_film_m", guess, 1e-10, 1e-3);
+        FieldError::check_within(&mut errors, "/initial_film_m", guess, (1e-10, 1e-3));
         let (level, (cells, tolerance)) = match self.fidelity {
             FidelityRequest::Level(Level::ClosedForm) => {
                 errors.push(FieldError::new(
@@ -297,7 +283,7 @@ impl Validate for PistonRingInput {
                     cells = 2 * (nx as usize).div_ceil(2);
                 }
                 if let Some(t) = custom.tolerance {
-                    within(&mut errors, "/fidelity/tolerance", t, 1e-10, 1e-4);
+                    FieldError::check_within(&mut errors, "/fidelity/tolerance", t, (1e-10, 1e-4));
                     tolerance = t;
                 }
                 (Level::Standard, (cells, tolerance))

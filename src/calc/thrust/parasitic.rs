@@ -123,21 +123,12 @@ pub struct ParasiticCase {
     through_flow: Option<(f64, f64, f64)>,
 }
 
-fn within(value: f64, (lo, hi): (f64, f64), at: String, errors: &mut Vec<FieldError>) {
-    if !(lo..=hi).contains(&value) {
-        errors.push(FieldError::new(
-            at,
-            format!("must be within [{lo:e}, {hi:e}], got {value}"),
-        ));
-    }
-}
-
 impl Validate for ParasiticLossesInput {
     type Valid = ParasiticCase;
     fn validate(self) -> Result<ParasiticCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let rpm = self.speed_rpm.get();
-        within(rpm, (0.0, MAX_SPEED_RPM), "/speed_rpm".into(), &mut errors);
+        FieldError::check_within(&mut errors, "/speed_rpm", rpm, (0.0, MAX_SPEED_RPM));
         if self.surfaces.is_empty() && self.through_flow.is_none() {
             errors.push(FieldError::new(
                 "/surfaces",
@@ -159,9 +150,14 @@ impl Validate for ParasiticLossesInput {
                     width_m,
                     gap_m,
                 } => {
-                    within(diameter_m.get(), SIZE_RANGE, at("diameter_m"), &mut errors);
-                    within(width_m.get(), SIZE_RANGE, at("width_m"), &mut errors);
-                    within(gap_m.get(), GAP_RANGE, at("gap_m"), &mut errors);
+                    FieldError::check_within(
+                        &mut errors,
+                        at("diameter_m"),
+                        diameter_m.get(),
+                        SIZE_RANGE,
+                    );
+                    FieldError::check_within(&mut errors, at("width_m"), width_m.get(), SIZE_RANGE);
+                    FieldError::check_within(&mut errors, at("gap_m"), gap_m.get(), GAP_RANGE);
                     surfaces.push(Surface::Rim {
                         radius: 0.5 * diameter_m.get(),
                         width: width_m.get(),
@@ -174,14 +170,19 @@ impl Validate for ParasiticLossesInput {
                     gap_m,
                 } => {
                     let outer = outer_diameter_m.get();
-                    within(outer, SIZE_RANGE, at("outer_diameter_m"), &mut errors);
+                    FieldError::check_within(
+                        &mut errors,
+                        at("outer_diameter_m"),
+                        outer,
+                        SIZE_RANGE,
+                    );
                     if !(0.0..outer).contains(&inner_diameter_m) {
                         errors.push(FieldError::new(
                             at("inner_diameter_m"),
                             format!("must be within [0, outer_diameter_m = {outer}), got {inner_diameter_m}"),
                         ));
                     }
-                    within(gap_m.get(), GAP_RANGE, at("gap_m"), &mut errors);
+                    FieldError::check_within(&mut errors, at("gap_m"), gap_m.get(), GAP_RANGE);
                     surfaces.push(Surface::Face {
                         inner: 0.5 * inner_diameter_m,
                         outer: 0.5 * outer,
@@ -191,24 +192,24 @@ impl Validate for ParasiticLossesInput {
             }
         }
         let through_flow = self.through_flow.map(|t| {
-            within(
+            FieldError::check_within(
+                &mut errors,
+                "/through_flow/flow_m3_s",
                 t.flow_m3_s.get(),
                 (0.0, MAX_FLOW_M3_S),
-                "/through_flow/flow_m3_s".into(),
-                &mut errors,
             );
-            within(
+            FieldError::check_within(
+                &mut errors,
+                "/through_flow/diameter_m",
                 t.diameter_m.get(),
                 SIZE_RANGE,
-                "/through_flow/diameter_m".into(),
-                &mut errors,
             );
             let k = t.velocity_heads.map_or(1.0, Positive::get);
-            within(
+            FieldError::check_within(
+                &mut errors,
+                "/through_flow/velocity_heads",
                 k,
                 (0.0, MAX_VELOCITY_HEADS),
-                "/through_flow/velocity_heads".into(),
-                &mut errors,
             );
             (t.flow_m3_s.get(), 0.5 * t.diameter_m.get(), k)
         });
