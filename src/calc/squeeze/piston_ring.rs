@@ -216,7 +216,7 @@ impl Validate for PistonRingInput {
             for (i, p) in self.gas_pressure.iter().enumerate() {
                 FieldError::check_within(
                     &mut errors,
-                    &format!("/gas_pressure/{i}/pressure_pa"),
+                    format!("/gas_pressure/{i}/pressure_pa"),
                     p.pressure_pa,
                     (-1e5, 1e9),
                 );
