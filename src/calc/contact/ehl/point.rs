@@ -121,6 +121,33 @@ pub struct PointProblem {
     pub film_guess: f64,
 }
 
+impl PointProblem {
+    /// The same contact with the inlet and the sides at `factor` times their distance, the
+    /// outlet kept.
+    #[must_use]
+    pub fn widened(&self, factor: f64) -> Self {
+        PointProblem {
+            inlet: factor * self.inlet,
+            half_width: factor * self.half_width,
+            ..*self
+        }
+    }
+
+    /// The same contact on the domain doubled away from the outlet: the inlet moved upstream by
+    /// the domain's length and the sides out to twice their distance. Its grid of 2c cells has
+    /// the spacing of this problem's grid of c cells and holds every one of its nodes (the
+    /// outlet and the centre line are nodes of both), so the two solutions differ only by where
+    /// the boundary's P = 0 is imposed: the domain's truncation.
+    #[must_use]
+    pub fn doubled_domain(&self) -> Self {
+        PointProblem {
+            inlet: self.outlet - 2.0 * (self.outlet - self.inlet),
+            half_width: 2.0 * self.half_width,
+            ..*self
+        }
+    }
+}
+
 /// The dry contact the problem is scaled by, SI units.
 #[derive(Debug, Clone, Copy)]
 pub struct HertzEllipse {
