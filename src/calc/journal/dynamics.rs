@@ -21,7 +21,7 @@ use std::f64::consts::PI;
 
 use super::eccentricity::EccentricityRatio;
 use super::film::{self, Film, FilmModel, FilmSolution, Mesh, Response};
-use super::performance::positioned_film;
+use super::performance::{positioned_film, FilmStart};
 use crate::calc::{Budget, CalcError};
 use crate::numerics::reynolds::Stopping;
 
@@ -39,16 +39,17 @@ fn force(f: &FilmSolution) -> [f64; 2] {
     [f.load_radial, -f.load_tangential]
 }
 
-/// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film. `field` is
-/// the film's field on `mesh`: the equilibrium solve starts from it when given (a converged
-/// field makes that solve a check), and holds the equilibrium's field after.
+/// Coefficients at eccentricity ratio `eps` by perturbation of the numerical film. `start` is
+/// where the equilibrium solve starts (a converged field on `mesh` makes that solve a check; a
+/// nearby placed film's attitude starts its attitude search), and holds the equilibrium's
+/// field and attitude after.
 pub fn perturbation(
     eccentricity: EccentricityRatio,
     l_over_d: f64,
     physics: FilmModel,
     mesh: Mesh,
     stop: Stopping,
-    field: &mut Option<Vec<f64>>,
+    start: &mut FilmStart,
     budget: &Budget,
 ) -> Result<Coefficients, CalcError> {
     let (base, equilibrium, solved) = positioned_film(
@@ -57,10 +58,11 @@ pub fn perturbation(
         physics,
         mesh,
         stop,
-        field.take(),
+        std::mem::take(start),
         budget,
     )?;
-    let field = field.insert(solved);
+    start.attitude = Some(equilibrium.attitude_angle());
+    let field = start.field.insert(solved);
     let f0 = force(&equilibrium);
     let s = 2.0 / f0[0].hypot(f0[1]);
     let (k, c) = if physics.has_content() {
@@ -298,7 +300,7 @@ mod tests {
                     axial_half: 12,
                 },
                 STOP,
-                &mut None,
+                &mut FilmStart::default(),
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -337,7 +339,7 @@ mod tests {
             FilmModel::REYNOLDS,
             mesh,
             STOP,
-            &mut None,
+            &mut FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap();
@@ -356,7 +358,7 @@ mod tests {
             FilmModel::REYNOLDS,
             mesh,
             STOP,
-            &mut None,
+            &mut FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap();
@@ -382,7 +384,7 @@ mod tests {
                 FilmModel::REYNOLDS,
                 mesh,
                 STOP,
-                &mut None,
+                &mut FilmStart::default(),
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -396,7 +398,7 @@ mod tests {
                 jfo(FeedLine::MaxFilm),
                 mesh,
                 STOP,
-                &mut None,
+                &mut FilmStart::default(),
                 &Budget::unlimited(),
             )
             .unwrap();
@@ -422,7 +424,7 @@ mod tests {
                 jfo(FeedLine::OppositeLoad),
                 mesh,
                 STOP,
-                &mut None,
+                &mut FilmStart::default(),
                 &Budget::unlimited(),
             )
             .unwrap();

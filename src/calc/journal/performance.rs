@@ -135,17 +135,44 @@ impl Method {
     }
 }
 
+/// Where a film solve starts: the converged field of a nearby solve on the same mesh, and for a
+/// placed film the attitude φ (rad) a nearby solve settled at.
+#[derive(Debug, Clone, Default)]
+pub struct FilmStart {
+    pub field: Option<Vec<f64>>,
+    pub attitude: Option<f64>,
+}
+
+impl FilmStart {
+    /// From a field alone (or from rest).
+    #[must_use]
+    pub fn field(field: Option<Vec<f64>>) -> Self {
+        FilmStart {
+            field,
+            attitude: None,
+        }
+    }
+}
+
+/// Secant steps on the attitude from a nearby solve's φ before the bracketed search: each
+/// step at most this long (rad), at most this many solves.
+const ATTITUDE_STEP: f64 = 0.3;
+const ATTITUDE_SECANT_SOLVES: usize = 8;
+
 /// The film at ε, positioned. A full bearing is fed at h_max, so the film frame is the bearing's.
 /// A partial bearing's arc is fixed on the load line, so the line of centres must be placed: the
 /// attitude φ where the film force lies along the load (Stachowiak & Batchelor's attitude
-/// iteration in PARTIAL, here a bracketed root of the angle between the force and the load).
+/// iteration in PARTIAL, here a root of the angle between the force and the load). From a
+/// nearby solve's φ (`start.attitude`) secant steps find it in three or four solves (the angle
+/// falls with φ at a rate near 1: the force turns with the line of centres); from rest, or when
+/// they wander, Brent's bracketed search over φ ∈ [0, 135°].
 pub fn positioned_film(
     eccentricity: EccentricityRatio,
     l_over_d: f64,
     model: FilmModel,
     mesh: Mesh,
     stop: Stopping,
-    warm: Option<Vec<f64>>,
+    start: FilmStart,
     budget: &Budget,
 ) -> Result<(Film, FilmSolution, Vec<f64>), CalcError> {
     let eps = eccentricity.get();
@@ -154,7 +181,7 @@ pub fn positioned_film(
         ..Film::steady(eps, l_over_d)
     };
     if !placed(&model) {
-        let (f, p) = film::solve(base, mesh, stop, warm, budget)?;
+        let (f, p) = film::solve(base, mesh, stop, start.field, budget)?;
         return Ok((base, f, p));
     }
     // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
@@ -179,58 +206,118 @@ pub fn positioned_film(
         }),
         ..base
     };
-    let mut warm = warm;
-    let mut failure = None;
-    let mut mismatch = |phi: f64| -> f64 {
-        let film = place(phi);
-        if film.min_thickness() <= TOUCHING {
-            failure.get_or_insert(touching(eps));
-            return f64::NAN;
-        }
-        match film::solve(film, mesh, stop, warm.take(), budget) {
-            Ok((f, p)) => {
-                warm = Some(p);
-                // The load is −F; its signed angle from the load line's direction.
-                let (wa, wb) = (-f.load_radial, f.load_tangential);
-                let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
-                (wa * db - wb * da).atan2(wa * da + wb * db)
-            }
-            Err(e) => {
-                failure.get_or_insert(e.into());
-                f64::NAN
-            }
-        }
-    };
-    let stop_phi = roots::Stopping {
-        x_tolerance: 1e-9,
-        max_iterations: 100,
-    };
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
     // equilibrium lies between (an arc wholly in the diverging film carries nothing).
     // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°.
-    let root = brent(&mut mismatch, 0.0, 0.75 * PI, stop_phi);
-    if let Some(e) = failure {
-        return Err(e);
-    }
-    let phi = match root {
-        Ok(r) => r.x,
-        Err(e @ RootError::NotConverged { .. }) => {
-            return Err(CalcError::from_root("brent_attitude", e))
+    let (lowest, highest) = (0.0, 0.75 * PI);
+    let mut warm = start.field;
+    // The last film solved, at its φ: the answer when the search ends on it.
+    let mut last: Option<(f64, FilmSolution, Vec<f64>)> = None;
+    // The signed angle from the load line's direction to the load −F at φ.
+    let mut mismatch = |phi: f64| -> Result<f64, CalcError> {
+        let film = place(phi);
+        if film.min_thickness() <= TOUCHING {
+            return Err(touching(eps));
         }
-        Err(_) => {
-            // Not "/misalignment": that pointer means the journal touches.
-            return Err(no_attitude(&model));
+        let (f, p) = film::solve(film, mesh, stop, warm.take(), budget)?;
+        warm = Some(p.clone());
+        let (wa, wb) = (-f.load_radial, f.load_tangential);
+        let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+        last = Some((phi, f, p));
+        Ok((wa * db - wb * da).atan2(wa * da + wb * db))
+    };
+    let x_tolerance = 1e-9;
+    let secant = start.attitude.map(|guess| {
+        attitude_secant(
+            &mut mismatch,
+            guess.clamp(lowest, highest),
+            (lowest, highest),
+            x_tolerance,
+        )
+    });
+    let phi = match secant {
+        Some(Ok(Some(phi))) => phi,
+        // A deadline is not a wandering secant.
+        Some(Err(e @ CalcError::DeadlineExceeded)) => return Err(e),
+        _ => {
+            let mut failure = None;
+            let root = brent(
+                |phi| {
+                    mismatch(phi).unwrap_or_else(|e| {
+                        failure.get_or_insert(e);
+                        f64::NAN
+                    })
+                },
+                lowest,
+                highest,
+                roots::Stopping {
+                    x_tolerance,
+                    max_iterations: 100,
+                },
+            );
+            if let Some(e) = failure {
+                return Err(e);
+            }
+            match root {
+                Ok(r) => r.x,
+                Err(e @ RootError::NotConverged { .. }) => {
+                    return Err(CalcError::from_root("brent_attitude", e))
+                }
+                Err(_) => {
+                    // Not "/misalignment": that pointer means the journal touches.
+                    return Err(no_attitude(&model));
+                }
+            }
         }
     };
     let film = place(phi);
-    let (f, p) = film::solve(film, mesh, stop, warm, budget)?;
-    // Brent can also settle on the ±180° jump of the angle: only a force on the load line counts.
+    let (f, p) = match last {
+        Some((at, f, p)) if at == phi => (f, p),
+        _ => film::solve(film, mesh, stop, warm, budget)?,
+    };
+    // The search can also settle on the ±180° jump of the angle: only a force on the load line
+    // counts.
     let (wa, wb) = (-f.load_radial, f.load_tangential);
     let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
     if wa * da + wb * db <= 0.0 {
         return Err(no_attitude(&model));
     }
     Ok((film, f, p))
+}
+
+/// Secant steps on the attitude mismatch from `guess`, the first with the slope −1, each at
+/// most [`ATTITUDE_STEP`] and kept in `bounds`: the root (the last φ evaluated) when a step
+/// falls below `x_tolerance` within [`ATTITUDE_SECANT_SOLVES`] solves, None when the steps
+/// wander (the caller's bracketed search takes over), or the solve's error.
+fn attitude_secant(
+    mismatch: &mut impl FnMut(f64) -> Result<f64, CalcError>,
+    guess: f64,
+    (lowest, highest): (f64, f64),
+    x_tolerance: f64,
+) -> Result<Option<f64>, CalcError> {
+    let step_to = |from: f64, step: f64| from + step.clamp(-ATTITUDE_STEP, ATTITUDE_STEP);
+    let (mut x0, mut f0) = (guess, mismatch(guess)?);
+    let mut x1 = step_to(x0, f0).clamp(lowest, highest);
+    for _ in 1..ATTITUDE_SECANT_SOLVES {
+        if x1 == x0 {
+            return Ok((f0 == 0.0).then_some(x0));
+        }
+        let f1 = mismatch(x1)?;
+        let slope = (f1 - f0) / (x1 - x0);
+        // Near the root the angle falls with φ; a flat or rising slope is not that branch.
+        if !(slope.is_finite() && slope < 0.0) {
+            return Ok(None);
+        }
+        let next = step_to(x1, -f1 / slope);
+        if (next - x1).abs() < x_tolerance {
+            return Ok(Some(x1));
+        }
+        if !(lowest..=highest).contains(&next) {
+            return Ok(None);
+        }
+        (x0, f0, x1) = (x1, f1, next);
+    }
+    Ok(None)
 }
 
 /// Where a mass-conserving film fed away from h_max starts, as θ + φ (the load line lies at
@@ -379,19 +466,34 @@ pub fn at_eccentricity(
 }
 
 /// Converged fields by mesh: where the next solve on that mesh starts (a nearby ε's field
-/// starts the active-set iteration close to its answer).
+/// starts the active-set iteration close to its answer), and the attitude the last placed film
+/// settled at on any mesh (where the next one's search starts).
 #[derive(Debug, Default)]
-struct Fields(Vec<(Mesh, Vec<f64>)>);
+struct Fields {
+    fields: Vec<(Mesh, Vec<f64>)>,
+    attitude: Option<f64>,
+}
 
 impl Fields {
-    fn take(&mut self, mesh: Mesh) -> Option<Vec<f64>> {
-        let k = self.0.iter().position(|(m, _)| *m == mesh)?;
-        Some(self.0.swap_remove(k).1)
+    fn take(&mut self, mesh: Mesh) -> FilmStart {
+        let field = self
+            .fields
+            .iter()
+            .position(|(m, _)| *m == mesh)
+            .map(|k| self.fields.swap_remove(k).1);
+        FilmStart {
+            field,
+            attitude: self.attitude,
+        }
     }
 
-    fn keep(&mut self, mesh: Mesh, field: Vec<f64>) {
-        self.0.retain(|(m, _)| *m != mesh);
-        self.0.push((mesh, field));
+    /// The field solved on `mesh`, and its film's attitude when it was placed.
+    fn keep(&mut self, mesh: Mesh, field: Vec<f64>, placed_at: Option<f64>) {
+        self.fields.retain(|(m, _)| *m != mesh);
+        self.fields.push((mesh, field));
+        if placed_at.is_some() {
+            self.attitude = placed_at;
+        }
     }
 }
 
@@ -422,14 +524,16 @@ fn at_eccentricity_from(
                 physics,
                 ..Film::steady(eps.get(), l_over_d)
             };
-            let solve_on = |m: Mesh, start: Option<Vec<f64>>| {
+            let solve_on = |m: Mesh, start: FilmStart| {
                 if load_fixed {
                     positioned_film(eps, l_over_d, physics, m, stop, start, budget)
                         .map(|(_, f, p)| (f, p))
                 } else {
-                    film::solve(film, m, stop, start, budget).map_err(CalcError::from)
+                    film::solve(film, m, stop, start.field, budget).map_err(CalcError::from)
                 }
             };
+            // A placed film's attitude, where the next mesh's search starts.
+            let placed_at = |f: &FilmSolution| load_fixed.then(|| f.attitude_angle());
             let half = mesh.coarse();
             // Second-order scheme: the fine mesh's error is about (S_h − S_rh)/(r² − 1), r = 2
             // when the coarse mesh halves both spacings.
@@ -439,10 +543,12 @@ fn at_eccentricity_from(
                 solve_on(half, fields.take(half))?,
                 f64::INFINITY,
                 |m| (m == half).then_some(mesh),
-                |m, (_, coarse_field): &(FilmSolution, Vec<f64>)| {
-                    let start = fields.take(m).or_else(|| {
-                        (!load_fixed).then(|| film::prolonged(&film, half, coarse_field, m))
-                    });
+                |m, (coarse, coarse_field): &(FilmSolution, Vec<f64>)| {
+                    let mut start = fields.take(m);
+                    if start.field.is_none() && !load_fixed {
+                        start.field = Some(film::prolonged(&film, half, coarse_field, m));
+                    }
+                    start.attitude = placed_at(coarse).or(start.attitude);
                     solve_on(m, start)
                 },
                 |(coarse, _), (fine, _)| {
@@ -459,8 +565,12 @@ fn at_eccentricity_from(
                 Err(e) => return Err(CalcError::Internal(format!("mesh pair: {e:?}"))),
             };
             let ((coarse, coarse_field), (fine, fine_field)) = (coarse, fine);
-            fields.keep(half, coarse_field);
-            fields.keep(mesh, fine_field.clone());
+            fields.keep(half, coarse_field, placed_at(&coarse));
+            fields.keep(mesh, fine_field.clone(), placed_at(&fine));
+            let near = FilmStart {
+                field: None,
+                attitude: placed_at(&fine),
+            };
             // A third mesh guards the pair's estimate against an accidental agreement of the
             // two: the next coarser (an eighth of the coarse mesh's cost), or for a mesh too
             // coarse to halve twice, the next finer (cheap at that size).
@@ -469,15 +579,17 @@ fn at_eccentricity_from(
             let error = if !estimate {
                 pair_error
             } else if quarter.circumferential >= 12 {
-                let (third, _) = solve_on(quarter, None)?;
+                let (third, _) = solve_on(quarter, near)?;
                 three_mesh_estimate([sf, sc, third.sommerfeld_number()], r, false)
             } else {
                 let double = Mesh {
                     circumferential: 2 * mesh.circumferential,
                     axial_half: 2 * mesh.axial_half,
                 };
-                let start =
-                    (!load_fixed).then(|| film::prolonged(&film, mesh, &fine_field, double));
+                let start = FilmStart {
+                    field: (!load_fixed).then(|| film::prolonged(&film, mesh, &fine_field, double)),
+                    ..near
+                };
                 let (third, _) = solve_on(double, start)?;
                 three_mesh_estimate([third.sommerfeld_number(), sf, sc], 2.0, true)
             };
@@ -748,7 +860,11 @@ impl Searcher<'_> {
                 let start = self.fields.take(mesh);
                 match positioned_film(eps, self.l_over_d, self.physics, mesh, stop, start, budget) {
                     Ok((_, f, p)) => {
-                        self.fields.keep(mesh, p);
+                        self.fields.keep(
+                            mesh,
+                            p,
+                            placed(&self.physics).then(|| f.attitude_angle()),
+                        );
                         from_film(eps, &f, self.physics)
                     }
                     // A misaligned journal touching at an end carries any load: S → 0, the

@@ -48,7 +48,9 @@ use super::closed_form::{self, Boundary};
 use super::dynamics::{self, Coefficients, Whirl};
 use super::eccentricity::EccentricityRatio;
 use super::film::FilmModel;
-use super::performance::{self, Approximation, Method, MAX_ECCENTRICITY, MIN_ECCENTRICITY};
+use super::performance::{
+    self, Approximation, FilmStart, Method, MAX_ECCENTRICITY, MIN_ECCENTRICITY,
+};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, Level, SolverReport, StopReason};
 use crate::numerics::driver::{Driver, Verdict};
@@ -63,7 +65,7 @@ pub fn coefficients(
     eccentricity: EccentricityRatio,
     l_over_d: f64,
     physics: FilmModel,
-    field: &mut Option<Vec<f64>>,
+    field: &mut FilmStart,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     let eps = eccentricity.get();
@@ -328,7 +330,7 @@ impl Rotor {
     fn coefficients_at(
         &self,
         eps: f64,
-        field: &mut Option<Vec<f64>>,
+        field: &mut FilmStart,
         budget: &Budget,
     ) -> Result<Coefficients, CalcError> {
         let e = EccentricityRatio::new(eps)
@@ -356,7 +358,10 @@ impl Rotor {
             budget,
         )?;
         let eps = point.eccentricity_ratio.get();
-        let mut field = point.field.clone();
+        let mut field = FilmStart {
+            field: point.field.clone(),
+            attitude: Some(point.attitude_angle),
+        };
         let mut c = self.coefficients_at(eps, &mut field, budget)?;
         // The equilibrium's S (extrapolated at `high`) puts the state at the speed asked.
         c.sommerfeld_number = s;
@@ -398,7 +403,7 @@ impl Rotor {
         let spr = self.sommerfeld_per_rpm();
         let failure = RefCell::new(None);
         let evaluations = RefCell::new(0u32);
-        let mut field = None;
+        let mut field = FilmStart::default();
         // The last state the margin was taken at: the threshold's is the root's.
         let last = RefCell::new(None::<FilmState>);
         let mut margin = |eps: f64| -> f64 {

@@ -1,6 +1,6 @@
 use super::*;
 use crate::calc::journal::eccentricity::EccentricityRatio;
-use crate::calc::journal::performance::positioned_film;
+use crate::calc::journal::performance::{positioned_film, FilmStart};
 use crate::calc::CalcError;
 
 const STOP: Stopping = Stopping {
@@ -88,7 +88,7 @@ fn fed_opposite_the_load_it_reforms_late_and_carries_less() {
             jfo(FeedLine::OppositeLoad),
             mesh,
             STOP,
-            None,
+            FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap();
@@ -130,7 +130,7 @@ fn the_reformation_case_converges_under_refinement() {
                 axial_half: m,
             },
             STOP,
-            None,
+            FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap()
@@ -153,7 +153,7 @@ fn the_reformation_case_converges_under_refinement() {
             model,
             mesh,
             STOP,
-            None,
+            FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap()
@@ -193,7 +193,7 @@ fn finite_from_light_to_heavy_load() {
                     model,
                     mesh,
                     STOP,
-                    None,
+                    FilmStart::default(),
                     &Budget::unlimited(),
                 ) {
                     Ok((_, j, _)) => j,
@@ -275,7 +275,7 @@ fn ported_films_supply_what_leaks_and_reduce_to_the_line_feed() {
             model,
             mesh,
             STOP,
-            None,
+            FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap_or_else(|e| panic!("{model:?}: {e:?}"));
@@ -325,7 +325,7 @@ fn more_supply_pressure_floods_more_of_the_film() {
             ported(FeedLine::OppositeLoad, 0.2, 0.2, p),
             mesh,
             STOP,
-            None,
+            FilmStart::default(),
             &Budget::unlimited(),
         )
         .unwrap();
@@ -418,9 +418,10 @@ fn the_half_sommerfeld_film_is_the_positive_part_of_the_full_film() {
 
     let short = |eps: f64| {
         let at = EccentricityRatio::new(eps).unwrap();
-        let numerical = positioned_film(at, 0.05, gumbel, mesh, STOP, None, &budget)
-            .unwrap()
-            .1;
+        let numerical =
+            positioned_film(at, 0.05, gumbel, mesh, STOP, FilmStart::default(), &budget)
+                .unwrap()
+                .1;
         let closed = crate::calc::journal::closed_form::short_bearing(
             eps,
             0.05,

@@ -7,7 +7,7 @@ use super::{Case, Notes, Operating, RotorStability, GRAVITY};
 use crate::calc::journal::dynamics::{self, Coefficients};
 use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::film::FilmModel;
-use crate::calc::journal::performance::{self, Method, MAX_ECCENTRICITY};
+use crate::calc::journal::performance::{self, FilmStart, Method, MAX_ECCENTRICITY};
 use crate::calc::journal::threshold;
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, StopReason};
@@ -21,7 +21,7 @@ pub(super) fn coefficients_at(
     method: Method,
     eccentricity: EccentricityRatio,
     physics: FilmModel,
-    field: &mut Option<Vec<f64>>,
+    field: &mut FilmStart,
     budget: &Budget,
 ) -> Result<Option<Coefficients>, CalcError> {
     threshold::coefficients(
@@ -56,7 +56,10 @@ pub(super) fn dynamic_coefficients(
     let eccentricity = op.point.eccentricity_ratio;
     let eps = eccentricity.get();
     let physics = case.physics(op.temperature_c);
-    let mut field = op.point.field.clone();
+    let mut field = FilmStart {
+        field: op.point.field.clone(),
+        attitude: Some(op.point.attitude_angle),
+    };
     let Some(coefficients) =
         coefficients_at(case, case.method, eccentricity, physics, &mut field, budget)?
     else {
@@ -100,8 +103,18 @@ pub(super) fn dynamic_coefficients(
         }
         (Method::Numerical { mesh, stop, .. }, _) => {
             let ld = case.geometry.l_over_d();
-            let (_, film, _) =
-                performance::positioned_film(eccentricity, ld, physics, mesh, stop, None, budget)?;
+            let (_, film, _) = performance::positioned_film(
+                eccentricity,
+                ld,
+                physics,
+                mesh,
+                stop,
+                FilmStart {
+                    field: None,
+                    attitude: Some(op.point.attitude_angle),
+                },
+                budget,
+            )?;
             film.sommerfeld_number()
         }
         _ => s_op,
@@ -135,7 +148,15 @@ pub(super) fn dynamic_coefficients(
                 turbulence_reynolds: Some(re),
                 ..physics
             };
-            match performance::positioned_film(e, ld, with, mesh, stop, None, budget) {
+            match performance::positioned_film(
+                e,
+                ld,
+                with,
+                mesh,
+                stop,
+                FilmStart::default(),
+                budget,
+            ) {
                 Ok((_, film, _)) => {
                     let next = re_op * film.sommerfeld_number() / s_op;
                     let change = (next / re - 1.0).abs();
@@ -168,7 +189,7 @@ pub(super) fn dynamic_coefficients(
     };
     let failure = std::cell::RefCell::new(None);
     // Each point of the locus starts from the field of the last.
-    let mut locus_field = None;
+    let mut locus_field = FilmStart::default();
     // S at each ε the margin was taken at: the threshold's speed is read from the last.
     let mut locus: Vec<(f64, f64)> = Vec::new();
     let mut margin = |e: f64| -> f64 {

@@ -33,7 +33,7 @@ fn finite(eps: f64, l_over_d: f64) -> Coefficients {
         FilmModel::REYNOLDS,
         mesh,
         stop,
-        &mut None,
+        &mut crate::calc::journal::performance::FilmStart::default(),
         &Budget::unlimited(),
     )
     .unwrap()
