@@ -91,6 +91,28 @@ fn journal(c: &mut Criterion) {
             },
         );
     }
+    // Placed films (an attitude search per film): misaligned, a partial arc, both.
+    for (name, placed) in [
+        (
+            "misaligned 0.5 mrad",
+            r#""misalignment": {"slope_rad": 0.0005}"#,
+        ),
+        ("120° arc", r#""arc_deg": 120"#),
+        (
+            "120° arc, misaligned 0.5 mrad",
+            r#""arc_deg": 120, "misalignment": {"slope_rad": 0.0005}"#,
+        ),
+    ] {
+        let request = format!(
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}}, "speed_rpm": 3000, "lubricant": {{"iso_vg": 32}}, "load_n": 10000, "inlet_temperature_c": 40, "fidelity": "standard", {placed}}}"#
+        );
+        c.bench_function(&format!("README request, {name}, at standard"), |b| {
+            b.iter(|| {
+                let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+                (entry.execute)(black_box(request.as_bytes()), far, Default::default()).unwrap()
+            })
+        });
+    }
     let dynamic = stribeck::calc::find("/v1/journal-bearings/dynamic").unwrap();
     for (film, mass, fidelity) in [
         ("short_pi_film", 20, "standard"),
