@@ -8,6 +8,8 @@
 //! product, one preconditioner solve and k + 1 vector operations of length n at the k-th
 //! iteration of a cycle; storage (restart + 1) vectors.
 
+use super::dense::dot;
+
 /// How a [`solve`] ended.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Outcome {
@@ -42,7 +44,7 @@ pub fn solve(
 ) -> (Vec<f64>, Outcome) {
     let n = b.len();
     let m = settings.restart.max(1);
-    let norm = |v: &[f64]| v.iter().map(|x| x * x).sum::<f64>().sqrt();
+    let norm = |v: &[f64]| dot(v, v).sqrt();
     let b_norm = norm(b);
     let mut x = vec![0.0; n];
     let mut outcome = Outcome {
@@ -77,9 +79,8 @@ pub fn solve(
             outcome.iterations += 1;
             let mut h = vec![0.0; k + 2];
             for (j, v) in basis.iter().enumerate() {
-                let dot: f64 = product.iter().zip(v).map(|(w, v)| w * v).sum();
-                h[j] = dot;
-                product.iter_mut().zip(v).for_each(|(w, v)| *w -= dot * v);
+                h[j] = dot(&product, v);
+                product.iter_mut().zip(v).for_each(|(w, v)| *w -= h[j] * v);
             }
             let next = norm(&product);
             h[k + 1] = next;

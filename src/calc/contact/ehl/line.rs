@@ -128,8 +128,7 @@ impl Grid {
         let hertz: Vec<f64> = x.iter().map(|&x| hertz_pressure(x)).collect();
         let base = (0..n)
             .map(|i| {
-                let row = &kernel[i * n..(i + 1) * n];
-                let discrete: f64 = row.iter().zip(&hertz).map(|(k, p)| k * p).sum();
+                let discrete = dense::dot(&kernel[i * n..(i + 1) * n], &hertz);
                 0.5 * x[i] * x[i] - hertz_deformation(x[i]) + discrete / PI
             })
             .collect();
@@ -166,8 +165,7 @@ impl Grid {
         let n = self.nodes();
         (0..n)
             .map(|i| {
-                let row = &self.kernel[i * n..(i + 1) * n];
-                let deformation: f64 = row.iter().zip(pressure).map(|(k, p)| k * p).sum();
+                let deformation = dense::dot(&self.kernel[i * n..(i + 1) * n], pressure);
                 h0 + self.base[i] - deformation / PI
             })
             .collect()
@@ -481,7 +479,7 @@ impl Jacobian {
         let film: Vec<f64> = grid
             .kernel
             .chunks_exact(n)
-            .map(|row| h0 - row.iter().zip(&full).map(|(k, p)| k * p).sum::<f64>() / PI)
+            .map(|row| h0 - dense::dot(row, &full) / PI)
             .collect();
         for i in 1..n - 1 {
             let local: f64 = (0..4)
