@@ -1,6 +1,7 @@
 //! Dense linear systems by LU with partial pivoting: small ones ([`solve`]) through nalgebra's
-//! LU, large ones ([`solve_large`]: the EHL line contact's Newton matrix, up to 2048 unknowns)
-//! through a recursively blocked LU whose bulk is nalgebra's matrix product.
+//! LU, large ones ([`solve_large`]: the EHL line contact's Newton matrix, up to 2048 unknowns,
+//! where its GMRES does not converge) through a recursively blocked LU whose bulk is nalgebra's
+//! matrix product; and the inner product of long rows ([`dot`]).
 
 use std::ops::Range;
 
