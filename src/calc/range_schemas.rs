@@ -119,8 +119,8 @@ pub fn roughness_pair() -> ArrayBuilder {
 /// A custom fidelity's `grid`.
 pub fn grid() -> ArrayBuilder {
     number_array(
-        "Cells [along the sliding direction, across], each 2 … 4096; see the calculation for its own ranges.",
-        (2.0, 4096.0),
+        "Cells [along the sliding direction, across], each 1 … 4096 (1 across for a 1-D film: the EHL line contact, the piston ring); see the calculation for its own ranges.",
+        (1.0, 4096.0),
         (2, 2),
         true,
         serde_json::json!([96, 12]),

@@ -6,6 +6,7 @@ pub mod dense;
 pub mod driver;
 pub mod elliptic;
 pub mod fft;
+pub mod gmres;
 pub mod half_space;
 pub mod interpolate;
 pub mod multigrid;

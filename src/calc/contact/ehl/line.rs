@@ -27,8 +27,10 @@ use nalgebra::DMatrix;
 
 use super::fluid::Fluid;
 use crate::fidelity::{IterationUnit, SolverReport};
+use crate::numerics::band_lu::{Band, BandLu};
 use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
+use crate::numerics::gmres;
 use crate::numerics::half_space::line_log_influence;
 use crate::numerics::interpolate::linear;
 use crate::numerics::newton::{self, LineSearch, NewtonSystem};
@@ -45,6 +47,18 @@ const LINE_SEARCH: LineSearch = LineSearch {
 };
 /// Converged when the scaled residual (a pressure change, in units of p_h) is below this.
 const TOLERANCE: f64 = 1e-10;
+/// The Newton direction's relative linear residual: the scaled residual of the iterate, kept
+/// within these (inexact Newton with a forcing proportional to the residual: quadratic).
+const FORCING_MAX: f64 = 1e-3;
+const FORCING_MIN: f64 = 1e-12;
+/// Half-width of the deformation band kept in the preconditioner ([`BandedPart`]).
+/// Measured on the accuracy bench's cases (M = 20 … 1000, L = 10, 128 … 2048 cells): GMRES
+/// took about 8–28 iterations per Newton step at 2048 cells with 8, 3–14 with 64; 32 was the
+/// fastest overall (the band LU costs n·b² and each of its solves n·b).
+const PRECONDITIONER_BAND: usize = 32;
+/// GMRES: Krylov vectors per cycle, and iterations before the dense fallback.
+const GMRES_RESTART: usize = 60;
+const GMRES_MAX_ITERATIONS: usize = 240;
 
 /// The problem in dimensionless form.
 #[derive(Debug, Clone, Copy)]
@@ -114,8 +128,7 @@ impl Grid {
         let hertz: Vec<f64> = x.iter().map(|&x| hertz_pressure(x)).collect();
         let base = (0..n)
             .map(|i| {
-                let row = &kernel[i * n..(i + 1) * n];
-                let discrete: f64 = row.iter().zip(&hertz).map(|(k, p)| k * p).sum();
+                let discrete = dense::dot(&kernel[i * n..(i + 1) * n], &hertz);
                 0.5 * x[i] * x[i] - hertz_deformation(x[i]) + discrete / PI
             })
             .collect();
@@ -152,8 +165,7 @@ impl Grid {
         let n = self.nodes();
         (0..n)
             .map(|i| {
-                let row = &self.kernel[i * n..(i + 1) * n];
-                let deformation: f64 = row.iter().zip(pressure).map(|(k, p)| k * p).sum();
+                let deformation = dense::dot(&self.kernel[i * n..(i + 1) * n], pressure);
                 h0 + self.base[i] - deformation / PI
             })
             .collect()
@@ -292,19 +304,24 @@ impl LineProblem {
             .fold((state.load_error / FRAC_PI_2).abs(), f64::max)
     }
 
-    /// The Newton matrix and right-hand side over the unknowns [P₁ … P_{n−2}, H₀].
-    fn newton_system(
+    /// The Newton system over the unknowns [P₁ … P_{n−2}, H₀] in its parts: the local
+    /// coefficients of each row, its film coefficients (the dense part is their product with
+    /// the influence matrix), the H₀ column, the load row (the cell widths) and the right-hand
+    /// side.
+    fn jacobian(
         &self,
         grid: &Grid,
         state: &State,
         pressure: &[f64],
         cavitated: &[bool],
-    ) -> (DMatrix<f64>, Vec<f64>) {
+    ) -> Jacobian {
         let n = grid.nodes();
         let unknowns = n - 1; // interior nodes n − 2, plus H₀
-        let h0_col = unknowns - 1;
-        let mut jacobian = DMatrix::<f64>::zeros(unknowns, unknowns);
+        let mut local = vec![[0.0; 4]; n - 2];
+        let mut film = vec![[(0, 0.0); 6]; n];
+        let mut h0 = vec![0.0; n - 2];
         let mut rhs = vec![0.0; unknowns];
+        let mut scale = vec![1.0; unknowns];
         // ∂ε_m/∂H_m (zero where the film is at its floor).
         let epsilon_per_film: Vec<f64> = (0..n)
             .map(|m| {
@@ -315,13 +332,10 @@ impl LineProblem {
                 }
             })
             .collect();
-        // Per row: ∂Rᵢ/∂H_m for the (up to six) nodes whose film enters Rᵢ; the dense part of
-        // the Jacobian is Σ_m ∂Rᵢ/∂H_m · ∂H_m/∂P_k, filled column by column below.
-        let mut film_coeffs: Vec<[(usize, f64); 6]> = vec![[(0, 0.0); 6]; n];
         for i in 1..n - 1 {
             let row = i - 1;
             if cavitated[i] {
-                jacobian[(row, row)] = 1.0;
+                local[row][2] = 1.0;
                 rhs[row] = -pressure[i];
                 continue;
             }
@@ -332,49 +346,42 @@ impl LineProblem {
             // Half the pressure gradients at the faces: dRᵢ/dε_m of the face means.
             let grad_e = 0.5 * (pressure[i + 1] - pressure[i]) / dx_e;
             let grad_w = 0.5 * (pressure[i] - pressure[i - 1]) / dx_w;
-            let mut local = |m: usize, c: f64| {
+            // Slot m + 2 − i holds node m (m = i − 2 … i + 1); the boundary nodes are not
+            // unknowns.
+            let mut add = |m: usize, c: f64| {
                 if (1..n - 1).contains(&m) {
-                    jacobian[(row, m - 1)] += c;
+                    local[row][m + 2 - i] += c;
                 }
             };
-            let coeffs = &mut film_coeffs[i];
+            let coeffs = &mut film[i];
             // dQᵢ/dε_m for m = i − 1, i, i + 1, through the film and locally through P_m.
             for (slot, (m, c)) in [(i - 1, -grad_w), (i, grad_e - grad_w), (i + 1, grad_e)]
                 .into_iter()
                 .enumerate()
             {
                 coeffs[slot] = (m, c * epsilon_per_film[m]);
-                local(m, c * state.epsilon_slope[m]);
+                add(m, c * state.epsilon_slope[m]);
             }
             for (m, c) in [(i - 1, west), (i, -(east + west)), (i + 1, east)] {
-                local(m, c);
+                add(m, c);
             }
             for (slot, (m, w)) in grid.wedge(i).into_iter().enumerate() {
                 coeffs[3 + slot] = (m, -w * state.density[m]);
-                local(m, -w * state.density_slope[m] * state.film[m]);
+                add(m, -w * state.density_slope[m] * state.film[m]);
             }
-            jacobian[(row, h0_col)] = coeffs.iter().map(|&(_, c)| c).sum();
+            h0[row] = coeffs.iter().map(|&(_, c)| c).sum();
             rhs[row] = -state.residual[i];
+            scale[row] = state.diagonal[i];
         }
-        for k in 1..n - 1 {
-            // Column-major storage: column k − 1 is contiguous.
-            let column = &mut jacobian.as_mut_slice()[(k - 1) * unknowns..k * unknowns];
-            for i in 1..n - 1 {
-                if cavitated[i] {
-                    continue;
-                }
-                let dense: f64 = film_coeffs[i]
-                    .iter()
-                    .map(|&(m, c)| c * grid.influence(m, k))
-                    .sum();
-                column[i - 1] -= dense / PI;
-            }
+        rhs[unknowns - 1] = -state.load_error;
+        scale[unknowns - 1] = FRAC_PI_2;
+        Jacobian {
+            local,
+            film,
+            h0,
+            rhs,
+            scale,
         }
-        for k in 1..n - 1 {
-            jacobian[(h0_col, k - 1)] = grid.volume[k];
-        }
-        rhs[h0_col] = -state.load_error;
-        (jacobian, rhs)
     }
 
     /// Solve on `cells` cells, starting from `start` (interpolated onto this grid) or from the
@@ -431,15 +438,197 @@ impl LineProblem {
     }
 }
 
+/// The Newton matrix of one iterate, in parts ([`LineProblem::jacobian`]): row i − 1 of
+/// interior node i is Σ_{m = i−2}^{i+1} local·P_m + Σ_m film_m·(H₀ − (1/π)Σ_k K_{mk}P_k), and
+/// the last row the load Σ_k V_k P_k. Its product costs one pass over the influence matrix,
+/// its factorisation is never needed: the direction comes from GMRES ([`gmres`]) on the
+/// product, preconditioned by the [`BandedPart`].
+struct Jacobian {
+    /// Per row: the coefficients on P at nodes i − 2 … i + 1 at fixed film; a cavitated row is
+    /// 1 on its own node.
+    local: Vec<[f64; 4]>,
+    /// Per node i: ∂Rᵢ/∂H_m for the (up to six) nodes m whose film enters Rᵢ; none where i is
+    /// cavitated.
+    film: Vec<[(usize, f64); 6]>,
+    /// ∂Rᵢ/∂H₀ per row: the sum of its film coefficients.
+    h0: Vec<f64>,
+    rhs: Vec<f64>,
+    /// Each row's unit in the merit ([`LineProblem::merit`]): |∂Rᵢ/∂Pᵢ| at pressurised nodes,
+    /// 1 at cavitated ones, π/2 for the load. GMRES solves the rows divided by it, so that its
+    /// residual norm weighs the rows as the Newton iteration's convergence test does.
+    scale: Vec<f64>,
+}
+
+impl Jacobian {
+    /// The dense-part entry of row `i` (a node) in the column of node `k`: −(1/π)Σ_m film_m K_{mk}.
+    fn deformation(&self, grid: &Grid, i: usize, k: usize) -> f64 {
+        -self.film[i]
+            .iter()
+            .map(|&(m, c)| c * grid.influence(m, k))
+            .sum::<f64>()
+            / PI
+    }
+
+    /// out = J v.
+    fn apply(&self, grid: &Grid, v: &[f64], out: &mut [f64]) {
+        let n = grid.nodes();
+        let mut full = vec![0.0; n];
+        full[1..n - 1].copy_from_slice(&v[..n - 2]);
+        let h0 = v[n - 2];
+        // The film change at every node: H₀ − (1/π)Σ_k K_{mk}P_k.
+        let film: Vec<f64> = grid
+            .kernel
+            .chunks_exact(n)
+            .map(|row| h0 - dense::dot(row, &full) / PI)
+            .collect();
+        for i in 1..n - 1 {
+            let local: f64 = (0..4)
+                .filter(|&s| i + s >= 2)
+                .map(|s| self.local[i - 1][s] * full[i + s - 2])
+                .sum();
+            let through_film: f64 = self.film[i].iter().map(|&(m, c)| c * film[m]).sum();
+            out[i - 1] = local + through_film;
+        }
+        out[n - 2] = grid.volume[1..n - 1]
+            .iter()
+            .zip(&full[1..n - 1])
+            .map(|(w, p)| w * p)
+            .sum();
+    }
+
+    /// The whole matrix, for the direct solve GMRES falls back on.
+    fn dense(&self, grid: &Grid) -> DMatrix<f64> {
+        let n = grid.nodes();
+        let unknowns = n - 1;
+        DMatrix::from_fn(unknowns, unknowns, |row, col| {
+            if row == unknowns - 1 {
+                return if col < unknowns - 1 {
+                    grid.volume[col + 1]
+                } else {
+                    0.0
+                };
+            }
+            if col == unknowns - 1 {
+                return self.h0[row];
+            }
+            let (i, k) = (row + 1, col + 1);
+            let local = if k + 2 >= i && k <= i + 1 {
+                self.local[row][k + 2 - i]
+            } else {
+                0.0
+            };
+            local + self.deformation(grid, i, k)
+        })
+    }
+
+    /// The direction: [`Jacobian::krylov`] to the relative residual `forcing` (Dembo,
+    /// Eisenstat & Steihaug's inexact Newton: a forcing that falls with the residual keeps the
+    /// convergence quadratic); the dense LU of the whole matrix when GMRES does not get there
+    /// (or the banded part is singular).
+    fn solve(&self, grid: &Grid, forcing: f64) -> Option<Vec<f64>> {
+        match self.krylov(grid, forcing) {
+            Some((step, outcome)) if outcome.converged && step.iter().all(|v| v.is_finite()) => {
+                Some(step)
+            }
+            _ => dense::solve_large(self.dense(grid), &self.rhs),
+        }
+    }
+
+    /// GMRES on the rows over their [`Jacobian::scale`] until the linear residual is
+    /// `tolerance` of the right-hand side's, right preconditioned by the [`BandedPart`];
+    /// `None` when that is singular.
+    fn krylov(&self, grid: &Grid, tolerance: f64) -> Option<(Vec<f64>, gmres::Outcome)> {
+        let band = BandedPart::new(self, grid)?;
+        let b: Vec<f64> = self
+            .rhs
+            .iter()
+            .zip(&self.scale)
+            .map(|(r, s)| r / s)
+            .collect();
+        let apply = |v: &[f64], out: &mut [f64]| {
+            self.apply(grid, v, out);
+            out.iter_mut().zip(&self.scale).for_each(|(o, s)| *o /= s);
+        };
+        let settings = gmres::Settings {
+            tolerance,
+            restart: GMRES_RESTART,
+            max_iterations: GMRES_MAX_ITERATIONS,
+        };
+        Some(gmres::solve(&b, apply, |v| band.solve(v), settings))
+    }
+}
+
+/// The preconditioner: the Jacobian's rows over their [`Jacobian::scale`] (the system GMRES
+/// solves), with the dense part cut to the band |i − k| ≤ [`PRECONDITIONER_BAND`] (the local
+/// stencil and the strongest deformation couplings, those of nearby nodes), bordered by the H₀
+/// column and the load row; solved by a band LU (on the scaled rows, whose pivots are of one
+/// order) and block elimination of the border: for M = [A c; dᵀ 0], H₀ = (dᵀA⁻¹r − s)/(dᵀA⁻¹c)
+/// and P = A⁻¹(r − cH₀). O(n) to build and to apply.
+struct BandedPart {
+    band: BandLu,
+    /// A⁻¹c, and the load row d.
+    inverse_h0: Vec<f64>,
+    load: Vec<f64>,
+    /// dᵀA⁻¹c.
+    schur: f64,
+}
+
+impl BandedPart {
+    fn new(jacobian: &Jacobian, grid: &Grid) -> Option<Self> {
+        let n = grid.nodes();
+        let w = PRECONDITIONER_BAND;
+        let scale = &jacobian.scale;
+        let mut a = Band::zeros(n - 2, w, w);
+        for i in 1..n - 1 {
+            let row = i - 1;
+            for s in 0..4 {
+                // Node i + s − 2, when an unknown (1 … n − 2).
+                if (3..=n).contains(&(i + s)) {
+                    a.add(row, i + s - 3, jacobian.local[row][s] / scale[row]);
+                }
+            }
+            for k in i.saturating_sub(w).max(1)..=(i + w).min(n - 2) {
+                a.add(row, k - 1, jacobian.deformation(grid, i, k) / scale[row]);
+            }
+        }
+        let band = a.lu().ok()?;
+        let mut inverse_h0: Vec<f64> = jacobian.h0.iter().zip(scale).map(|(c, s)| c / s).collect();
+        band.solve(&mut inverse_h0);
+        let load: Vec<f64> = grid.volume[1..n - 1]
+            .iter()
+            .map(|v| v / scale[n - 2])
+            .collect();
+        let schur = dense::dot(&load, &inverse_h0);
+        (schur.is_finite() && schur != 0.0).then_some(BandedPart {
+            band,
+            inverse_h0,
+            load,
+            schur,
+        })
+    }
+
+    /// v ← M⁻¹v.
+    fn solve(&self, v: &mut [f64]) {
+        let m = v.len() - 1;
+        let (pressure, h0) = v.split_at_mut(m);
+        self.band.solve(pressure);
+        let step = (dense::dot(&self.load, pressure) - h0[0]) / self.schur;
+        pressure
+            .iter_mut()
+            .zip(&self.inverse_h0)
+            .for_each(|(p, z)| *p -= z * step);
+        h0[0] = step;
+    }
+}
+
 /// One iterate's state and its scaled residual ([`LineProblem::merit`]).
 struct Iterate {
     state: State,
     merit: f64,
 }
 
-/// The coupled Newton system on one grid: unknowns (P at the nodes, H₀); the direction by LU
-/// with partial pivoting of the dense Jacobian ([`dense::solve_large`]: the deformation makes it
-/// dense, and it has up to 2048 unknowns).
+/// The coupled Newton system on one grid: unknowns (P at the nodes, H₀); the direction by
+/// preconditioned GMRES on the exact Jacobian ([`Jacobian::solve`]).
 struct LineNewton<'a> {
     problem: &'a LineProblem,
     grid: &'a Grid,
@@ -462,10 +651,10 @@ impl NewtonSystem for LineNewton<'_> {
 
     fn direction(&self, (pressure, _): &(Vec<f64>, f64), at: &Iterate) -> Option<Vec<f64>> {
         let cavitated = LineProblem::cavitated(&at.state, pressure);
-        let (jacobian, rhs) = self
+        let jacobian = self
             .problem
-            .newton_system(self.grid, &at.state, pressure, &cavitated);
-        dense::solve_large(jacobian, &rhs)
+            .jacobian(self.grid, &at.state, pressure, &cavitated);
+        jacobian.solve(self.grid, at.merit.clamp(FORCING_MIN, FORCING_MAX))
     }
 
     /// The damped step, projected: P ≥ 0, and P = 0 at the two ends.
@@ -516,6 +705,101 @@ fn hertz_deformation(x: f64) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::calc::lubricant::model::PressureLaw;
+
+    /// Moes' M = 200 with αp_h = 24 (Barus, Dowson–Higginson density) on the numerical room's
+    /// shortest domain.
+    fn problem() -> LineProblem {
+        let film_guess = 0.01;
+        LineProblem {
+            fluid: Fluid {
+                law: PressureLaw::Barus { alpha_1_pa: 2e-8 },
+                eta0_pa_s: 0.05,
+                hertz_pressure_pa: 1.2e9,
+                compressible: true,
+            },
+            lambda: 3.0 * PI * PI / (8.0 * 200.0 * 200.0),
+            inlet: -4.5,
+            outlet: 1.5,
+            film_guess,
+        }
+    }
+
+    /// The Newton system of the 256-cell grid at the 128-cell solution (the iterate the level
+    /// ladder starts from: cavitated outlet, pressure spike).
+    fn system() -> (LineProblem, Grid, Vec<f64>, f64, State, Vec<bool>) {
+        let problem = problem();
+        let coarse = problem.solve(128, None, &Budget::unlimited()).unwrap();
+        let grid = Grid::new(&problem, 256);
+        let pressure: Vec<f64> = grid
+            .x
+            .iter()
+            .map(|&x| linear(&coarse.x, &coarse.pressure, x))
+            .collect();
+        let state = problem.state(&grid, &pressure, coarse.h0);
+        let cavitated = LineProblem::cavitated(&state, &pressure);
+        (problem, grid, pressure, coarse.h0, state, cavitated)
+    }
+
+    #[test]
+    fn the_jacobian_product_matches_differences_of_the_residual() {
+        let (problem, grid, pressure, h0, state, cavitated) = system();
+        assert!(cavitated.iter().filter(|&&c| c).count() > 10);
+        let jacobian = problem.jacobian(&grid, &state, &pressure, &cavitated);
+        let n = grid.nodes();
+        // A smooth direction over the pressurised zone and a change of H₀.
+        let mut v: Vec<f64> = (1..n - 1)
+            .map(|i| {
+                let x = grid.x[i];
+                if pressure[i] > 0.0 {
+                    (1.0 - x * x).max(0.0) * (1.0 + 0.3 * (5.0 * x).sin())
+                } else {
+                    0.0
+                }
+            })
+            .collect();
+        v.push(0.02);
+        let mut product = vec![0.0; n - 1];
+        jacobian.apply(&grid, &v, &mut product);
+        let delta = 1e-6;
+        let shifted = |t: f64| {
+            let mut p = pressure.clone();
+            for i in 1..n - 1 {
+                p[i] += t * v[i - 1];
+            }
+            problem.state(&grid, &p, h0 + t * v[n - 2])
+        };
+        let (up, down) = (shifted(delta), shifted(-delta));
+        for i in (1..n - 1).filter(|&i| !cavitated[i]) {
+            let difference = (up.residual[i] - down.residual[i]) / (2.0 * delta);
+            let tolerance = 1e-5 * (difference.abs() + state.diagonal[i]);
+            assert!(
+                (product[i - 1] - difference).abs() < tolerance,
+                "row {i}: {} vs {difference}",
+                product[i - 1]
+            );
+        }
+        let load = (up.load_error - down.load_error) / (2.0 * delta);
+        assert!(
+            (product[n - 2] - load).abs() < 1e-8,
+            "{} vs {load}",
+            product[n - 2]
+        );
+    }
+
+    #[test]
+    fn the_krylov_direction_matches_the_dense_lu() {
+        let (problem, grid, pressure, _, state, cavitated) = system();
+        let jacobian = problem.jacobian(&grid, &state, &pressure, &cavitated);
+        let direct = dense::solve_large(jacobian.dense(&grid), &jacobian.rhs).unwrap();
+        // GMRES gets there itself (no fall-back to the dense LU).
+        let (krylov, outcome) = jacobian.krylov(&grid, 1e-12).unwrap();
+        assert!(outcome.converged, "{outcome:?}");
+        let scale = direct.iter().fold(0.0f64, |m, v| m.max(v.abs()));
+        for (k, d) in krylov.iter().zip(&direct) {
+            assert!((k - d).abs() < 1e-8 * scale, "{k} vs {d}");
+        }
+    }
 
     #[test]
     fn hertz_deformation_matches_quadrature() {

@@ -550,6 +550,9 @@ fn bad_requests_name_their_fields() {
     assert_eq!(invalid_pointers::<Ehl>(&r), ["/fidelity"]);
     r["fidelity"] = json!({"grid": [33, 1]});
     assert_eq!(invalid_pointers::<Ehl>(&r), ["/fidelity/grid"]);
+    // The line contact's explicit grid is [cells, 1], within the shared grid range.
+    r["fidelity"] = json!({"grid": [64, 1]});
+    assert_eq!(ok::<Ehl>(&r)["solver"]["grid"][0], json!(64));
     let mut r = at(50.0, 10.0);
     r["body1"]["radius_y_m"] = json!(0.01);
     assert_eq!(invalid_pointers::<Ehl>(&r), ["/body1/radius_y_m"]);
