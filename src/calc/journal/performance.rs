@@ -240,25 +240,7 @@ pub fn positioned_film(
         // A deadline is not a wandering secant.
         Some(Err(e @ CalcError::DeadlineExceeded)) => return Err(e),
         _ => {
-            let mut failure = None;
-            let root = brent(
-                |phi| {
-                    mismatch(phi).unwrap_or_else(|e| {
-                        failure.get_or_insert(e);
-                        f64::NAN
-                    })
-                },
-                lowest,
-                highest,
-                roots::Stopping {
-                    x_tolerance,
-                    max_iterations: 100,
-                },
-            );
-            if let Some(e) = failure {
-                return Err(e);
-            }
-            match root {
+            match brent_or_failure(&mut mismatch, (lowest, highest), x_tolerance)? {
                 Ok(r) => r.x,
                 Err(e @ RootError::NotConverged { .. }) => {
                     return Err(CalcError::from_root("brent_attitude", e))
@@ -283,6 +265,31 @@ pub fn positioned_film(
         return Err(no_attitude(&model));
     }
     Ok((film, f, p))
+}
+
+/// Brent's search (at most 100 steps) for a root of `f` in `bracket`, where an evaluation may
+/// fail: the first failure, else the search's answer.
+fn brent_or_failure(
+    mut f: impl FnMut(f64) -> Result<f64, CalcError>,
+    (lo, hi): (f64, f64),
+    x_tolerance: f64,
+) -> Result<Result<roots::Root, RootError>, CalcError> {
+    let mut failure = None;
+    let root = brent(
+        |x| {
+            f(x).unwrap_or_else(|e| {
+                failure.get_or_insert(e);
+                f64::NAN
+            })
+        },
+        lo,
+        hi,
+        roots::Stopping {
+            x_tolerance,
+            max_iterations: 100,
+        },
+    );
+    failure.map_or(Ok(root), Err)
 }
 
 /// Secant steps on the attitude mismatch from `guess`, the first with the slope −1, each at
@@ -891,25 +898,7 @@ impl Searcher<'_> {
         x_tolerance: f64,
         budget: &Budget,
     ) -> Result<f64, CalcError> {
-        let mut failure = None;
-        let root = brent(
-            |u| match self.residual(method, u, budget) {
-                Ok(r) => r,
-                Err(e) => {
-                    failure.get_or_insert(e);
-                    f64::NAN
-                }
-            },
-            lo,
-            hi,
-            roots::Stopping {
-                x_tolerance,
-                max_iterations: 100,
-            },
-        );
-        if let Some(e) = failure {
-            return Err(e);
-        }
+        let root = brent_or_failure(|u| self.residual(method, u, budget), (lo, hi), x_tolerance)?;
         match root {
             Ok(r) => Ok(r.x),
             Err(RootError::NoSignChange { fa, fb, .. }) => Err(self.target.out_of_reach(fa, fb)),
