@@ -230,8 +230,10 @@ fn ehl_point(out: &mut String) {
     ];
     // The reference: at light loads (M < 500) the same solver with the inlet and the sides
     // three times as far, on 1024² cells, where the domain's truncation is below 0.02 % (see
-    // `solve::Truncation`); at heavy loads, where the truncation is below 0.05 %, on 2048² cells,
-    // finer than the wire allows (the levels stop at 1024²). Where its cycles diverge it falls
+    // `solve::Truncation`); at heavy loads on the wire's domain on 2048² cells, finer than the
+    // wire allows (the levels stop at 1024²): neither it nor the levels correct a heavy load's
+    // truncation, so the rows cannot show it (measured at M = 1000 within the grid's error: see
+    // `solve::HEAVY_MENISCUS`). Where its cycles diverge it falls
     // back to 1024² or 512² (`grid_fallback`); the reference rows give the grid it reached and
     // its estimates. Each with the time of its one solve, ms.
     let reference = |m: f64, l: f64, ratio: f64| {
@@ -262,7 +264,9 @@ fn ehl_point(out: &mut String) {
     out.push_str("the minimum film (a parabola's vertex between nodes), both Richardson-extrapolated and corrected for the domain's\n");
     out.push_str("truncation (the change when the domain is doubled, on a coarse aligned pair), against the same solver through\n");
     out.push_str("`numerical::point_reference`: at M < 500 on a domain with the inlet and sides three times as far (truncation below\n");
-    out.push_str("0.02 %) on 1024² cells, at M ≥ 1000 on the wire's domain on 2048² cells (finer than the wire's 1024²), or the grid\n");
+    out.push_str("0.02 %) on 1024² cells, at M ≥ 1000 on the wire's domain on 2048² cells (finer than the wire's 1024²; neither it nor\n");
+    out.push_str("the levels correct a heavy load's truncation, which these rows therefore cannot show: measured at M = 1000, 0.16 % in\n");
+    out.push_str("h_c and 0.00 % in h_min against the doubled domain on 2048² cells, within the grid's error), or the grid\n");
     out.push_str("it falls back to where the finer cycles diverge (the `reference` rows give its grid, estimates and one solve's time);\n");
     out.push_str("`grid` is the cells per direction the level ended on (each\n");
     out.push_str("level steps up from 64², 128², 256² while an estimate exceeds its tolerance: fast 10 %/10 % up to 128², standard\n");

@@ -34,8 +34,8 @@ pub struct Settings {
 }
 
 /// Solves A x = b from x = 0: `apply(v, out)` sets out = A v, `precondition(v)` replaces v by
-/// M⁻¹v. Returns x and how the iteration ended (x is the best iterate either way; the caller
-/// judges a non-converged one).
+/// M⁻¹v. Returns x and how the iteration ended (x is the last iterate either way, which may
+/// not be finite when the iteration broke down; the caller judges a non-converged one).
 pub fn solve(
     b: &[f64],
     mut apply: impl FnMut(&[f64], &mut [f64]),

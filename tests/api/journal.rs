@@ -370,7 +370,8 @@ fn turbulent_film_is_decided_reported_and_tends_to_laminar() {
 /// pressure while the bearing still carries its load; a tilt that makes the journal touch is
 /// refused with the reason. At ε′ = 1.5 the journal still floats (h_min 0.06 C at one end, the
 /// line of centres 66° from the load): the attitude search once refused it because the end of
-/// its bracket, φ = 0, touched; at ε′ = 1.85 no attitude keeps both ends off the bearing under this load.
+/// its bracket, φ = 0, touched (it now keeps to the attitudes where the film is clear); at
+/// ε′ = 1.85 no attitude keeps both ends off the bearing under this load.
 #[test]
 fn misalignment_is_solved_on_the_whole_length() {
     let bearing = |slope: f64| {

@@ -1,7 +1,7 @@
 //! A plain journal bearing's dimensionless performance at one eccentricity ratio, by the method
 //! the fidelity asks for, and the equilibrium eccentricity for a given Sommerfeld number.
 
-use std::f64::consts::PI;
+use std::f64::consts::{FRAC_PI_2, PI};
 
 use super::closed_form::{self, Boundary};
 use super::eccentricity::EccentricityRatio;
@@ -208,8 +208,13 @@ pub fn positioned_film(
     };
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
     // equilibrium lies between (an arc wholly in the diverging film carries nothing).
-    // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°.
-    let (lowest, highest) = (0.0, 0.75 * PI);
+    // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°. A tilted
+    // journal touches at some attitudes: the search keeps to the widest interval where it does
+    // not (geometry alone, no film solve), so that whether a load is refused does not depend
+    // on where the search starts.
+    let (lowest, highest) = clear_interval(|phi| place(phi).min_thickness() > TOUCHING, 0.75 * PI)
+        .ok_or_else(|| touching(eps))?;
+    let narrowed = lowest > 0.0 || highest < 0.75 * PI;
     let mut warm = start.field;
     // The last film solved, at its φ: the answer when the search ends on it.
     let mut last: Option<(f64, FilmSolution, Vec<f64>)> = None;
@@ -245,6 +250,8 @@ pub fn positioned_film(
                 Err(e @ RootError::NotConverged { .. }) => {
                     return Err(CalcError::from_root("brent_attitude", e))
                 }
+                // Every attitude that balances the load touches.
+                Err(_) if narrowed => return Err(touching(eps)),
                 Err(_) => {
                     // Not "/misalignment": that pointer means the journal touches.
                     return Err(no_attitude(&model));
@@ -265,6 +272,53 @@ pub fn positioned_film(
         return Err(no_attitude(&model));
     }
     Ok((film, f, p))
+}
+
+/// The widest interval of [0, `end`] where `clear` holds, its ends found to 1e-9 by bisection
+/// from a scan of 64 steps; None where it holds nowhere on the scan.
+fn clear_interval(clear: impl Fn(f64) -> bool, end: f64) -> Option<(f64, f64)> {
+    const STEPS: usize = 64;
+    let at = |k: usize| end * k as f64 / STEPS as f64;
+    let ok: Vec<bool> = (0..=STEPS).map(|k| clear(at(k))).collect();
+    // The longest run of clear scan points.
+    let (mut best, mut run_start) = (None::<(usize, usize)>, None);
+    for (k, &clear_here) in ok.iter().enumerate() {
+        match (clear_here, run_start) {
+            (true, None) => run_start = Some(k),
+            (false, Some(s)) => {
+                if best.is_none_or(|(a, b)| k - 1 - s > b - a) {
+                    best = Some((s, k - 1));
+                }
+                run_start = None;
+            }
+            _ => {}
+        }
+    }
+    if let Some(s) = run_start {
+        if best.is_none_or(|(a, b)| STEPS - s > b - a) {
+            best = Some((s, STEPS));
+        }
+    }
+    let (a, b) = best?;
+    // An end inside [0, end] lies between a clear point and the touching one beside it.
+    let edge = |mut inside: f64, mut outside: f64| {
+        while (inside - outside).abs() > 1e-9 {
+            let mid = 0.5 * (inside + outside);
+            if clear(mid) {
+                inside = mid;
+            } else {
+                outside = mid;
+            }
+        }
+        inside
+    };
+    let lo = if a == 0 { 0.0 } else { edge(at(a), at(a - 1)) };
+    let hi = if b == STEPS {
+        end
+    } else {
+        edge(at(b), at(b + 1))
+    };
+    Some((lo, hi))
 }
 
 /// Brent's search (at most 100 steps) for a root of `f` in `bracket`, where an evaluation may
@@ -317,7 +371,8 @@ fn attitude_secant(
         }
         let next = step_to(x1, -f1 / slope);
         if (next - x1).abs() < x_tolerance {
-            return Ok(Some(x1));
+            // A root, not the angle's ±180° jump.
+            return Ok((f1.abs() < FRAC_PI_2).then_some(x1));
         }
         if !(lowest..=highest).contains(&next) {
             return Ok(None);
@@ -1033,6 +1088,23 @@ struct Start {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn the_clear_interval_is_the_widest_run_with_its_ends_refined() {
+        let end = 0.75 * PI;
+        assert_eq!(clear_interval(|_| true, end), Some((0.0, end)));
+        assert_eq!(clear_interval(|_| false, end), None);
+        // Clear on (0.3, 1.1) and (1.5, 1.6): the first, its ends to 1e-9.
+        let (lo, hi) = clear_interval(|x| (0.3 < x && x < 1.1) || (1.5 < x && x < 1.6), end)
+            .expect("an interval");
+        assert!(
+            (lo - 0.3).abs() < 2e-9 && (hi - 1.1).abs() < 2e-9,
+            "{lo} {hi}"
+        );
+        // Clear from the start up to 0.5.
+        let (lo, hi) = clear_interval(|x| x < 0.5, end).expect("an interval");
+        assert!(lo == 0.0 && (hi - 0.5).abs() < 2e-9, "{hi}");
+    }
 
     /// The two-stage search: a coarse Brent and a few fine secant steps; the load is carried to
     /// 1e-6 and the whole search costs under 20 film solves.

@@ -349,6 +349,8 @@ struct Films {
     discretisation: f64,
     cycles_left: f64,
     truncation: f64,
+    /// The minimum film's share of the domain's truncation.
+    min_truncation: f64,
     /// The second-finest level closed the minimum film: it is the finest level's, not extrapolated.
     min_extrapolated: bool,
 }
@@ -414,6 +416,7 @@ impl Films {
             discretisation,
             cycles_left,
             truncation: domain(truncation.central),
+            min_truncation: domain(truncation.min),
             central: central * (1.0 + TRUNCATION_GAIN * truncation.central),
             min: min * (1.0 + TRUNCATION_GAIN * truncation.min),
             min_y,
@@ -441,15 +444,20 @@ pub fn solve_point(
     let started = Instant::now();
     let (solved, cells, mut warnings) =
         solve_levels(problem, grids.cells, grids.accuracy(), budget)?;
+    // The first solve's time, which a step-up's cost is judged by.
+    let first_time = started.elapsed();
     // A widened domain (the accuracy bench's reference) is not corrected: its truncation is
     // below 0.02 %, and a doubled domain's coarse pair would only add its own error. Nor is a
-    // heavily loaded contact's (see HEAVY_MENISCUS).
-    let measured = if grids.domain_scale == 1.0
-        && fully_flooded_meniscus(problem.film_guess) > HEAVY_MENISCUS
+    // heavily loaded contact's (see HEAVY_MENISCUS). The doubled domain costs about what the
+    // first solve did: when the deadline does not leave that, the films go uncorrected.
+    let measured = if grids.domain_scale != 1.0
+        || fully_flooded_meniscus(problem.film_guess) <= HEAVY_MENISCUS
     {
-        Truncation::measure(problem, &solved, grids.accuracy(), budget)?
-    } else {
         Ok(Truncation::default())
+    } else if !budget.allows(first_time) {
+        Err("the deadline leaves too little time for the doubled domain".to_owned())
+    } else {
+        Truncation::measure(problem, &solved, grids.accuracy(), budget)?
     };
     let truncation = measured.unwrap_or_else(|why| {
         warnings.push(Warning {
@@ -467,7 +475,7 @@ pub fn solve_point(
     };
     let mut films = Films::of(&solved, cells, truncation);
     let mut levels = solved;
-    let mut last_time = started.elapsed();
+    let mut last_time = first_time;
     let first_errors = films.as_ref().ok().map(|f| (f.central_error, f.min_error));
     let mut cells = cells;
     // Why the step-up ended short of the tolerances, when it did.
@@ -523,13 +531,21 @@ pub fn solve_point(
         });
     }
     if !films.within(&grids) {
+        // A finer grid does not reduce the domain's share.
+        let remedy = if films.truncation >= 0.5 * grids.central_tolerance
+            || films.min_truncation >= 0.5 * grids.min_tolerance
+        {
+            format!("the domain's truncation, which a finer grid does not reduce, takes {:.2} % (central) and {:.2} % (minimum) of them", films.truncation * 100.0, films.min_truncation * 100.0)
+        } else {
+            "the Hertz zone is thin for this grid; a higher fidelity resolves it".to_owned()
+        };
         let why = limited_by.map_or_else(
             || format!("on {}² cells, the finest this level tries", films.cells),
             |why| format!("on {}² cells ({why})", films.cells),
         );
         warnings.push(Warning {
             code: "grid_limited",
-            message: format!("the films' estimated errors, central {:.2} % ({:.2} % the grid's, {:.2} % the cycles', {:.2} % the domain's) and minimum {:.2} %, exceed the level's {:.1} % and {:.1} % {why}: the Hertz zone is thin for this grid; a higher fidelity resolves it", films.central_error * 100.0, films.discretisation * 100.0, films.cycles_left * 100.0, films.truncation * 100.0, films.min_error * 100.0, grids.central_tolerance * 100.0, grids.min_tolerance * 100.0),
+            message: format!("the films' estimated errors, central {:.2} % ({:.2} % the grid's, {:.2} % the cycles', {:.2} % the domain's) and minimum {:.2} %, exceed the level's {:.1} % and {:.1} % {why}: {remedy}", films.central_error * 100.0, films.discretisation * 100.0, films.cycles_left * 100.0, films.truncation * 100.0, films.min_error * 100.0, grids.central_tolerance * 100.0, grids.min_tolerance * 100.0),
         });
     }
     let fine = levels.pop().expect("the two finest levels");
