@@ -184,6 +184,9 @@ pub struct Whirl {
     /// Critical mass parameter m C ω²/W at the threshold; None: stable for any mass; 0 when
     /// k_eq ≤ 0 (no mass is stable).
     pub critical_mass_parameter: Option<f64>,
+    /// Lund's γ² as computed, of either sign (γ² ≤ 0: the film cannot whirl); continuous in
+    /// the coefficients, where `whirl_frequency_ratio` is not.
+    pub whirl_ratio_squared: f64,
 }
 
 /// k_eq = (k_xx c_yy + k_yy c_xx − k_xy c_yx − k_yx c_xy)/(c_xx + c_yy),
@@ -215,6 +218,7 @@ pub fn whirl_on_shaft(c: &Coefficients, shaft_flexibility: f64) -> Whirl {
         } else {
             unstable_possible.then(|| k_eq / gamma2 / (1.0 + shaft_flexibility * k_eq))
         },
+        whirl_ratio_squared: gamma2,
     }
 }
 
