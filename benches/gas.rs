@@ -49,6 +49,20 @@ fn gas(c: &mut Criterion) {
             r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "load_n": 300}}"#
         ),
     );
+    // With dynamics: the coefficients at ν = ω and the whirl threshold (Brent over the whirl
+    // ratio, one band LU of the doubled harmonic system per ratio and mesh).
+    for lambda in [1.0, 10.0] {
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+        let rpm = omega * 30.0 / std::f64::consts::PI;
+        request(
+            c,
+            &format!("gas journal L/D = 1, ε = 0.6, Λ = {lambda}, standard, with dynamics"),
+            "/v1/gas-bearings/journal",
+            &format!(
+                r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6, "dynamics": {{}}}}"#
+            ),
+        );
+    }
     for (name, pad) in [
         ("L/B = 1", r#"{"breadth_m": 0.02, "length_m": 0.02}"#),
         ("infinitely wide", r#"{"breadth_m": 0.02}"#),
