@@ -187,7 +187,7 @@ impl Validate for GasJournalInput {
             for (n, &r) in d.whirl_frequency_ratios.iter().enumerate() {
                 if !(0.0..=MAX_WHIRL_RATIO).contains(&r) {
                     errors.push(FieldError::new(
-                        &format!("/dynamics/whirl_frequency_ratios/{n}"),
+                        format!("/dynamics/whirl_frequency_ratios/{n}"),
                         format!("a whirl frequency ratio ν/ω must be within [0, {MAX_WHIRL_RATIO}], got {r}"),
                     ));
                 }
