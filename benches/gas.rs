@@ -49,7 +49,7 @@ fn gas(c: &mut Criterion) {
             r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "load_n": 300}}"#
         ),
     );
-    // With dynamics: the coefficients at ν = ω and the whirl threshold (Brent over the whirl
+    // With dynamics: the coefficients at ν = ω and the whirl threshold (a secant over the whirl
     // ratio, one band LU of the doubled harmonic system per ratio and mesh).
     for lambda in [1.0, 10.0] {
         let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));

@@ -21,11 +21,11 @@
 //! The Sommerfeld number carried is the gas film's S = μ N L D/W (R/C)² = Λ/(12π W̄).
 
 use super::journal_film::{JournalEvaluated, JournalFilm, JournalSolve};
-use crate::calc::journal::dynamics::{whirl, Coefficients};
+use crate::calc::journal::dynamics::{in_load_frame, whirl, Coefficients};
 use crate::calc::{Budget, CalcError};
 use crate::numerics::reynolds_gas::{self, GasGrid};
 use crate::numerics::richardson::{extrapolate, fine_error};
-use crate::numerics::roots::{brent_bracketed, RootError, Stopping};
+use crate::numerics::roots::{secant_bracketed, RootError, Stopping};
 use std::f64::consts::PI;
 
 /// Standard gravity g, m/s², for the gravity-loaded rotor (m = W/g) of Fig. 11.16.
@@ -119,27 +119,9 @@ pub fn coefficients(
     let p = solved.performance;
     let f0 = [p.load_along, -p.load_across];
     let load = f0[0].hypot(f0[1]);
-    // Load frame: x along W = −F₀, y = x turned 90° with the rotation.
-    let x = [-f0[0] / load, -f0[1] / load];
-    let axes = [x, [-x[1], x[0]]];
-    let rotate = |m: &[[f64; 2]; 2]| {
-        let mut out = [0.0; 4];
-        for (p, u) in axes.iter().enumerate() {
-            for (q, v) in axes.iter().enumerate() {
-                let mut sum = 0.0;
-                for i in 0..2 {
-                    for j in 0..2 {
-                        sum += u[i] * m[i][j] * v[j];
-                    }
-                }
-                out[2 * p + q] = sum / load;
-            }
-        }
-        out
-    };
     Ok(Coefficients {
-        stiffness: rotate(&k),
-        damping: rotate(&c),
+        stiffness: in_load_frame(&k, f0, 1.0 / load),
+        damping: in_load_frame(&c, f0, 1.0 / load),
         sommerfeld_number: film.bearing_number / (12.0 * PI * load),
     })
 }
@@ -214,7 +196,8 @@ pub const WHIRL_RATIO_RANGE: (f64, f64) = (0.01, 2.0);
 /// The threshold with frequency-dependent coefficients. At the threshold the rotor
 /// M̄ x″ + c x′ + k x = 0 (x/C, τ = ωt) has a root s = iγ, so det(k(γ) + iγ c(γ) − M̄ γ² I) = 0.
 /// For coefficients frozen at γ this is Lund's pair ([`whirl`]): k_eq(γ) and the whirl ratio
-/// γ_L(γ); the threshold is the fixed point γ = γ_L(γ), found by Brent on γ_L²(γ) − γ² over
+/// γ_L(γ); the threshold is the fixed point γ = γ_L(γ), found by a bracketed secant (bisection
+/// where a step leaves the bracket) on γ_L²(γ) − γ², smooth in γ, over
 /// [`WHIRL_RATIO_RANGE`] (Lund's γ² as computed, continuous where γ_L is not: k_eq changes
 /// sign with γ at small Λ), and M̄_c = k_eq/γ², 0 when k_eq ≤ 0 there (no mass is stable).
 /// `None`: no fixed point in the range (no whirl to find: stable for any mass there).
@@ -242,12 +225,12 @@ pub fn threshold(
     };
     let (lo, hi) = WHIRL_RATIO_RANGE;
     let (f_lo, f_hi) = (gap(lo), gap(hi));
-    let root = brent_bracketed(
+    let root = secant_bracketed(
         &mut gap,
         (lo, f_lo),
         (hi, f_hi),
         Stopping {
-            x_tolerance: 1e-7,
+            x_tolerance: 1e-6,
             max_iterations: 60,
         },
     );
@@ -259,7 +242,7 @@ pub fn threshold(
         Err(RootError::NoSignChange { .. }) => return Ok(None),
         Err(e) => return Err(CalcError::from_root("gas_journal_whirl_threshold", e)),
     };
-    // Brent's last evaluation need not be at its answer: take the coefficients there.
+    // The search's last evaluation need not be at its answer: take the coefficients there.
     let at_root = match last {
         Some(e) if e.whirl_ratio == root.x => e,
         _ => evaluated(film, at, root.x, budget)?,

@@ -3,12 +3,11 @@
 //! threshold against its defining determinant.
 
 use super::*;
+use crate::calc::gas::journal_film::tests::incompressible_force;
 use crate::calc::gas::journal_film::{self, level_mesh};
 use crate::calc::gas::method::{Mesh, Method};
 use crate::fidelity::Level;
-use crate::numerics::reynolds::{self as incompressible, Grid, Problem, Stencil};
 use crate::numerics::reynolds_gas::GasStopping;
-use std::f64::consts::TAU;
 
 fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
     JournalFilm {
@@ -81,46 +80,6 @@ fn static_stiffness_is_the_derivative_of_the_steady_load() {
             }
         }
     }
-}
-
-/// The incompressible full film's force (a, b) per p_a L D per Λ, ∂θ(H³∂θΠ) + ∂y(H³∂yΠ) =
-/// `wedge` ∂θH + s, on the incompressible basement (one banded solve of the periodic film).
-fn incompressible_force(
-    h: &dyn Fn(f64, f64) -> f64,
-    wedge: f64,
-    source: Option<&dyn Fn(f64, f64) -> f64>,
-    l_over_d: f64,
-    (n, m): (usize, usize),
-) -> [f64; 2] {
-    let grid = Grid {
-        x: (0..=n).map(|k| k as f64 * TAU / n as f64).collect(),
-        ny: m,
-        width: l_over_d,
-        symmetric: true,
-        periodic: true,
-    };
-    let problem = Problem {
-        film: h,
-        conductance: None,
-        anisotropy: 1.0,
-        wedge,
-        source,
-        held: None,
-    };
-    let stencil = Stencil::assemble(&grid, &problem);
-    let mut p = vec![0.0; (n + 1) * (m + 1)];
-    incompressible::solve(&stencil, &mut p, false, &Budget::unlimited()).unwrap();
-    let (mut sc, mut ss) = (0.0, 0.0);
-    for i in 0..n {
-        let (s, c) = grid.x[i].sin_cos();
-        for j in 0..=m {
-            let w = grid.cv_x(i) * grid.cv_y(j);
-            let v = p[incompressible::at(&grid, i, j)];
-            sc += w * v * c;
-            ss += w * v * s;
-        }
-    }
-    [-sc / (2.0 * l_over_d), -ss / (2.0 * l_over_d)]
 }
 
 /// (b) Λ → 0: P = 1 + ΛΠ with Π the incompressible full (Sommerfeld, uncavitated) film of
