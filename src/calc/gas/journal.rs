@@ -14,6 +14,7 @@ use super::slider::GasEffects;
 use crate::calc::journal::dynamics::Coefficients;
 use crate::calc::journal::plain::{DynamicCoefficients, GeometrySpec};
 use crate::calc::quantity::Positive;
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
@@ -72,11 +73,9 @@ pub const MAX_WHIRL_RATIO: f64 = 100.0;
 #[derive(Debug, Clone, Default, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct GasDynamicsRequest {
-    /// Whirl frequency ratios ν/ω at which to report the coefficients as well, dimensionless,
-    /// each in [0, 100] (0: the static limit), at most 16 (the synchronous ν = ω and the
-    /// threshold's are always reported).
+    /// Whirl frequency ratios: see [`range_schemas::whirl_frequency_ratios`].
     #[serde(default)]
-    #[schema(example = json!([0.25, 0.5, 2.0]))]
+    #[schema(schema_with = range_schemas::whirl_frequency_ratios)]
     pub whirl_frequency_ratios: Vec<f64>,
 }
 
@@ -315,8 +314,9 @@ pub struct GasFilmCoefficients {
 #[derive(Debug, Clone, Serialize, ToSchema)]
 pub struct GasWhirlThreshold {
     /// M̄_c = m C ω²/W at the threshold: a rigid rotor of larger M̄ (per bearing) whirls;
-    /// dimensionless; absent when no whirl frequency in (0.01, 2)·ω exists (stable for any mass);
-    /// 0 when no mass is stable.
+    /// dimensionless; the smallest where the film's frequency-dependent coefficients give more
+    /// than one crossing; absent when no whirl frequency in (0.01, 2)·ω exists (stable for any
+    /// mass); 0 when no mass is stable.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub critical_mass_parameter: Option<f64>,
     /// ν/ω at the threshold (about ½: half-frequency whirl), dimensionless.

@@ -190,75 +190,96 @@ pub struct Threshold {
     pub evaluations: u32,
 }
 
-/// Smallest and largest whirl ratio searched.
-pub const WHIRL_RATIO_RANGE: (f64, f64) = (0.01, 2.0);
+/// The whirl ratios scanned for the threshold's brackets, 0.01 to 2: every sign change of
+/// γ_L²(γ) − γ² between neighbours is a crossing (roots closer than a step apart can hide).
+pub const WHIRL_RATIO_SCAN: [f64; 13] = [
+    0.01, 0.1, 0.2, 0.3, 0.4, 0.45, 0.5, 0.55, 0.6, 0.7, 0.85, 1.0, 2.0,
+];
 
 /// The threshold with frequency-dependent coefficients. At the threshold the rotor
 /// M̄ x″ + c x′ + k x = 0 (x/C, τ = ωt) has a root s = iγ, so det(k(γ) + iγ c(γ) − M̄ γ² I) = 0.
 /// For coefficients frozen at γ this is Lund's pair ([`whirl`]): k_eq(γ) and the whirl ratio
-/// γ_L(γ); the threshold is the fixed point γ = γ_L(γ), found by a bracketed secant (bisection
-/// where a step leaves the bracket) on γ_L²(γ) − γ², smooth in γ, over
-/// [`WHIRL_RATIO_RANGE`] (Lund's γ² as computed, continuous where γ_L is not: k_eq changes
-/// sign with γ at small Λ), and M̄_c = k_eq/γ², 0 when k_eq ≤ 0 there (no mass is stable).
-/// `None`: no fixed point in the range (no whirl to find: stable for any mass there).
+/// γ_L(γ); a crossing is a fixed point γ = γ_L(γ), with M̄ = k_eq/γ² (0 when k_eq ≤ 0: no
+/// mass is stable). A gas film's coefficients can give more than one: the threshold is the
+/// smallest M̄, the first crossing as the mass grows. The fixed points are bracketed by a scan
+/// of γ_L²(γ) − γ² ([`WHIRL_RATIO_SCAN`]; Lund's γ² as computed, continuous where γ_L is not:
+/// k_eq changes sign with γ at small Λ) and each refined by a bracketed secant (bisection where
+/// a step leaves the bracket). `None`: no fixed point in the range (stable for any mass there).
 pub fn threshold(
     film: &JournalFilm,
     at: &JournalEvaluated,
     budget: &Budget,
 ) -> Result<Option<Threshold>, CalcError> {
-    let mut failed = None;
-    let mut last: Option<Evaluated> = None;
     let mut evaluations = 0;
-    let mut gap = |gamma: f64| -> f64 {
+    let mut gap = |gamma: f64| -> Result<(f64, Evaluated), CalcError> {
         evaluations += 1;
-        match evaluated(film, at, gamma, budget) {
-            Ok(e) => {
-                let lund = whirl(&e.coefficients);
-                last = Some(e);
-                lund.whirl_ratio_squared - gamma * gamma
-            }
-            Err(err) => {
-                failed = Some(err);
-                f64::NAN
-            }
-        }
+        let e = evaluated(film, at, gamma, budget)?;
+        Ok((
+            whirl(&e.coefficients).whirl_ratio_squared - gamma * gamma,
+            e,
+        ))
     };
-    let (lo, hi) = WHIRL_RATIO_RANGE;
-    let (f_lo, f_hi) = (gap(lo), gap(hi));
-    let root = secant_bracketed(
-        &mut gap,
-        (lo, f_lo),
-        (hi, f_hi),
-        Stopping {
-            x_tolerance: 1e-6,
-            max_iterations: 60,
-        },
-    );
-    if let Some(err) = failed {
-        return Err(err);
+    let mut scan = Vec::with_capacity(WHIRL_RATIO_SCAN.len());
+    for &g in &WHIRL_RATIO_SCAN {
+        scan.push((g, gap(g)?.0));
     }
-    let root = match root {
-        Ok(r) => r,
-        Err(RootError::NoSignChange { .. }) => return Ok(None),
-        Err(e) => return Err(CalcError::from_root("gas_journal_whirl_threshold", e)),
-    };
-    // The search's last evaluation need not be at its answer: take the coefficients there.
-    let at_root = match last {
-        Some(e) if e.whirl_ratio == root.x => e,
-        _ => evaluated(film, at, root.x, budget)?,
-    };
-    let lund = whirl(&at_root.coefficients);
-    let critical_mass_parameter = if lund.equivalent_stiffness <= 0.0 {
-        0.0
-    } else {
-        lund.equivalent_stiffness / (root.x * root.x)
-    };
-    Ok(Some(Threshold {
-        critical_mass_parameter,
-        whirl_ratio: root.x,
-        at: at_root,
-        evaluations,
-    }))
+    let mut best: Option<(f64, f64, Evaluated)> = None;
+    for pair in scan.windows(2) {
+        let ((a, fa), (b, fb)) = (pair[0], pair[1]);
+        if fa * fb > 0.0 {
+            continue;
+        }
+        let mut failed = None;
+        let mut last: Option<Evaluated> = None;
+        let root = secant_bracketed(
+            |g| match gap(g) {
+                Ok((v, e)) => {
+                    last = Some(e);
+                    v
+                }
+                Err(err) => {
+                    failed = Some(err);
+                    f64::NAN
+                }
+            },
+            (a, fa),
+            (b, fb),
+            Stopping {
+                x_tolerance: 1e-6,
+                max_iterations: 60,
+            },
+        );
+        if let Some(err) = failed {
+            return Err(err);
+        }
+        let root = match root {
+            Ok(r) => r,
+            Err(RootError::NoSignChange { .. }) => continue,
+            Err(e) => return Err(CalcError::from_root("gas_journal_whirl_threshold", e)),
+        };
+        // The search's last evaluation need not be at its answer: take the coefficients there.
+        let at_root = match last {
+            Some(e) if e.whirl_ratio == root.x => e,
+            _ => gap(root.x)?.1,
+        };
+        let k_eq = whirl(&at_root.coefficients).equivalent_stiffness;
+        let mass = if k_eq <= 0.0 {
+            0.0
+        } else {
+            k_eq / (root.x * root.x)
+        };
+        if best.as_ref().is_none_or(|(m, _, _)| mass < *m) {
+            best = Some((mass, root.x, at_root));
+        }
+    }
+    Ok(
+        best.map(|(critical_mass_parameter, whirl_ratio, at)| Threshold {
+            critical_mass_parameter,
+            whirl_ratio,
+            at,
+            evaluations,
+        }),
+    )
 }
 
 #[cfg(test)]

@@ -3,20 +3,11 @@
 //! threshold against its defining determinant.
 
 use super::*;
-use crate::calc::gas::journal_film::tests::incompressible_force;
+use crate::calc::gas::journal_film::tests::{film, incompressible_force};
 use crate::calc::gas::journal_film::{self, level_mesh};
 use crate::calc::gas::method::{Mesh, Method};
 use crate::fidelity::Level;
 use crate::numerics::reynolds_gas::GasStopping;
-
-fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
-    JournalFilm {
-        eccentricity: e,
-        bearing_number: lambda,
-        knudsen_number: 0.0,
-        l_over_d,
-    }
-}
 
 fn solved(f: &JournalFilm, along: usize, across: usize) -> JournalSolve {
     let grid = journal_film::grid(f, Mesh { along, across });

@@ -4,7 +4,7 @@
 use super::*;
 use crate::numerics::reynolds::{self as incompressible, Grid, Problem, Stencil};
 
-fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
+pub(crate) fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
     JournalFilm {
         eccentricity: e,
         bearing_number: lambda,
