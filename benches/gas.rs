@@ -4,6 +4,10 @@
 //!   Λ = 1000;
 //! - the gas journal by load (W = 300 N at Λ = 10, slip applied): 21.3 ms, 32 film solves (Brent
 //!   on W̄(ε) took 28.3 ms, 48);
+//! - the gas journal at `standard` with `dynamics` (ε = 0.6; coefficients at ν = ω and the
+//!   whirl threshold: a 13-point scan of the whirl ratio and a secant per crossing, each ratio
+//!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
+//!   2.0 and 2.5 ms);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
 //!
