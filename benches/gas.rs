@@ -4,6 +4,10 @@
 //!   Λ = 1000;
 //! - the gas journal by load (W = 300 N at Λ = 10, slip applied): 21.3 ms, 32 film solves (Brent
 //!   on W̄(ε) took 28.3 ms, 48);
+//! - the gas journal at `standard` with `dynamics` (ε = 0.6; coefficients at ν = ω and the
+//!   whirl threshold: a 13-point scan of the whirl ratio and a secant per crossing, each ratio
+//!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
+//!   2.0 and 2.5 ms);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
 //!
@@ -49,6 +53,20 @@ fn gas(c: &mut Criterion) {
             r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "load_n": 300}}"#
         ),
     );
+    // With dynamics: the coefficients at ν = ω and the whirl threshold (a secant over the whirl
+    // ratio, one band LU of the doubled harmonic system per ratio and mesh).
+    for lambda in [1.0, 10.0] {
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+        let rpm = omega * 30.0 / std::f64::consts::PI;
+        request(
+            c,
+            &format!("gas journal L/D = 1, ε = 0.6, Λ = {lambda}, standard, with dynamics"),
+            "/v1/gas-bearings/journal",
+            &format!(
+                r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6, "dynamics": {{}}}}"#
+            ),
+        );
+    }
     for (name, pad) in [
         ("L/B = 1", r#"{"breadth_m": 0.02, "length_m": 0.02}"#),
         ("infinitely wide", r#"{"breadth_m": 0.02}"#),

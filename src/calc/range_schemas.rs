@@ -116,6 +116,17 @@ pub fn roughness_pair() -> ArrayBuilder {
     )
 }
 
+/// The gas journal's `dynamics.whirl_frequency_ratios`.
+pub fn whirl_frequency_ratios() -> ArrayBuilder {
+    number_array(
+        "Whirl frequency ratios ν/ω at which to report the coefficients as well, dimensionless, each 0 … 100 (0: the static limit); 0 … 16 values (the synchronous ν = ω and the threshold's are always reported).",
+        (0.0, 100.0),
+        (0, 16),
+        false,
+        serde_json::json!([0.25, 0.5, 2.0]),
+    )
+}
+
 /// A custom fidelity's `grid`.
 pub fn grid() -> ArrayBuilder {
     number_array(

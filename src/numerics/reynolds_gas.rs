@@ -7,13 +7,15 @@
 //! ```
 //!
 //! (Khonsari & Booser Eqs. 11.3–11.10: the bearing number Λ and the first-order slip factor with
-//! Kn = λ_a/h_ref; Kn = 0 is continuum flow). Steady films only.
+//! Kn = λ_a/h_ref; Kn = 0 is continuum flow). Steady films, and their first-order response to
+//! a harmonic film motion ([`harmonic_response`]).
 //!
 //! **Scheme.** Vertex-centred finite volumes: the unknowns are nodal P, each node's control
 //! volume balances the mass fluxes through its faces, so mass is conserved cell by cell. Along x
 //! the flux f = Λ P H − k ∂x P is written for u = P H as f = a u − d ∂x u with d = k/H and
-//! a = Λ + k H′/H², and discretised by the exponentially fitted (Scharfetter–Gummel, Il'in–Allen–
-//! Southwell) flux f = (d/Δ)[B(−Pe) u_w − B(Pe) u_e], B(z) = z/(eᶻ − 1), Pe = a Δ/d: central
+//! a = Λ + k H′/H² (the film part taken over a cell as d ln(H_e/H_w)/Δ, so that a uniform P
+//! at Λ = 0 carries no flux), and discretised by the exponentially fitted (Scharfetter–Gummel,
+//! Il'in–Allen–Southwell) flux f = (d/Δ)[B(−Pe) u_w − B(Pe) u_e], B(z) = z/(eᶻ − 1), Pe = a Δ/d: central
 //! (second order) where the cell Péclet number is small, upwind where it is large. It is exact
 //! for P H = const, the Λ → ∞ interior, so it stays stable and accurate at Λ = 1000 on grids
 //! that are fine only in the boundary layers (the callers grade their grids; [`graded`]).
@@ -33,7 +35,7 @@
 //! **Convergence.** The residual measure is the Jacobi-scaled residual max |Rᵢ/Jᵢᵢ| (a change of
 //! P), against the tolerance (1e-10 by default).
 
-use super::band_lu::{Band, BandLu};
+use super::band_lu::{Band, BandLu, Singular};
 use super::driver::{Budget, Driver, Stopped};
 use super::newton::{self, LineSearch, NewtonSystem};
 use crate::fidelity::{IterationUnit, SolverReport};
@@ -251,8 +253,11 @@ pub fn x_flux(
     let pm = 0.5 * (pw + pe);
     let k = hf * hf * hf * pm + 6.0 * kn * hf * hf;
     let d = k / hf;
-    let slope = (he - hw) / dx;
-    let pe_number = lambda * dx * hf / k + slope * dx / hf;
+    // a = Λ + d (ln H)′ exactly (f = a u − d ∂x u is then −k ∂x P + Λ P H for any P), its
+    // film part integrated over the cell: ln(H_e/H_w). With the old (H_e − H_w)/H_f, equal to
+    // O(Δ³), a uniform P at Λ = 0 carried a spurious O(Δ²) flux, which as Λ → 0 (films of
+    // O(Λ)) was an O(Δ²/Λ) error in the film's stiffness.
+    let pe_number = lambda * dx * hf / k + (he / hw).ln();
     let (uw, ue) = (pw * hw, pe * he);
     let (bm, bp) = (bernoulli(-pe_number), bernoulli(pe_number));
     let s = bm * uw - bp * ue;
@@ -609,6 +614,135 @@ pub fn flux_x(grid: &GasGrid, problem: &GasProblem, p: &[f64], i: usize, j: usiz
         problem.h_x_faces[i * ny1 + j],
     )
     .0
+}
+
+impl GasProblem {
+    /// This film with `t·dh(x, y)` added at every node and face (a perturbed film on the same
+    /// grid).
+    pub fn shifted(&self, grid: &GasGrid, t: f64, dh: &dyn Fn(f64, f64) -> f64) -> GasProblem {
+        let mut out = self.clone();
+        let ny1 = grid.y.len();
+        for i in 0..=grid.nx() {
+            for j in 0..ny1 {
+                out.h_nodes[grid.at(i, j)] += t * dh(grid.x[i], grid.y[j]);
+                if i < grid.nx() {
+                    out.h_x_faces[i * ny1 + j] +=
+                        t * dh(0.5 * (grid.x[i] + grid.x[i + 1]), grid.y[j]);
+                }
+                if j + 1 < ny1 {
+                    out.h_y_faces[i * (ny1 - 1) + j] +=
+                        t * dh(grid.x[i], 0.5 * (grid.y[j] + grid.y[j + 1]));
+                }
+            }
+        }
+        out
+    }
+}
+
+/// The first-order response P₁ = re + i·im of a film to a harmonic film perturbation
+/// H = H₀(x, y) + dh(x, y) e^{iτ ν/ω}, at every node ([`GasGrid::at`]; 0 on held boundaries).
+#[derive(Debug, Clone, PartialEq)]
+pub struct HarmonicResponse {
+    pub re: Vec<f64>,
+    pub im: Vec<f64>,
+}
+
+/// Step of the central difference of the residual in the film, ∂R/∂H·dh (the fitted flux is
+/// smooth in H: truncation O(t²) ≈ 1e-10, round-off ≈ 1e-16/t of the fluxes).
+const FILM_STEP: f64 = 1e-5;
+
+/// The linearised (perturbation) compressible Reynolds equation at the converged field `p` of
+/// `problem`, for small harmonic film perturbations `shapes`, each dh(x, y) e^{iτν/ω}.
+///
+/// With the squeeze term the unsteady equation is ∇·(k∇P) = Λ ∂x(PH) + σ₀ ∂τ(PH) (Khonsari &
+/// Booser Eq. 11.3; τ = ωt), and a journal's scaling has σ₀ = 2Λ: for motion at frequency ν the
+/// squeeze number is σ = 2Λ ν/ω, the `squeeze` argument. In the finite-volume form,
+/// R(P, H) + σ₀ ∂τ(P H)·A = 0 (R the net outflow of a control volume of area A), so to first
+/// order
+///
+/// ```text
+/// (J + iσ A H₀) P₁ = −(∂R/∂H) dh − iσ A P₀ dh
+/// ```
+///
+/// with J the steady Newton Jacobian at P₀ (the same assembly). The complex system is solved as
+/// a real one of twice the order, real and imaginary parts of each unknown interleaved (band
+/// 2b + 1), by one band LU for all shapes. ∂R/∂H dh is a central difference of the residual
+/// ([`FILM_STEP`]). Errs if the system is singular.
+pub fn harmonic_response(
+    grid: &GasGrid,
+    problem: &GasProblem,
+    p: &[f64],
+    squeeze: f64,
+    shapes: &[&dyn Fn(f64, f64) -> f64],
+) -> Result<Vec<HarmonicResponse>, Singular> {
+    let numbering = Numbering::new(grid);
+    let system = |problem: &GasProblem| {
+        System {
+            grid,
+            problem,
+            numbering: &numbering,
+            lambda: problem.bearing_number,
+        }
+        .assemble(p)
+    };
+    let steady = system(problem).jacobian;
+    let (n, b) = (numbering.unknowns, numbering.band);
+    let mut big = Band::zeros(2 * n, 2 * b + 1, 2 * b + 1);
+    for r in 0..n {
+        for c in r.saturating_sub(b)..=(r + b).min(n - 1) {
+            let v = steady.get(r, c);
+            if v != 0.0 {
+                big.add(2 * r, 2 * c, v);
+                big.add(2 * r + 1, 2 * c + 1, v);
+            }
+        }
+    }
+    // The unknowns' nodes with their control-volume areas (a periodic grid's mirrored last
+    // column is the first: weight 0 there, so it is skipped).
+    let mut nodes = Vec::with_capacity(n);
+    for i in 0..=grid.nx() {
+        for j in 0..grid.y.len() {
+            if let (Some(k), w) = (numbering.index(i, j), grid.weight(i, j)) {
+                if w > 0.0 {
+                    nodes.push((k, i, j, w));
+                }
+            }
+        }
+    }
+    for &(k, i, j, area) in &nodes {
+        let m = squeeze * area * problem.h_nodes[grid.at(i, j)];
+        big.add(2 * k, 2 * k + 1, -m);
+        big.add(2 * k + 1, 2 * k, m);
+    }
+    let lu = big.lu()?;
+    let mut out = Vec::with_capacity(shapes.len());
+    for dh in shapes {
+        let plus = system(&problem.shifted(grid, FILM_STEP, dh)).residual;
+        let minus = system(&problem.shifted(grid, -FILM_STEP, dh)).residual;
+        let mut rhs = vec![0.0; 2 * n];
+        for k in 0..n {
+            rhs[2 * k] = -(plus[k] - minus[k]) / (2.0 * FILM_STEP);
+        }
+        for &(k, i, j, area) in &nodes {
+            let at = grid.at(i, j);
+            rhs[2 * k + 1] = -squeeze * area * p[at] * dh(grid.x[i], grid.y[j]);
+        }
+        lu.solve(&mut rhs);
+        let mut response = HarmonicResponse {
+            re: vec![0.0; p.len()],
+            im: vec![0.0; p.len()],
+        };
+        for i in 0..=grid.nx() {
+            for j in 0..grid.y.len() {
+                if let Some(k) = numbering.index(i, j) {
+                    response.re[grid.at(i, j)] = rhs[2 * k];
+                    response.im[grid.at(i, j)] = rhs[2 * k + 1];
+                }
+            }
+        }
+        out.push(response);
+    }
+    Ok(out)
 }
 
 #[cfg(test)]

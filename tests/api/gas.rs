@@ -56,6 +56,18 @@ async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
         ),
         (
             JOURNAL,
+            journal(json!({"dynamics": {"whirl_frequency_ratios": [0.5, -0.1]}})),
+            "/dynamics/whirl_frequency_ratios/1",
+            "within [0, 100]",
+        ),
+        (
+            JOURNAL,
+            journal(json!({"dynamics": {"whirl_frequency_ratios": vec![0.5; 17]}})),
+            "/dynamics/whirl_frequency_ratios",
+            "at most 16",
+        ),
+        (
+            JOURNAL,
             journal(json!({"gas": {"name": "air", "ambient_pressure_pa": 0.0}})),
             "/gas/ambient_pressure_pa",
             "> 0",
@@ -178,6 +190,68 @@ async fn the_examples_and_fields_answer_over_http() {
     assert_eq!(r["pressure_profile"].as_array().unwrap().len(), 65);
 }
 
+/// The dynamics block: off by default (no extra film solves), on request the coefficients at
+/// ν = ω and at the asked ratios, in SI as the dimensionless ones scale (K = k W/C,
+/// C = c W/(C ω)), and a threshold whose verdict agrees with its mass parameters.
+#[tokio::test]
+async fn the_journal_gives_frequency_dependent_coefficients_and_the_whirl_threshold_on_request() {
+    let app = spawn_app().await;
+    let plain = app.post_json(JOURNAL, &journal(json!({}))).await;
+    assert!(plain.body["result"]["dynamics"].is_null());
+    let reply = app
+        .post_json(
+            JOURNAL,
+            &journal(json!({"dynamics": {"whirl_frequency_ratios": [0.0, 0.5, 4.0]}})),
+        )
+        .await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    assert_all_finite(&reply.body, "");
+    let r = &reply.body["result"];
+    let d = &r["dynamics"];
+    let (w, c) = (r["load_n"].as_f64().unwrap(), 1e-5);
+    let omega = 30000.0 * std::f64::consts::PI / 30.0;
+    let lambda = r["bearing_number"].as_f64().unwrap();
+    let sync = &d["synchronous"];
+    assert_eq!(sync["whirl_frequency_ratio"].as_f64().unwrap(), 1.0);
+    assert!((sync["squeeze_number"].as_f64().unwrap() - 2.0 * lambda).abs() < 1e-12 * lambda);
+    let k = sync["coefficients"]["stiffness_dimensionless"][0]
+        .as_f64()
+        .unwrap();
+    let kxx = sync["coefficients"]["kxx"].as_f64().unwrap();
+    assert!((kxx - k * w / c).abs() < 1e-9 * kxx.abs());
+    let cc = sync["coefficients"]["damping_dimensionless"][3]
+        .as_f64()
+        .unwrap();
+    let cyy = sync["coefficients"]["cyy"].as_f64().unwrap();
+    assert!((cyy - cc * w / (c * omega)).abs() < 1e-9 * cyy.abs());
+    let listed = d["at_whirl_frequency_ratios"].as_array().unwrap();
+    assert_eq!(listed.len(), 3);
+    // The film stiffens with frequency: the direct stiffness at ν = 4ω above that at ν = ω/2.
+    let trace = |v: &Value| {
+        let k = &v["coefficients"]["stiffness_dimensionless"];
+        k[0].as_f64().unwrap() + k[3].as_f64().unwrap()
+    };
+    assert!(trace(&listed[2]) > trace(&listed[1]));
+    let t = &d["whirl_threshold"];
+    let m = t["critical_mass_parameter"].as_f64().unwrap();
+    let ratio = t["whirl_frequency_ratio"].as_f64().unwrap();
+    assert!(m > 0.0 && (0.3..0.6).contains(&ratio), "{t}");
+    let speed = t["threshold_speed_rad_s"].as_f64().unwrap();
+    assert!((speed - (m * 9.80665 / c).sqrt()).abs() < 1e-9 * speed);
+    assert!((t["threshold_speed_dimensionless"].as_f64().unwrap() - m.sqrt()).abs() < 1e-12);
+    let at_speed = t["mass_parameter_at_speed"].as_f64().unwrap();
+    assert!((at_speed - c * omega * omega / 9.80665).abs() < 1e-9 * at_speed);
+    assert_eq!(t["stable_at_speed"].as_bool().unwrap(), at_speed < m);
+    assert_eq!(
+        t["coefficients"]["whirl_frequency_ratio"].as_f64().unwrap(),
+        ratio
+    );
+    // The extra film solves are counted: one factorisation per whirl ratio and mesh.
+    let extra = reply.body["solver"]["film_solves"].as_u64().unwrap()
+        - plain.body["solver"]["film_solves"].as_u64().unwrap();
+    assert!(extra >= 2 * 4 + 4, "{extra} extra film solves");
+}
+
 fn run(path: &str, body: &Value) -> Result<Value, Failure> {
     let entry = find(path).expect("registered");
     let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
@@ -247,6 +321,49 @@ proptest! {
                 let x = v["result"]["center_of_pressure_fraction"].as_f64().unwrap();
                 prop_assert!(x > 0.5 && x < 1.0, "{x}");
                 prop_assert!(v["result"]["load_dimensionless"].as_f64().unwrap() > 0.0);
+            }
+            Err(Failure::Calc(err)) => {
+                prop_assert!(!matches!(err, stribeck::calc::CalcError::Internal(_)), "{err:?}");
+            }
+            Err(other) => prop_assert!(false, "{other:?}"),
+        }
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(16))]
+
+    /// Over ε 0.05–0.9 and Λ 0.01–100: the dynamics block is finite (coefficients at ν = ω and
+    /// at the threshold, the threshold itself), or the request is a 422; never a 500.
+    #[test]
+    fn gas_journal_dynamics_are_finite(
+        e in 0.05f64..0.9,
+        log_lambda in -2.0f64..2.0,
+    ) {
+        let (d, c, mu, pa): (f64, f64, f64, f64) = (0.05, 5e-6, 1.85e-5, 101325.0);
+        let omega = 10f64.powf(log_lambda) * pa / (6.0 * mu * (0.5 * d / c).powi(2));
+        let body = json!({
+            "geometry": {"diameter_m": d, "length_m": d, "radial_clearance_m": c},
+            "speed_rpm": omega * 30.0 / std::f64::consts::PI,
+            "gas": {"viscosity_pa_s": mu, "ambient_pressure_pa": pa},
+            "eccentricity_ratio": e,
+            "fidelity": "fast",
+            "effects": {"slip_flow": "off"},
+            "dynamics": {}
+        });
+        match run(JOURNAL, &body) {
+            Ok(v) => {
+                assert_all_finite(&v, "");
+                let d = &v["result"]["dynamics"];
+                for n in 0..4 {
+                    prop_assert!(d["synchronous"]["coefficients"]["stiffness_dimensionless"][n].is_f64());
+                    prop_assert!(d["synchronous"]["coefficients"]["damping_dimensionless"][n].is_f64());
+                }
+                let t = &d["whirl_threshold"];
+                if let Some(m) = t["critical_mass_parameter"].as_f64() {
+                    prop_assert!(m >= 0.0, "{m}");
+                    prop_assert!(t["coefficients"]["coefficients"]["kxx"].is_f64());
+                }
             }
             Err(Failure::Calc(err)) => {
                 prop_assert!(!matches!(err, stribeck::calc::CalcError::Internal(_)), "{err:?}");

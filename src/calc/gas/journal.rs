@@ -7,11 +7,14 @@ use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
+use super::journal_dynamics::{self, STANDARD_GRAVITY};
 use super::journal_film::{self, JournalEvaluated, JournalFilm};
 use super::method::{self, Method};
 use super::slider::GasEffects;
-use crate::calc::journal::plain::GeometrySpec;
+use crate::calc::journal::dynamics::Coefficients;
+use crate::calc::journal::plain::{DynamicCoefficients, GeometrySpec};
 use crate::calc::quantity::Positive;
+use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
@@ -54,6 +57,26 @@ pub struct GasJournalInput {
     #[serde(default)]
     #[schema(example = false)]
     pub include_field: bool,
+    /// Ask for the film's frequency-dependent stiffness and damping and the rigid rotor's whirl
+    /// threshold (`{}` for the defaults); absent: none computed.
+    #[serde(default)]
+    pub dynamics: Option<GasDynamicsRequest>,
+}
+
+/// Most whirl frequency ratios a request may list.
+pub const MAX_WHIRL_RATIOS: usize = 16;
+
+/// Largest whirl frequency ratio ν/ω a request may list.
+pub const MAX_WHIRL_RATIO: f64 = 100.0;
+
+/// What the dynamics block should hold.
+#[derive(Debug, Clone, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GasDynamicsRequest {
+    /// Whirl frequency ratios: see [`range_schemas::whirl_frequency_ratios`].
+    #[serde(default)]
+    #[schema(schema_with = range_schemas::whirl_frequency_ratios)]
+    pub whirl_frequency_ratios: Vec<f64>,
 }
 
 /// What the request fixes.
@@ -75,6 +98,8 @@ pub struct Case {
     pub slip_flow: Mode,
     pub method: Method,
     pub include_field: bool,
+    /// Whirl ratios besides the synchronous one, when dynamics are asked for.
+    pub dynamics: Option<Vec<f64>>,
 }
 
 impl Case {
@@ -148,6 +173,25 @@ impl Validate for GasJournalInput {
                 ));
             }
         }
+        if let Some(d) = &self.dynamics {
+            if d.whirl_frequency_ratios.len() > MAX_WHIRL_RATIOS {
+                errors.push(FieldError::new(
+                    "/dynamics/whirl_frequency_ratios",
+                    format!(
+                        "at most {MAX_WHIRL_RATIOS} ratios, got {}",
+                        d.whirl_frequency_ratios.len()
+                    ),
+                ));
+            }
+            for (n, &r) in d.whirl_frequency_ratios.iter().enumerate() {
+                if !(0.0..=MAX_WHIRL_RATIO).contains(&r) {
+                    errors.push(FieldError::new(
+                        format!("/dynamics/whirl_frequency_ratios/{n}"),
+                        format!("a whirl frequency ratio ν/ω must be within [0, {MAX_WHIRL_RATIO}], got {r}"),
+                    ));
+                }
+            }
+        }
         let gas = match self.gas.parse("/gas") {
             Ok(gas) => Some(gas),
             Err(mut e) => {
@@ -168,6 +212,7 @@ impl Validate for GasJournalInput {
             slip_flow: self.effects.slip_flow,
             method,
             include_field: self.include_field,
+            dynamics: self.dynamics.map(|d| d.whirl_frequency_ratios),
         };
         method::check_bearing_number(
             case.bearing_number(),
@@ -227,6 +272,74 @@ pub struct GasJournalOutput {
     /// The pressure field over the half bearing (with `include_field`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure_field: Option<Vec<GasJournalFieldPoint>>,
+    /// Stiffness, damping and the whirl threshold (with `dynamics`).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub dynamics: Option<GasJournalDynamics>,
+}
+
+/// The film's dynamics about the solved equilibrium.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GasJournalDynamics {
+    /// At synchronous whirl, ν = ω (unbalance response).
+    pub synchronous: GasFilmCoefficients,
+    /// At the requested `whirl_frequency_ratios`, in their order.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub at_whirl_frequency_ratios: Vec<GasFilmCoefficients>,
+    pub whirl_threshold: GasWhirlThreshold,
+}
+
+/// Stiffness and damping of the gas film at one whirl frequency ν. A gas film's coefficients
+/// depend on ν: its squeeze number σ = 2Λ ν/ω grows with ν, and as σ → ∞ the gas cannot leak
+/// in a cycle, so the film stiffens toward a trapped gas spring and its damping falls to 0.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GasFilmCoefficients {
+    /// ν/ω, dimensionless.
+    pub whirl_frequency_ratio: f64,
+    /// σ = 2Λ ν/ω (Khonsari & Booser Eq. 11.3's squeeze number in the journal's scaling),
+    /// dimensionless.
+    pub squeeze_number: f64,
+    /// The frame, x along the static load and y 90° ahead in the direction of rotation; the
+    /// film force on the journal for a displacement δ e^{iνt} is −(K + iνC)δ, K_ij and C_ij the
+    /// real part and the imaginary part over ν of the film's impedance at ν. Dimensionless
+    /// k = K C/W, c = C C ω/W (ω the journal speed), [xx, xy, yx, yy].
+    pub coefficients: DynamicCoefficients,
+    /// Relative error estimate (the Richardson pair's difference over 3, against the largest
+    /// coefficient of each kind), dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error_estimate: Option<f64>,
+}
+
+/// The rigid rotor's half-frequency whirl threshold on the film (Khonsari & Booser Fig. 11.16),
+/// at this film's Λ and ε, with the coefficients taken at the whirl frequency itself.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GasWhirlThreshold {
+    /// M̄_c = m C ω²/W at the threshold: a rigid rotor of larger M̄ (per bearing) whirls;
+    /// dimensionless; the smallest where the film's frequency-dependent coefficients give more
+    /// than one crossing; absent when no whirl frequency in (0.01, 2)·ω exists (stable for any
+    /// mass); 0 when no mass is stable.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub critical_mass_parameter: Option<f64>,
+    /// ν/ω at the threshold (about ½: half-frequency whirl), dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub whirl_frequency_ratio: Option<f64>,
+    /// ω_T (C/g)^½ = M̄_c^½, dimensionless: Fig. 11.16's ordinate (a gravity-loaded rotor,
+    /// m = W/g).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threshold_speed_dimensionless: Option<f64>,
+    /// ω_T = (M̄_c g/C)^½ for a gravity-loaded rotor (m = W/g), rad/s, with the film's Λ and ε
+    /// held (as the chart is read).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threshold_speed_rad_s: Option<f64>,
+    /// ω_T in rev/min.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub threshold_speed_rpm: Option<f64>,
+    /// The coefficients at the threshold's whirl frequency.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub coefficients: Option<GasFilmCoefficients>,
+    /// M̄ = C ω²/g of a gravity-loaded rotor (m = W/g) at the request's speed, dimensionless.
+    pub mass_parameter_at_speed: f64,
+    /// Whether that rotor runs stably at the request's speed (M̄ < M̄_c).
+    pub stable_at_speed: bool,
 }
 
 /// The stretched eccentricity s = ln(ε/(1 − ε)) in which the load search runs: W̄ ∝ ε at small ε
@@ -319,6 +432,83 @@ fn at_load(
     Ok((done, root.report))
 }
 
+/// A film's coefficients on the wire: dimensionless as computed, in SI by W/C and W/(C ω).
+fn wire_coefficients(
+    e: &journal_dynamics::Evaluated,
+    load_n: f64,
+    clearance_m: f64,
+    omega: f64,
+) -> GasFilmCoefficients {
+    let Coefficients {
+        stiffness, damping, ..
+    } = e.coefficients;
+    let k = stiffness.map(|v| v * load_n / clearance_m);
+    let c = damping.map(|v| v * load_n / (clearance_m * omega));
+    GasFilmCoefficients {
+        whirl_frequency_ratio: e.whirl_ratio,
+        squeeze_number: e.squeeze_number,
+        coefficients: DynamicCoefficients {
+            frame: "x along the static load, y perpendicular, 90° ahead in the direction of rotation; a film force f_i = −K_ij δ_j − C_ij δ̇_j on the journal for harmonic motion at this frequency".into(),
+            kxx: k[0],
+            kxy: k[1],
+            kyx: k[2],
+            kyy: k[3],
+            cxx: c[0],
+            cxy: c[1],
+            cyx: c[2],
+            cyy: c[3],
+            stiffness_dimensionless: stiffness,
+            damping_dimensionless: damping,
+            method: format!(
+                "linearised compressible Reynolds about the converged film (harmonic perturbation, squeeze number 2Λν/ω; one complex solve with the steady Newton Jacobian per direction){}",
+                if e.error_estimate.is_some() {
+                    ", Richardson-extrapolated from the half mesh"
+                } else {
+                    ""
+                }
+            ),
+        },
+        error_estimate: e.error_estimate,
+    }
+}
+
+/// The dynamics block: the coefficients at ν = ω and at the asked ratios, and the threshold.
+fn dynamics(
+    case: &Case,
+    film: &JournalFilm,
+    evaluated: &JournalEvaluated,
+    ratios: &[f64],
+    budget: &crate::calc::Budget,
+) -> Result<GasJournalDynamics, CalcError> {
+    let pa = case.gas.ambient_pressure_pa;
+    let load_n = evaluated.performance.load() * pa * case.length_m * case.diameter_m;
+    let (c, omega) = (case.clearance_m, case.angular_speed());
+    let at = |ratio: f64| -> Result<GasFilmCoefficients, CalcError> {
+        let e = journal_dynamics::evaluated(film, evaluated, ratio, budget)?;
+        Ok(wire_coefficients(&e, load_n, c, omega))
+    };
+    let synchronous = at(1.0)?;
+    let at_whirl_frequency_ratios = ratios.iter().map(|&r| at(r)).collect::<Result<_, _>>()?;
+    let threshold = journal_dynamics::threshold(film, evaluated, budget)?;
+    let mass_parameter_at_speed = c * omega * omega / STANDARD_GRAVITY;
+    let critical = threshold.map(|t| t.critical_mass_parameter);
+    let speed = critical.map(|m| (m * STANDARD_GRAVITY / c).sqrt());
+    Ok(GasJournalDynamics {
+        synchronous,
+        at_whirl_frequency_ratios,
+        whirl_threshold: GasWhirlThreshold {
+            critical_mass_parameter: critical,
+            whirl_frequency_ratio: threshold.map(|t| t.whirl_ratio),
+            threshold_speed_dimensionless: critical.map(f64::sqrt),
+            threshold_speed_rad_s: speed,
+            threshold_speed_rpm: speed.map(|w| w * 30.0 / std::f64::consts::PI),
+            coefficients: threshold.map(|t| wire_coefficients(&t.at, load_n, c, omega)),
+            mass_parameter_at_speed,
+            stable_at_speed: critical.is_none_or(|m| mass_parameter_at_speed < m),
+        },
+    })
+}
+
 impl Calculation for GasJournal {
     const PATH: &'static str = "/v1/gas-bearings/journal";
     const SUMMARY: &'static str =
@@ -405,6 +595,19 @@ impl Calculation for GasJournal {
                 format!("Kn = {knudsen_number:.3} at the minimum film exceeds {FIRST_ORDER_SLIP_LIMIT}: the first-order slip form holds for Kn ≪ 1 only"),
             );
         }
+        // The film as solved (with slip when applied), for its dynamics.
+        let solved_film = JournalFilm {
+            knudsen_number: if slip.applied {
+                slip_film.knudsen_number
+            } else {
+                0.0
+            },
+            ..film
+        };
+        let dynamics = match &case.dynamics {
+            Some(ratios) => Some(dynamics(&case, &solved_film, &evaluated, ratios, &budget)?),
+            None => None,
+        };
         let mut report = evaluated
             .fine
             .report
@@ -461,6 +664,7 @@ impl Calculation for GasJournal {
             min_film_m: c * (1.0 - e),
             knudsen_number,
             pressure_field,
+            dynamics,
         };
         let numbers = [
             out.bearing_number,

@@ -250,4 +250,4 @@ pub fn evaluate(
 
 #[cfg(test)]
 #[path = "journal_film_tests.rs"]
-mod tests;
+pub(crate) mod tests;

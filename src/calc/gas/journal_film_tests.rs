@@ -4,7 +4,7 @@
 use super::*;
 use crate::numerics::reynolds::{self as incompressible, Grid, Problem, Stencil};
 
-fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
+pub(crate) fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
     JournalFilm {
         eccentricity: e,
         bearing_number: lambda,
@@ -28,6 +28,21 @@ fn rel(a: f64, b: f64) -> f64 {
 /// The incompressible full film (no cavitation) ∂θ(H³∂θp) + ∂y(H³∂yp) = ∂θH on the
 /// incompressible basement (`numerics::reynolds`, one banded solve of the periodic film): (W̄1/Λ, W̄2/Λ).
 fn incompressible_load(e: f64, l_over_d: f64, n: usize, m: usize) -> (f64, f64) {
+    let h = move |t: f64, _: f64| 1.0 + e * t.cos();
+    let [a, b] = incompressible_force(&h, 1.0, None, l_over_d, (n, m));
+    (a, -b)
+}
+
+/// The incompressible full film's force on the journal (a toward h_max, b 90° ahead) per
+/// p_a L D per Λ, of ∂θ(H³∂θp) + ∂y(H³∂yp) = `wedge` ∂θH + s on the incompressible basement
+/// (one banded solve of the periodic film), on `n` × `m` cells of the half bearing.
+pub(crate) fn incompressible_force(
+    h: &dyn Fn(f64, f64) -> f64,
+    wedge: f64,
+    source: Option<&dyn Fn(f64, f64) -> f64>,
+    l_over_d: f64,
+    (n, m): (usize, usize),
+) -> [f64; 2] {
     let grid = Grid {
         x: (0..=n).map(|k| k as f64 * TAU / n as f64).collect(),
         ny: m,
@@ -35,13 +50,12 @@ fn incompressible_load(e: f64, l_over_d: f64, n: usize, m: usize) -> (f64, f64) 
         symmetric: true,
         periodic: true,
     };
-    let h = move |t: f64, _: f64| 1.0 + e * t.cos();
     let problem = Problem {
-        film: &h,
+        film: h,
         conductance: None,
         anisotropy: 1.0,
-        wedge: 1.0,
-        source: None,
+        wedge,
+        source,
         held: None,
     };
     let stencil = Stencil::assemble(&grid, &problem);
@@ -57,7 +71,7 @@ fn incompressible_load(e: f64, l_over_d: f64, n: usize, m: usize) -> (f64, f64) 
             ss += w * v * s;
         }
     }
-    (-sc / (2.0 * l_over_d), ss / (2.0 * l_over_d))
+    [-sc / (2.0 * l_over_d), -ss / (2.0 * l_over_d)]
 }
 
 #[test]

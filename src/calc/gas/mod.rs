@@ -7,6 +7,8 @@
 //! - `foil_journal`: the `/v1/gas-bearings/foil-journal` room (wire); `foil`: its model, the
 //!   bump-foil journal's limiting pressure and load as ω → ∞;
 //! - `journal`: the `/v1/gas-bearings/journal` room (request, response, the load search);
+//! - `journal_dynamics`: its film's frequency-dependent stiffness and damping, and the rigid
+//!   rotor's whirl threshold;
 //! - `journal_film`: the plain 360° gas journal's film and its performance;
 //! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
@@ -17,6 +19,7 @@ pub mod foil;
 pub mod foil_journal;
 pub mod gas_spec;
 pub mod journal;
+pub mod journal_dynamics;
 pub mod journal_film;
 pub mod method;
 pub mod recess_pad;

@@ -73,31 +73,33 @@ pub fn perturbation(
         budget.count_field_solve();
         linear_derivatives(base, mesh, field.clone())?
     };
-    // Load frame: x along the load W = −F, y = x turned 90° with the rotation.
-    let norm = f0[0].hypot(f0[1]);
-    let x = [-f0[0] / norm, -f0[1] / norm];
-    let y = [-x[1], x[0]];
-    let axes = [x, y];
-    let rotate = |m: &[[f64; 2]; 2], scale: f64| {
-        let mut out = [0.0; 4];
-        for (p, u) in axes.iter().enumerate() {
-            for (q, v) in axes.iter().enumerate() {
-                let mut sum = 0.0;
-                for i in 0..2 {
-                    for j in 0..2 {
-                        sum += u[i] * m[i][j] * v[j];
-                    }
-                }
-                out[2 * p + q] = scale * sum;
-            }
-        }
-        out
-    };
     Ok(Coefficients {
-        stiffness: rotate(&k, s / 2.0),
-        damping: rotate(&c, s / 2.0 * 2.0 * PI),
+        stiffness: in_load_frame(&k, f0, s / 2.0),
+        damping: in_load_frame(&c, f0, s / 2.0 * 2.0 * PI),
         sommerfeld_number: s,
     })
+}
+
+/// A film-frame matrix `m` (a toward h_max, b 90° ahead in the direction of rotation) in the
+/// load frame of the film force `film_force` on the journal (x along the load W = −F, y = x
+/// turned 90° with the rotation), times `scale`, as [xx, xy, yx, yy].
+pub fn in_load_frame(m: &[[f64; 2]; 2], film_force: [f64; 2], scale: f64) -> [f64; 4] {
+    let norm = film_force[0].hypot(film_force[1]);
+    let x = [-film_force[0] / norm, -film_force[1] / norm];
+    let axes = [x, [-x[1], x[0]]];
+    let mut out = [0.0; 4];
+    for (p, u) in axes.iter().enumerate() {
+        for (q, v) in axes.iter().enumerate() {
+            let mut sum = 0.0;
+            for i in 0..2 {
+                for j in 0..2 {
+                    sum += u[i] * m[i][j] * v[j];
+                }
+            }
+            out[2 * p + q] = scale * sum;
+        }
+    }
+    out
 }
 
 /// The film `film` with its offset (`shape`) and rate (`rate`) along axis j set (0: A, the cos
@@ -186,6 +188,9 @@ pub struct Whirl {
     /// Critical mass parameter m C ω²/W at the threshold; None: stable for any mass; 0 when
     /// k_eq ≤ 0 (no mass is stable).
     pub critical_mass_parameter: Option<f64>,
+    /// Lund's γ² as computed, of either sign (γ² ≤ 0: the film cannot whirl); continuous in
+    /// the coefficients, where `whirl_frequency_ratio` is not.
+    pub whirl_ratio_squared: f64,
 }
 
 /// k_eq = (k_xx c_yy + k_yy c_xx − k_xy c_yx − k_yx c_xy)/(c_xx + c_yy),
@@ -217,6 +222,7 @@ pub fn whirl_on_shaft(c: &Coefficients, shaft_flexibility: f64) -> Whirl {
         } else {
             unstable_possible.then(|| k_eq / gamma2 / (1.0 + shaft_flexibility * k_eq))
         },
+        whirl_ratio_squared: gamma2,
     }
 }
 
