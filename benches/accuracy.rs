@@ -119,7 +119,6 @@ fn ehl_line(out: &mut String) {
 /// exponent of time against cells.
 fn ehl_line_growth(out: &mut String) {
     use stribeck::calc::contact::ehl::fluid::Fluid;
-    use stribeck::calc::contact::ehl::formulas::MoesAsymptotes;
     use stribeck::calc::contact::ehl::line::LineProblem;
     use stribeck::calc::lubricant::model::PressureLaw;
     let e_prime: f64 = 2.1e11 / (1.0 - 0.09);
@@ -134,9 +133,8 @@ fn ehl_line_growth(out: &mut String) {
         let l = 10.0;
         let w = m * two_u.sqrt();
         let ph = e_prime * (w / (2.0 * std::f64::consts::PI)).sqrt();
-        let film_guess = std::f64::consts::PI * MoesAsymptotes::new(m, l).central() / (8.0 * m);
-        let problem = LineProblem {
-            fluid: Fluid {
+        let problem = LineProblem::at_moes(
+            Fluid {
                 law: PressureLaw::Barus {
                     alpha_1_pa: l / (two_u.powf(0.25) * e_prime),
                 },
@@ -144,11 +142,9 @@ fn ehl_line_growth(out: &mut String) {
                 hertz_pressure_pa: ph,
                 compressible: true,
             },
-            lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
-            inlet: -(60.0 * film_guess).sqrt().max(4.5),
-            outlet: (3.0 * film_guess).sqrt().max(1.5),
-            film_guess,
-        };
+            m,
+            l,
+        );
         let budget = Budget::unlimited();
         let mut start = problem.solve(64, None, &budget).expect("solves");
         let (mut xs, mut ys) = (Vec::new(), Vec::new());

@@ -26,6 +26,7 @@ use std::f64::consts::{FRAC_PI_2, PI};
 use nalgebra::DMatrix;
 
 use super::fluid::Fluid;
+use super::formulas::MoesAsymptotes;
 use crate::fidelity::{IterationUnit, SolverReport};
 use crate::numerics::band_lu::{Band, BandLu};
 use crate::numerics::dense;
@@ -229,6 +230,21 @@ fn smooth_box(x: f64, half_width: f64) -> f64 {
 }
 
 impl LineProblem {
+    /// The problem at Moes' (M, L) for `fluid`: λ̄ = 3π²/(8M²), the first central-film guess
+    /// H_c = πH_Moes/(8M) from Moes' asymptotes, and the domain it sets — the inlet at √(60H_c)
+    /// but at least 4.5 half-widths upstream, the outlet at √(3H_c) but at least 1.5.
+    #[must_use]
+    pub fn at_moes(fluid: Fluid, m: f64, l: f64) -> Self {
+        let film_guess = PI * MoesAsymptotes::new(m, l).central() / (8.0 * m);
+        LineProblem {
+            fluid,
+            lambda: 3.0 * PI * PI / (8.0 * m * m),
+            inlet: -(60.0 * film_guess).sqrt().max(4.5),
+            outlet: (3.0 * film_guess).sqrt().max(1.5),
+            film_guess,
+        }
+    }
+
     fn state(&self, grid: &Grid, pressure: &[f64], h0: f64) -> State {
         let n = grid.nodes();
         let film = grid.film(pressure, h0);

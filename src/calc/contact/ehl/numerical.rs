@@ -637,14 +637,7 @@ fn line_contact(
         ));
     }
     let moes_h = MoesAsymptotes::new(m, l).central();
-    let film_guess = std::f64::consts::PI * moes_h / (8.0 * m);
-    let problem = LineProblem {
-        fluid,
-        lambda: 3.0 * std::f64::consts::PI.powi(2) / (8.0 * m * m),
-        inlet: -(60.0 * film_guess).sqrt().max(4.5),
-        outlet: (3.0 * film_guess).sqrt().max(1.5),
-        film_guess,
-    };
+    let problem = LineProblem::at_moes(fluid, m, l);
     let solved = solve_line(&problem, cells, &ctx.budget())?;
     for w in &solved.warnings {
         ctx.warn(w.code, w.message.clone());
