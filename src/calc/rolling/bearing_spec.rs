@@ -55,12 +55,12 @@ pub struct MaterialSpec {
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct BallBearingSpec {
-    /// Ball diameter D, m (> 0, at most 100, less than the pitch diameter).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.0127)]
+    /// Ball diameter D, m (0.1 mm … 100 m, less than the pitch diameter).
+    #[schema(value_type = f64, minimum = 1e-4, maximum = 100.0, example = 0.0127)]
     pub ball_diameter_m: Positive,
     /// Pitch diameter d_m, m: the circle through the ball centres, (d_i + d_o)/2 of the raceway
-    /// diameters (> ball_diameter_m, at most 100).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.07)]
+    /// diameters (> ball_diameter_m; 0.1 mm … 100 m).
+    #[schema(value_type = f64, minimum = 1e-4, maximum = 100.0, example = 0.07)]
     pub pitch_diameter_m: Positive,
     /// Number of balls Z, 3 … 1000; they must fit on the pitch circle: D < d_m sin(π/Z).
     #[schema(minimum = 3, maximum = 1000, example = 10)]
@@ -104,15 +104,15 @@ impl From<MaterialSpec> for Material {
 #[derive(Debug, Clone, Copy, Deserialize, ToSchema)]
 #[serde(deny_unknown_fields)]
 pub struct RollerBearingSpec {
-    /// Roller diameter D, m (> 0, at most 100, less than the pitch diameter).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.01)]
+    /// Roller diameter D, m (0.1 mm … 100 m, less than the pitch diameter).
+    #[schema(value_type = f64, minimum = 1e-4, maximum = 100.0, example = 0.01)]
     pub roller_diameter_m: Positive,
     /// Effective roller length L, m: the length in contact, less corner radii or undercuts
-    /// (> 0, at most 100).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.009601)]
+    /// (0.1 mm … 100 m; a smaller size makes the line load underflow).
+    #[schema(value_type = f64, minimum = 1e-4, maximum = 100.0, example = 0.009601)]
     pub roller_effective_length_m: Positive,
-    /// Pitch diameter d_m = (d_i + d_o)/2 of the raceway diameters, m.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 100.0, example = 0.0650115)]
+    /// Pitch diameter d_m = (d_i + d_o)/2 of the raceway diameters, m (0.1 mm … 100 m).
+    #[schema(value_type = f64, minimum = 1e-4, maximum = 100.0, example = 0.0650115)]
     pub pitch_diameter_m: Positive,
     /// Number of rollers Z, 3 … 1000; they must fit: D < d_m sin(π/Z).
     #[schema(minimum = 3, maximum = 1000, example = 14)]

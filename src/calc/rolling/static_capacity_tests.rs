@@ -216,6 +216,21 @@ fn bad_input_is_refused_with_its_pointer() {
     }
 }
 
+/// A roller of subnormal length made the line load underflow and f0 = Q₀/(5 L D (1 − γ)) NaN:
+/// a 500 at serialisation (schemathesis, CI 2026-11-27). Sizes below 0.1 mm are refused.
+#[test]
+fn a_vanishing_roller_is_refused_not_a_nan() {
+    let body = json!({"rotating": false, "operation": "normal", "radial_load_n": 885344088.8,
+        "bearing": {"rings": {"elastic_modulus_pa": 4.94e12, "poisson_ratio": -0.605},
+            "pitch_diameter_m": 1.417, "roller_effective_length_m": 2.225073858507e-311,
+            "roller_diameter_m": 0.01, "roller_count": 298, "diametral_clearance_m": 0.0,
+            "rollers": {"poisson_ratio": -0.19, "elastic_modulus_pa": 9.999e12}}});
+    assert_eq!(
+        invalid_pointers::<StaticCapacity>(&body),
+        vec!["/bearing/roller_effective_length_m"]
+    );
+}
+
 /// A denormal load would make s0 infinite: refused, as is P0 = 0 from Y0 = 0.
 #[test]
 fn vanishing_equivalent_loads_are_refused() {
