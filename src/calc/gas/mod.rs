@@ -11,6 +11,8 @@
 //!   rotor's whirl threshold;
 //! - `journal_film`: the plain 360° gas journal's film and its performance;
 //! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
+//! - `pivoted_pad`: a crowned gas pad on its pivot, balanced for a clearance or a load (the
+//!   tilting-pad thrust bearing's pad);
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
 //! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance.
 
@@ -22,6 +24,7 @@ pub mod journal;
 pub mod journal_dynamics;
 pub mod journal_film;
 pub mod method;
+pub mod pivoted_pad;
 pub mod recess_pad;
 pub mod slider;
 pub mod slider_film;

@@ -1,0 +1,903 @@
+//! A crowned sector pad on a point pivot, the pad of the tilting-pad gas thrust bearing
+//! (Khonsari & Booser §11.4 after Shapiro & Colsher 1968): the pitch and roll at which the film's
+//! pressure has no moment about the pivot, and the clearance at which the pad carries its load.
+//!
+//! **Frame.** Polar coordinates on the runner, scaled by the outer radius: R = r/r_o from
+//! R_i = r_i/r_o to 1, θ from the pad's leading edge (0) to its trailing edge θ_p, the runner
+//! turning toward +θ. The pivot is at (R_p, θ_v), θ_v = γ. P = p/p_a (absolute), H = h/C.
+//!
+//! **Film.** C is Shapiro & Colsher's clearance: the film at the crown's peak before the pad
+//! tilts. The crown is cylindrical, its axis the pad's radial centre line θ_c = θ_p/2, so it
+//! grows with the square of the distance from that line, R sin(θ − θ_c); δ is its height at
+//! the leading and trailing edges on the mean radius R_m (as the texts size a sector by its
+//! mean-radius rectangle). The pad tilts about the pivot, where
+//! the film does not move: pitch a = α r_o/C about the pivot's radial line (positive closing
+//! the trailing part), roll b = β r_o/C about the line across it (positive closing the outer
+//! part):
+//!
+//! ```text
+//! H = 1 + κ [R sin(θ − θ_c) / (R_m sin(θ_p/2))]² + a R sin(θ_v − θ) + b (R_p − R cos(θ − θ_v))
+//! ```
+//!
+//! with κ = δ/C. Every term is a polynomial of degree ≤ 2 in the pad's Cartesian coordinates:
+//! H is a convex quadratic over the pad.
+//!
+//! **Film equation.** The isothermal compressible Reynolds equation in polar coordinates
+//! ([`Metric::Polar`]), ∂θ(k/R ∂θP) + ∂R(R k ∂R P) = Λ R ∂θ(P H), k = H³P (+ slip), with
+//! Shapiro & Colsher's bearing number Λ = 6μω r_o²/(p_a C²) (derived from the mass balance of
+//! a ring element: the flow along θ carries ρ ω r h/2), P = 1 on all four edges.
+//!
+//! **Results.** Load C_L = W/(p_a r_o²) = ∫∫(P − 1) R dR dθ; moments over p_a r_o³ about the
+//! pivot's radial line, ∫∫(P − 1) R sin(θ − θ_v) R dR dθ, and across it,
+//! ∫∫(P − 1)(R cos(θ − θ_v) − R_p) R dR dθ; friction moment on the runner about the axis,
+//! F = M_f/(p_a r_o² C) = (Λ/6)∫∫R³/H dR dθ + ½∫∫R H ∂θP dR dθ, the second term taken by parts
+//! (P = 1 at both θ edges) as −½∫∫R ∂θH (P − 1) dR dθ, exact row by row (+ on the pad).
+//!
+//! **Equilibrium.** For a clearance: the pitch from rest by a bracketed secant on the pitch
+//! moment with the roll at 0, then both moments to zero by Broyden's method from a
+//! finite-difference Jacobian, the steps halved where they would close the film. For a load:
+//! the clearance by a bracketed secant on ln(C_L/C_L,target) in ln C (C_L falls as C grows,
+//! toward the Λ → ∞ limit P H = const as C → 0, which bounds what the pad can carry), each
+//! trial balanced from the last one's tilt and Jacobian. Every film is solved by Newton from
+//! the last one's field.
+
+use std::cell::RefCell;
+
+use super::method::{Mesh, Method};
+use super::slider_film::coarsen;
+use crate::calc::{Budget, CalcError};
+use crate::fidelity::SolverReport;
+use crate::numerics::optimise::brent_minimise;
+use crate::numerics::quadrature::gauss_legendre;
+use crate::numerics::reynolds_gas::{
+    self, graded, FarEdge, GasGrid, GasProblem, GasStopping, Metric,
+};
+use crate::numerics::richardson::{extrapolate, fine_error};
+use crate::numerics::roots::{secant_bracketed, Stopping};
+
+/// The pad's shape and pivot, dimensionless.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Sector {
+    /// R_i = r_i/r_o.
+    pub inner_radius: f64,
+    /// θ_p, rad.
+    pub angle: f64,
+    /// R_p = r_pv/r_o.
+    pub pivot_radius: f64,
+    /// θ_v = γ, rad from the leading edge.
+    pub pivot_angle: f64,
+}
+
+impl Sector {
+    /// R_m.
+    pub fn mean_radius(&self) -> f64 {
+        0.5 * (1.0 + self.inner_radius)
+    }
+}
+
+/// The pad's tilt: pitch a = α r_o/C and roll b = β r_o/C.
+#[derive(Debug, Clone, Copy, PartialEq, Default)]
+pub struct Tilt {
+    pub pitch: f64,
+    pub roll: f64,
+}
+
+/// The film and its physics, dimensionless.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadFilm {
+    pub sector: Sector,
+    /// Λ = 6μω r_o²/(p_a C²).
+    pub bearing_number: f64,
+    /// κ = δ/C.
+    pub crown: f64,
+    /// Kn = λ_a/C of the slip factor (0: continuum).
+    pub knudsen_number: f64,
+}
+
+impl PadFilm {
+    /// The crown's term's scale, (R_m sin(θ_p/2))².
+    fn crown_scale(&self) -> f64 {
+        (self.sector.mean_radius() * (0.5 * self.sector.angle).sin()).powi(2)
+    }
+
+    /// H(θ, R).
+    pub fn height(&self, t: Tilt, theta: f64, r: f64) -> f64 {
+        let s = &self.sector;
+        let across = r * (theta - 0.5 * s.angle).sin();
+        1.0 + self.crown * across * across / self.crown_scale()
+            + t.pitch * r * (s.pivot_angle - theta).sin()
+            + t.roll * (s.pivot_radius - r * (theta - s.pivot_angle).cos())
+    }
+
+    /// ∂H/∂θ.
+    fn height_slope(&self, t: Tilt, theta: f64, r: f64) -> f64 {
+        let s = &self.sector;
+        let c = theta - 0.5 * s.angle;
+        self.crown * r * r * (2.0 * c).sin() / self.crown_scale()
+            - t.pitch * r * (s.pivot_angle - theta).cos()
+            + t.roll * r * (theta - s.pivot_angle).sin()
+    }
+
+    /// The thinnest film and where: (H_min, θ, R). In Cartesian coordinates along the pad's
+    /// centre line (ξ) and across it (η), H is quadratic in η (the crown) and linear in ξ, so
+    /// its minimum over the pad lies on the pad's boundary: each of the four edges is searched
+    /// from the best of 65 samples by Brent's method.
+    pub fn thinnest(&self, t: Tilt) -> (f64, f64, f64) {
+        let s = &self.sector;
+        let (ri, tp) = (s.inner_radius, s.angle);
+        let mut best = (f64::INFINITY, 0.0, 0.0);
+        let mut consider = |h: f64, theta: f64, r: f64| {
+            if h < best.0 {
+                best = (h, theta, r);
+            }
+        };
+        // Edges as a parameter u ∈ [0, 1].
+        let edges: [&dyn Fn(f64) -> (f64, f64); 4] = [
+            &|u| (0.0, ri + u * (1.0 - ri)),
+            &|u| (tp, ri + u * (1.0 - ri)),
+            &|u| (u * tp, ri),
+            &|u| (u * tp, 1.0),
+        ];
+        const SAMPLES: usize = 64;
+        for edge in edges {
+            let h_at = |u: f64| {
+                let (theta, r) = edge(u);
+                self.height(t, theta, r)
+            };
+            let k = (0..=SAMPLES)
+                .min_by(|&a, &b| {
+                    h_at(a as f64 / SAMPLES as f64).total_cmp(&h_at(b as f64 / SAMPLES as f64))
+                })
+                .unwrap_or(0);
+            let (lo, hi) = (
+                k.saturating_sub(1) as f64 / SAMPLES as f64,
+                (k + 1).min(SAMPLES) as f64 / SAMPLES as f64,
+            );
+            let (u, h) = brent_minimise(h_at, lo, hi, 1e-12);
+            let (theta, r) = edge(u);
+            consider(h, theta, r);
+            let (theta, r) = edge(k as f64 / SAMPLES as f64);
+            consider(self.height(t, theta, r), theta, r);
+        }
+        best
+    }
+
+    /// The pitches at which the unrolled pad first touches the runner, (closing the leading
+    /// part, closing the trailing part): min H is concave in the pitch and 1 at 0, so each is a
+    /// bisection on the sign of min H.
+    pub fn touching_pitches(&self) -> (f64, f64) {
+        let touch = |dir: f64| {
+            let (mut lo, mut hi) = (0.0, dir);
+            while self
+                .thinnest(Tilt {
+                    pitch: hi,
+                    roll: 0.0,
+                })
+                .0
+                > 0.0
+            {
+                lo = hi;
+                hi *= 2.0;
+            }
+            for _ in 0..60 {
+                let mid = 0.5 * (lo + hi);
+                if self
+                    .thinnest(Tilt {
+                        pitch: mid,
+                        roll: 0.0,
+                    })
+                    .0
+                    > 0.0
+                {
+                    lo = mid;
+                } else {
+                    hi = mid;
+                }
+            }
+            lo
+        };
+        (touch(-1.0), touch(1.0))
+    }
+}
+
+/// The dimensionless performance of a solved pad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadPerformance {
+    /// C_L = W/(p_a r_o²).
+    pub load: f64,
+    /// The pressure's moment about the pivot's radial line over p_a r_o³ (positive: the
+    /// pressure's centre behind the pivot).
+    pub pitch_moment: f64,
+    /// Its moment about the line across the pivot over p_a r_o³ (positive: the centre outside
+    /// the pivot's radius).
+    pub roll_moment: f64,
+    /// F = M_f/(p_a r_o² C) on the runner (the moving surface).
+    pub friction_runner: f64,
+    /// The same on the pad.
+    pub friction_pad: f64,
+    /// Peak P (absolute, over ambient).
+    pub max_pressure: f64,
+}
+
+impl PadPerformance {
+    /// The larger moment over the load: how far the pressure's centre is from the pivot, in
+    /// units of r_o.
+    pub fn imbalance(&self) -> f64 {
+        self.pitch_moment.abs().max(self.roll_moment.abs()) / self.load.abs()
+    }
+}
+
+/// (Λ/6)∫∫R³/H dR dθ, the Couette part of F: 16 × 8 panels of 8 × 8 Gauss–Legendre points.
+fn couette_moment(film: &PadFilm, t: Tilt) -> f64 {
+    const PANELS: (usize, usize) = (16, 8);
+    let rule = gauss_legendre(8);
+    let s = &film.sector;
+    let (wt, wr) = (
+        s.angle / PANELS.0 as f64,
+        (1.0 - s.inner_radius) / PANELS.1 as f64,
+    );
+    let mut sum = 0.0;
+    for pt in 0..PANELS.0 {
+        for pr in 0..PANELS.1 {
+            let (t0, r0) = (
+                (pt as f64 + 0.5) * wt,
+                s.inner_radius + (pr as f64 + 0.5) * wr,
+            );
+            for &(u, wu) in &rule {
+                for &(v, wv) in &rule {
+                    let (theta, r) = (t0 + 0.5 * wt * u, r0 + 0.5 * wr * v);
+                    sum += 0.25 * wt * wr * wu * wv * r * r * r / film.height(t, theta, r);
+                }
+            }
+        }
+    }
+    film.bearing_number / 6.0 * sum
+}
+
+/// Load, moments, friction and the peak of a field solved at tilt `t`.
+pub fn performance(film: &PadFilm, t: Tilt, grid: &GasGrid, p: &[f64]) -> PadPerformance {
+    let s = &film.sector;
+    let (mut load, mut pitch, mut roll, mut shear) = (0.0, 0.0, 0.0, 0.0);
+    let mut max_pressure = f64::MIN;
+    for i in 0..=grid.nx() {
+        let theta = grid.x[i];
+        for j in 0..grid.y.len() {
+            let r = grid.y[j];
+            let w = grid.weight(i, j) * r;
+            let gauge = p[grid.at(i, j)] - 1.0;
+            load += w * gauge;
+            pitch += w * gauge * r * (theta - s.pivot_angle).sin();
+            roll += w * gauge * (r * (theta - s.pivot_angle).cos() - s.pivot_radius);
+            shear += w * film.height_slope(t, theta, r) * gauge;
+            max_pressure = max_pressure.max(p[grid.at(i, j)]);
+        }
+    }
+    let couette = couette_moment(film, t);
+    PadPerformance {
+        load,
+        pitch_moment: pitch,
+        roll_moment: roll,
+        friction_runner: couette - 0.5 * shear,
+        friction_pad: couette + 0.5 * shear,
+        max_pressure,
+    }
+}
+
+/// The pad's grid: θ graded toward the trailing edge so that its last cell is about 1/(4Λ_B) of
+/// the pad (the boundary layer where P falls to ambient is ~1/Λ_B thick, with Λ_B = Λ R_m² θ_p
+/// the equivalent rectangle's bearing number), R graded toward both edges with the first cell
+/// about a third of the side layer (~ R_m θ_p/√Λ_B); `mesh.across` cells on each half of the
+/// radial width. With `half`, every other node of it (the Richardson pair's half mesh).
+fn grid(film: &PadFilm, mesh: Mesh, half: bool) -> GasGrid {
+    let s = &film.sector;
+    let rm = s.mean_radius();
+    let lambda = (film.bearing_number * rm * rm * s.angle).max(1.0);
+    let x = graded(mesh.along, 0.25 / lambda, false)
+        .into_iter()
+        .map(|v| v * s.angle)
+        .collect();
+    let half_width = 0.5 * (1.0 - s.inner_radius);
+    let finest = 0.33 * rm * s.angle / lambda.sqrt() / half_width;
+    let side = graded(mesh.across.max(2), finest, true);
+    let y = side
+        .iter()
+        .map(|v| s.inner_radius + v * half_width)
+        .chain(side.iter().rev().skip(1).map(|v| 1.0 - v * half_width))
+        .collect();
+    let fine = GasGrid {
+        x,
+        y,
+        periodic: false,
+    };
+    if half {
+        coarsen(&fine)
+    } else {
+        fine
+    }
+}
+
+/// A pad solved at one tilt.
+#[derive(Debug, Clone)]
+pub struct PadSolve {
+    pub film: PadFilm,
+    pub tilt: Tilt,
+    pub grid: GasGrid,
+    pub p: Vec<f64>,
+    pub performance: PadPerformance,
+    /// Its Newton run's report.
+    pub report: SolverReport,
+}
+
+/// ∂(pitch moment, roll moment)/∂(pitch, roll), row-major.
+type Jacobian = [[f64; 2]; 2];
+
+/// The share of the way to a touching pad that the pitch search from rest may go.
+const CLEAR_SHARE: f64 = 0.995;
+/// Where the pitch search from rest starts, as a share of the way to touching: an aligned flat
+/// pad carries nothing, and its zero moment is no equilibrium.
+const START_SHARE: f64 = 0.05;
+/// The balance's tolerance on the pressure's centre's distance from the pivot, r_o.
+const BALANCE_TOLERANCE: f64 = 1e-10;
+/// Broyden steps per balance before the Jacobian is measured afresh (once).
+const BROYDEN_STEPS: u32 = 40;
+
+/// The searches' state: the last solved field (every solve starts from it, interpolated onto
+/// its grid), the last balance's Jacobian, and the Newton steps spent.
+struct Solver<'a> {
+    mesh: Mesh,
+    half: bool,
+    budget: &'a Budget,
+    last: RefCell<Option<PadSolve>>,
+    jacobian: RefCell<Option<Jacobian>>,
+    newton_steps: RefCell<u32>,
+}
+
+impl<'a> Solver<'a> {
+    /// Solve the film at tilt `t`; None when the film would touch the runner.
+    fn solve(&self, film: &PadFilm, t: Tilt) -> Result<Option<PadSolve>, CalcError> {
+        if film.thinnest(t).0 <= 0.0 {
+            return Ok(None);
+        }
+        let grid = grid(film, self.mesh, self.half);
+        let start = self
+            .last
+            .borrow()
+            .as_ref()
+            .map(|s| reynolds_gas::prolong(&s.grid, &s.p, &grid));
+        let problem = GasProblem {
+            far_edge: FarEdge::Held,
+            metric: Metric::Polar,
+            ..GasProblem::new(&grid, film.bearing_number, film.knudsen_number, |x, y| {
+                film.height(t, x, y)
+            })
+        };
+        let solved = reynolds_gas::solve(
+            &grid,
+            &problem,
+            start.as_deref(),
+            GasStopping::default(),
+            self.budget,
+        )?;
+        *self.newton_steps.borrow_mut() += solved.report.iterations;
+        let performance = performance(film, t, &grid, &solved.p);
+        let done = PadSolve {
+            film: *film,
+            tilt: t,
+            grid,
+            p: solved.p,
+            performance,
+            report: solved.report,
+        };
+        *self.last.borrow_mut() = Some(done.clone());
+        Ok(Some(done))
+    }
+
+    /// The pitch that zeroes the pitch moment with the roll held at 0, from rest.
+    fn pitch_from_rest(&self, film: &PadFilm) -> Result<f64, CalcError> {
+        let (back, front) = film.touching_pitches();
+        let (back, front) = (CLEAR_SHARE * back, CLEAR_SHARE * front);
+        let failed: RefCell<Option<CalcError>> = RefCell::new(None);
+        let moment = |m: f64| -> f64 {
+            match self.solve(
+                film,
+                Tilt {
+                    pitch: m,
+                    roll: 0.0,
+                },
+            ) {
+                Ok(Some(s)) => s.performance.pitch_moment,
+                Ok(None) => f64::NAN,
+                Err(e) => {
+                    *failed.borrow_mut() = Some(e);
+                    f64::NAN
+                }
+            }
+        };
+        let check = |failed: &RefCell<Option<CalcError>>| match failed.borrow_mut().take() {
+            Some(e) => Err(e),
+            None => Ok(()),
+        };
+        let m0 = START_SHARE * front;
+        let g0 = moment(m0);
+        check(&failed)?;
+        // March toward touching on the side the moment asks (a positive moment, the pressure
+        // behind the pivot, asks for less pitch) until it changes sign.
+        let end = if g0 > 0.0 { back } else { front };
+        let (mut a, mut ga) = (m0, g0);
+        let mut bracket = None;
+        for share in [0.3, 0.6, 0.85, 0.95, 1.0] {
+            let m = m0 + share * (end - m0);
+            let g = moment(m);
+            check(&failed)?;
+            if g * g0 <= 0.0 {
+                bracket = Some(((a, ga), (m, g)));
+                break;
+            }
+            (a, ga) = (m, g);
+        }
+        let Some((lo, hi)) = bracket else {
+            return Err(no_equilibrium(film, g0));
+        };
+        let root = secant_bracketed(
+            moment,
+            lo,
+            hi,
+            Stopping {
+                x_tolerance: 1e-6 * (front - back),
+                max_iterations: 60,
+            },
+        );
+        check(&failed)?;
+        root.map(|r| r.x)
+            .map_err(|e| CalcError::from_root("pivoted_pad_pitch", e))
+    }
+
+    /// The moments at tilt `t` over the load (the pressure centre's offsets from the pivot),
+    /// None where the film would touch or pulls the pad.
+    fn offsets(&self, film: &PadFilm, t: Tilt) -> Result<Option<[f64; 2]>, CalcError> {
+        Ok(self.solve(film, t)?.and_then(|s| {
+            let p = s.performance;
+            (p.load > 0.0).then(|| [p.pitch_moment / p.load, p.roll_moment / p.load])
+        }))
+    }
+
+    /// The finite-difference Jacobian of [`Solver::offsets`] at `t` (whose offsets are `f`).
+    fn measure(&self, film: &PadFilm, t: Tilt, f: [f64; 2]) -> Result<Jacobian, CalcError> {
+        let h = 1e-4 * (1.0 + t.pitch.abs());
+        let mut j = [[0.0; 2]; 2];
+        for (col, step) in [
+            (
+                0,
+                Tilt {
+                    pitch: h,
+                    roll: 0.0,
+                },
+            ),
+            (
+                1,
+                Tilt {
+                    pitch: 0.0,
+                    roll: h,
+                },
+            ),
+        ] {
+            let probe = Tilt {
+                pitch: t.pitch + step.pitch,
+                roll: t.roll + step.roll,
+            };
+            let g = self.offsets(film, probe)?.ok_or_else(|| touching(film))?;
+            for row in 0..2 {
+                j[row][col] = (g[row] - f[row]) / h;
+            }
+        }
+        Ok(j)
+    }
+
+    /// Pitch and roll with no moment about the pivot, by Broyden's method from `guess` (from
+    /// rest when None) and the last balance's Jacobian when there is one.
+    fn balance(&self, film: &PadFilm, guess: Option<Tilt>) -> Result<PadSolve, CalcError> {
+        let mut t = match guess {
+            Some(t) => t,
+            None => Tilt {
+                pitch: self.pitch_from_rest(film)?,
+                roll: 0.0,
+            },
+        };
+        let mut f = self.offsets(film, t)?.ok_or_else(|| touching(film))?;
+        let carried = *self.jacobian.borrow();
+        let mut j = match carried {
+            Some(j) => j,
+            None => self.measure(film, t, f)?,
+        };
+        // Whether `j` was measured at `t` (not carried or updated).
+        let mut fresh = carried.is_none();
+        let size = |f: [f64; 2]| f[0].abs().max(f[1].abs());
+        let mut steps = 0;
+        while size(f) > BALANCE_TOLERANCE {
+            steps += 1;
+            if steps > BROYDEN_STEPS {
+                return Err(CalcError::NotConverged {
+                    method: "pivoted_pad_broyden",
+                    iterations: steps,
+                    residual: size(f),
+                });
+            }
+            let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            let dx = [
+                -(j[1][1] * f[0] - j[0][1] * f[1]) / det,
+                -(-j[1][0] * f[0] + j[0][0] * f[1]) / det,
+            ];
+            // Backtrack until the offsets shrink (a step that would close the film, or leave
+            // the film pulling, counts as no step).
+            let mut scale = 1.0;
+            let accepted = loop {
+                let trial = Tilt {
+                    pitch: t.pitch + scale * dx[0],
+                    roll: t.roll + scale * dx[1],
+                };
+                match self.offsets(film, trial)? {
+                    Some(g) if g.iter().all(|v| v.is_finite()) && size(g) < size(f) => {
+                        break Some((trial, g))
+                    }
+                    _ if scale > 1.0 / 64.0 => scale *= 0.5,
+                    _ => break None,
+                }
+            };
+            match accepted {
+                Some((trial, g)) => {
+                    // Broyden's update of the Jacobian along the step.
+                    let s = [trial.pitch - t.pitch, trial.roll - t.roll];
+                    let y = [g[0] - f[0], g[1] - f[1]];
+                    let ss = s[0] * s[0] + s[1] * s[1];
+                    for row in 0..2 {
+                        let r = y[row] - (j[row][0] * s[0] + j[row][1] * s[1]);
+                        j[row][0] += r * s[0] / ss;
+                        j[row][1] += r * s[1] / ss;
+                    }
+                    (t, f, fresh) = (trial, g, false);
+                }
+                None if !fresh => {
+                    j = self.measure(film, t, f)?;
+                    fresh = true;
+                }
+                None => {
+                    return Err(CalcError::impossible(
+                        "/pivot_angle_fraction",
+                        format!(
+                            "the pad finds no pitch and roll at which the film's pressure is centred on the pivot (it stays {:.2e} r_o along and {:.2e} r_o across the pad from it): move the pivot, or crown the pad",
+                            f[0], f[1]
+                        ),
+                    ))
+                }
+            }
+        }
+        *self.jacobian.borrow_mut() = Some(j);
+        let done = self
+            .last
+            .borrow()
+            .clone()
+            .filter(|s| s.tilt == t)
+            .map_or_else(|| self.solve(film, t).map(Option::unwrap), Ok)?;
+        if done.performance.load <= 0.0 {
+            return Err(CalcError::impossible(
+                "/pivot_angle_fraction",
+                format!(
+                    "on this pivot the pad balances only with the film pulling it toward the runner (W/(p_a r_o²) = {:.3e}): move the pivot toward the trailing edge",
+                    done.performance.load
+                ),
+            ));
+        }
+        Ok(done)
+    }
+}
+
+/// The 422 of a pivot without an equilibrium (`g0` the pitch moment near rest).
+fn no_equilibrium(film: &PadFilm, g0: f64) -> CalcError {
+    let s = &film.sector;
+    CalcError::impossible(
+        "/pivot_angle_fraction",
+        format!(
+            "the pad has no equilibrium on a pivot at {:.3} of its angle: the film's pressure stays {} the pivot at every pitch that keeps the film clear of the runner{}",
+            s.pivot_angle / s.angle,
+            if g0 > 0.0 { "behind" } else { "ahead of" },
+            if film.crown == 0.0 { " (a flat gas pad's centre of pressure moves toward 2/3 of its breadth as the bearing number grows: a crown lets a pivot nearer the middle carry load)" } else { "" }
+        ),
+    )
+}
+
+/// The 422 of a balance that would close the film.
+fn touching(film: &PadFilm) -> CalcError {
+    CalcError::impossible(
+        "/crown_m",
+        format!(
+            "the pad touches the runner before it balances on its pivot (crown δ/C = {:.3}, Λ = {:.3e})",
+            film.crown, film.bearing_number
+        ),
+    )
+}
+
+/// What sets the film at a clearance: the dimensional scales of the bearing number, crown and
+/// slip.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct PadScales {
+    pub sector: Sector,
+    /// 6μω r_o²/p_a, m²: Λ C².
+    pub bearing_number_m2: f64,
+    /// Crown δ, m.
+    pub crown_m: f64,
+    /// λ_a, m, when slip applies (Kn = λ_a/C).
+    pub mean_free_path_m: Option<f64>,
+}
+
+impl PadScales {
+    /// The film at clearance C.
+    pub fn film(&self, clearance_m: f64) -> PadFilm {
+        PadFilm {
+            sector: self.sector,
+            bearing_number: self.bearing_number_m2 / (clearance_m * clearance_m),
+            crown: self.crown_m / clearance_m,
+            knudsen_number: self.mean_free_path_m.map_or(0.0, |l| l / clearance_m),
+        }
+    }
+
+    /// The clearance at bearing number Λ.
+    pub fn clearance_at(&self, bearing_number: f64) -> f64 {
+        (self.bearing_number_m2 / bearing_number).sqrt()
+    }
+}
+
+/// The pad in equilibrium on one mesh.
+#[derive(Debug, Clone)]
+pub struct Balanced {
+    pub clearance_m: f64,
+    pub solve: PadSolve,
+    jacobian: Option<Jacobian>,
+    /// Newton steps of every film solve of the searches.
+    pub newton_steps: u32,
+    /// Steps of the clearance search (0 when the clearance is given).
+    pub search_steps: u32,
+}
+
+/// The pad at clearance C in equilibrium on `mesh` (`half`: every other node of it), from a
+/// nearby balanced pad's tilt, Jacobian and field.
+fn balanced_at_clearance(
+    scales: &PadScales,
+    clearance_m: f64,
+    (mesh, half): (Mesh, bool),
+    near: Option<&Balanced>,
+    budget: &Budget,
+) -> Result<Balanced, CalcError> {
+    let solver = Solver {
+        mesh,
+        half,
+        budget,
+        last: RefCell::new(near.map(|b| b.solve.clone())),
+        jacobian: RefCell::new(near.and_then(|b| b.jacobian)),
+        newton_steps: RefCell::new(0),
+    };
+    let solve = solver.balance(&scales.film(clearance_m), near.map(|b| b.solve.tilt))?;
+    Ok(Balanced {
+        clearance_m,
+        solve,
+        jacobian: solver.jacobian.into_inner(),
+        newton_steps: solver.newton_steps.into_inner(),
+        search_steps: 0,
+    })
+}
+
+/// The load search's range of bearing numbers: from the largest the solver takes down to 0.01
+/// (where the pad carries a few thousandths of p_a r_o²).
+const LOAD_SEARCH_BEARING_NUMBERS: (f64, f64) = (super::method::MAX_BEARING_NUMBER, 1e-2);
+/// The bearing number the load search starts from, without a nearby pad.
+const LOAD_SEARCH_START: f64 = 100.0;
+
+/// The pad in equilibrium under C_L = W/(p_a r_o²) on `mesh`, from a nearby balanced pad (or
+/// from the clearance at which Λ = 100).
+fn balanced_at_load(
+    scales: &PadScales,
+    target: f64,
+    mesh: (Mesh, bool),
+    near: Option<&Balanced>,
+    budget: &Budget,
+) -> Result<Balanced, CalcError> {
+    let last: RefCell<Option<Balanced>> = RefCell::new(near.cloned());
+    let failed: RefCell<Option<CalcError>> = RefCell::new(None);
+    let steps = RefCell::new(0u32);
+    // ln(C_L/C_L,target) at u = ln C: falls as u grows.
+    let residual = |u: f64| -> f64 {
+        let previous = last.borrow().clone();
+        match balanced_at_clearance(scales, u.exp(), mesh, previous.as_ref(), budget) {
+            Ok(b) => {
+                *steps.borrow_mut() += b.newton_steps;
+                let w = b.solve.performance.load;
+                *last.borrow_mut() = Some(b);
+                (w / target).ln()
+            }
+            Err(e) => {
+                *failed.borrow_mut() = Some(e);
+                f64::NAN
+            }
+        }
+    };
+    let check = || match failed.borrow_mut().take() {
+        Some(e) => Err(e),
+        None => Ok(()),
+    };
+    let (u_min, u_max) = (
+        scales.clearance_at(LOAD_SEARCH_BEARING_NUMBERS.0).ln(),
+        scales.clearance_at(LOAD_SEARCH_BEARING_NUMBERS.1).ln(),
+    );
+    let u0 = near.map_or_else(
+        || scales.clearance_at(LOAD_SEARCH_START).ln(),
+        |b| b.clearance_m.ln(),
+    );
+    let r0 = residual(u0);
+    check()?;
+    // Step ln C (by 2 % near a guess, by ln 2 from rest) toward the target until the residual
+    // changes sign, doubling the step.
+    let mut step = if near.is_some() {
+        0.02
+    } else {
+        std::f64::consts::LN_2
+    };
+    let (mut a, mut ra) = (u0, r0);
+    let bracket = loop {
+        let u = (a + if ra > 0.0 { step } else { -step }).clamp(u_min, u_max);
+        if u == a {
+            break None;
+        }
+        let r = residual(u);
+        check()?;
+        if r * ra <= 0.0 {
+            break Some(((a, ra), (u, r)));
+        }
+        (a, ra) = (u, r);
+        step *= 2.0;
+    };
+    let Some((lo, hi)) = bracket else {
+        let carried = target * ra.exp();
+        return Err(CalcError::impossible(
+            "/load_n",
+            if ra < 0.0 {
+                format!(
+                    "each pad carries at most W/(p_a r_o²) = {carried:.4} (at the bearing number {:.0e}, where the film is at its Λ → ∞ limit P H = const); the load asks {target:.4}: add pads or area",
+                    LOAD_SEARCH_BEARING_NUMBERS.0
+                )
+            } else {
+                format!(
+                    "the load W/(p_a r_o²) = {target:.3e} per pad is below what the pad carries at Λ = {:.0e} ({carried:.3e}): the film would be thicker than the model's range",
+                    LOAD_SEARCH_BEARING_NUMBERS.1
+                )
+            },
+        ));
+    };
+    let root = secant_bracketed(
+        residual,
+        lo,
+        hi,
+        Stopping {
+            x_tolerance: 1e-9,
+            max_iterations: 60,
+        },
+    );
+    check()?;
+    let root = root.map_err(|e| CalcError::from_root("pivoted_pad_clearance", e))?;
+    // The secant's last evaluation is its answer, unless the search ended on a bracket end it
+    // had evaluated earlier: balance there again.
+    let mut done = last.into_inner().expect("the search balanced pads");
+    if done.clearance_m != root.x.exp() {
+        done = balanced_at_clearance(scales, root.x.exp(), mesh, Some(&done), budget)?;
+        *steps.borrow_mut() += done.newton_steps;
+    }
+    done.newton_steps = steps.into_inner();
+    done.search_steps = root.iterations;
+    Ok(done)
+}
+
+/// What the request gives: the clearance C (m), or C_L = W/(p_a r_o²) per pad.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum PadGiven {
+    Clearance(f64),
+    Load(f64),
+}
+
+/// The pad in equilibrium by a method: on its mesh, and with Richardson also on the half mesh
+/// first (whose answer starts the fine search), extrapolated.
+#[derive(Debug, Clone)]
+pub struct PadEvaluated {
+    /// C, m (extrapolated when the load is given).
+    pub clearance_m: f64,
+    /// The tilt (extrapolated).
+    pub tilt: Tilt,
+    /// The film at that clearance (Λ, κ, Kn).
+    pub film: PadFilm,
+    pub performance: PadPerformance,
+    /// Relative error estimate: the larger of C_L's and h_min's (a third of the two meshes'
+    /// difference), with Richardson.
+    pub error_estimate: Option<f64>,
+    /// The fine mesh's equilibrium.
+    pub fine: Balanced,
+    /// Newton steps over both meshes.
+    pub newton_steps: u32,
+    /// Steps of the clearance searches over both meshes.
+    pub search_steps: u32,
+}
+
+impl PadEvaluated {
+    /// h_min (m), and where it is (θ, R).
+    pub fn thinnest_m(&self) -> (f64, f64, f64) {
+        let (h, theta, r) = self.film.thinnest(self.tilt);
+        (h * self.clearance_m, theta, r)
+    }
+}
+
+pub fn evaluate(
+    scales: &PadScales,
+    given: PadGiven,
+    method: Method,
+    budget: &Budget,
+) -> Result<PadEvaluated, CalcError> {
+    let on = |half: bool, near: Option<&Balanced>| match given {
+        PadGiven::Clearance(c) => {
+            balanced_at_clearance(scales, c, (method.mesh, half), near, budget)
+        }
+        PadGiven::Load(w) => balanced_at_load(scales, w, (method.mesh, half), near, budget),
+    };
+    let coarse = if method.richardson {
+        Some(on(true, None)?)
+    } else {
+        None
+    };
+    let fine = on(false, coarse.as_ref())?;
+    let f = &fine.solve;
+    let Some(coarse) = coarse else {
+        return Ok(PadEvaluated {
+            clearance_m: fine.clearance_m,
+            tilt: f.tilt,
+            film: f.film,
+            performance: f.performance,
+            error_estimate: None,
+            newton_steps: fine.newton_steps,
+            search_steps: fine.search_steps,
+            fine,
+        });
+    };
+    let c = &coarse.solve;
+    let x = |a: f64, b: f64| extrapolate(a, b);
+    let clearance_m = x(coarse.clearance_m, fine.clearance_m);
+    let tilt = Tilt {
+        pitch: x(c.tilt.pitch, f.tilt.pitch),
+        roll: x(c.tilt.roll, f.tilt.roll),
+    };
+    let film = scales.film(clearance_m);
+    let (cp, fp) = (c.performance, f.performance);
+    let performance = PadPerformance {
+        load: x(cp.load, fp.load),
+        pitch_moment: fp.pitch_moment,
+        roll_moment: fp.roll_moment,
+        friction_runner: x(cp.friction_runner, fp.friction_runner),
+        friction_pad: x(cp.friction_pad, fp.friction_pad),
+        max_pressure: fp.max_pressure,
+    };
+    let h_min = |b: &Balanced| b.solve.film.thinnest(b.solve.tilt).0 * b.clearance_m;
+    let extrapolated_h_min = film.thinnest(tilt).0 * clearance_m;
+    let error_estimate = Some(
+        (fine_error(h_min(&coarse), h_min(&fine)) / extrapolated_h_min)
+            .abs()
+            .max((fine_error(cp.load, fp.load) / performance.load).abs()),
+    );
+    Ok(PadEvaluated {
+        clearance_m,
+        tilt,
+        film,
+        performance,
+        error_estimate,
+        newton_steps: fine.newton_steps + coarse.newton_steps,
+        search_steps: fine.search_steps + coarse.search_steps,
+        fine,
+    })
+}
+
+#[cfg(test)]
+#[path = "pivoted_pad_tests.rs"]
+mod tests;
