@@ -62,15 +62,9 @@ pub fn level_mesh(level: Level) -> Mesh {
 /// boundary layer where P falls from about H1 to 1 is ~1/Λ thick); Y graded toward the side
 /// edge, its first cell about 1/(3√Λ) (the side layer's thickness scales as Λ^−½).
 pub fn grid(film: &SliderFilm, mesh: Mesh) -> GasGrid {
-    pad_grid(film.bearing_number, film.width_ratio, mesh)
-}
-
-/// [`grid`] for any pad film of bearing number Λ and width ratio L/B (`None`: infinitely wide)
-/// that has its boundary layer at the trailing edge.
-pub fn pad_grid(bearing_number: f64, width_ratio: Option<f64>, mesh: Mesh) -> GasGrid {
-    let lambda = bearing_number.max(1.0);
+    let lambda = film.bearing_number.max(1.0);
     let x = graded(mesh.along, 0.5 / lambda, false);
-    let y = match width_ratio {
+    let y = match film.width_ratio {
         None => vec![0.0],
         Some(l_over_b) => {
             let half = 0.5 * l_over_b;
