@@ -9,7 +9,8 @@
 //!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
 //!   2.0 and 2.5 ms);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
-//! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
+//! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each);
+//! - the tilting-pad thrust bearing (Ex 11.2's pads) by load and at a clearance.
 //!
 //! `cargo bench --bench gas`.
 
@@ -87,6 +88,22 @@ fn gas(c: &mut Criterion) {
         let entry = find(path).unwrap();
         request(c, &format!("{path} (its example)"), path, entry.example);
     }
+    // The tilting-pad thrust bearing (Ex 11.2's): by load (the clearance searched) and at a
+    // clearance (each pad balanced in pitch and roll only).
+    let path = "/v1/gas-bearings/tilting-pad-thrust";
+    let example = find(path).unwrap().example;
+    request(
+        c,
+        "gas tilting-pad thrust, Ex 11.2, by load, standard",
+        path,
+        example,
+    );
+    request(
+        c,
+        "gas tilting-pad thrust, Ex 11.2, at C = 10.5 µm (Λ = 250), standard",
+        path,
+        &example.replace(r#""load_n": 2001.7"#, r#""clearance_m": 1.0505e-5"#),
+    );
     request(
         c,
         "gas slider L/B = 1, h1/h2 = 2, Λ = 1000, standard",

@@ -14,7 +14,9 @@
 //! - `pivoted_pad`: a crowned gas pad on its pivot, balanced for a clearance or a load (the
 //!   tilting-pad thrust bearing's pad);
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
-//! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance.
+//! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance;
+//! - `tilting_pad_thrust`: the `/v1/gas-bearings/tilting-pad-thrust` room (wire); its model is
+//!   `pivoted_pad`.
 
 pub mod aerostatic_pad;
 pub mod foil;
@@ -28,5 +30,6 @@ pub mod pivoted_pad;
 pub mod recess_pad;
 pub mod slider;
 pub mod slider_film;
+pub mod tilting_pad_thrust;
 
 pub use gas_spec::{Gas, GasSpec, NamedGas};

@@ -503,7 +503,7 @@ impl<'a> Solver<'a> {
                 roll: 0.0,
             },
         };
-        let mut f = self.offsets(film, t)?.ok_or_else(|| touching(film))?;
+        let mut f = self.offsets(film, t)?.ok_or_else(|| unusable(film, t))?;
         let carried = *self.jacobian.borrow();
         let mut j = match carried {
             Some(j) => j,
@@ -564,7 +564,7 @@ impl<'a> Solver<'a> {
                     return Err(CalcError::impossible(
                         "/pivot_angle_fraction",
                         format!(
-                            "the pad finds no pitch and roll at which the film's pressure is centred on the pivot (it stays {:.2e} r_o along and {:.2e} r_o across the pad from it): move the pivot, or crown the pad",
+                            "the pad has no equilibrium on this pivot: no pitch and roll centre the film's pressure on it (it stays {:.2e} r_o along and {:.2e} r_o across the pad from it): move the pivot, or crown the pad",
                             f[0], f[1]
                         ),
                     ))
@@ -605,6 +605,19 @@ fn no_equilibrium(film: &PadFilm, g0: f64) -> CalcError {
     )
 }
 
+/// The 422 of a tilt the balance needs but cannot use: the film closes there, or pulls the pad
+/// toward the runner (no load to balance).
+fn unusable(film: &PadFilm, t: Tilt) -> CalcError {
+    if film.thinnest(t).0 <= 0.0 {
+        touching(film)
+    } else {
+        CalcError::impossible(
+            "/pivot_angle_fraction",
+            "the pad has no equilibrium on this pivot: where its pressure is centred on the pivot the film carries no load (move the pivot toward the trailing edge, or crown the pad)",
+        )
+    }
+}
+
 /// The 422 of a balance that would close the film.
 fn touching(film: &PadFilm) -> CalcError {
     CalcError::impossible(
@@ -643,6 +656,18 @@ impl PadScales {
     /// The clearance at bearing number Λ.
     pub fn clearance_at(&self, bearing_number: f64) -> f64 {
         (self.bearing_number_m2 / bearing_number).sqrt()
+    }
+
+    /// The load search's range of ln C: the clearances in [`CLEARANCE_RANGE_M`] whose bearing
+    /// numbers lie in [`LOAD_SEARCH_BEARING_NUMBERS`]; None when there are none.
+    pub fn load_search_range(&self) -> Option<(f64, f64)> {
+        let lo = self
+            .clearance_at(LOAD_SEARCH_BEARING_NUMBERS.0)
+            .max(CLEARANCE_RANGE_M.0);
+        let hi = self
+            .clearance_at(LOAD_SEARCH_BEARING_NUMBERS.1)
+            .min(CLEARANCE_RANGE_M.1);
+        (lo.is_finite() && hi.is_finite() && lo > 0.0 && lo < hi).then(|| (lo.ln(), hi.ln()))
     }
 }
 
@@ -687,7 +712,9 @@ fn balanced_at_clearance(
 
 /// The load search's range of bearing numbers: from the largest the solver takes down to 0.01
 /// (where the pad carries a few thousandths of p_a r_o²).
-const LOAD_SEARCH_BEARING_NUMBERS: (f64, f64) = (super::method::MAX_BEARING_NUMBER, 1e-2);
+pub const LOAD_SEARCH_BEARING_NUMBERS: (f64, f64) = (super::method::MAX_BEARING_NUMBER, 1e-2);
+/// The clearances a pad may run at, m.
+pub const CLEARANCE_RANGE_M: (f64, f64) = (1e-8, 1e-3);
 /// The bearing number the load search starts from, without a nearby pad.
 const LOAD_SEARCH_START: f64 = 100.0;
 
@@ -723,14 +750,18 @@ fn balanced_at_load(
         Some(e) => Err(e),
         None => Ok(()),
     };
-    let (u_min, u_max) = (
-        scales.clearance_at(LOAD_SEARCH_BEARING_NUMBERS.0).ln(),
-        scales.clearance_at(LOAD_SEARCH_BEARING_NUMBERS.1).ln(),
-    );
-    let u0 = near.map_or_else(
-        || scales.clearance_at(LOAD_SEARCH_START).ln(),
-        |b| b.clearance_m.ln(),
-    );
+    let (u_min, u_max) = scales.load_search_range().ok_or_else(|| {
+        CalcError::impossible(
+            "/speed_rpm",
+            "no clearance within the model's range gives a bearing number the film can be solved at",
+        )
+    })?;
+    let u0 = near
+        .map_or_else(
+            || scales.clearance_at(LOAD_SEARCH_START).ln(),
+            |b| b.clearance_m.ln(),
+        )
+        .clamp(u_min, u_max);
     let r0 = residual(u0);
     check()?;
     // Step ln C (by 2 % near a guess, by ln 2 from rest) toward the target until the residual
@@ -760,13 +791,15 @@ fn balanced_at_load(
             "/load_n",
             if ra < 0.0 {
                 format!(
-                    "each pad carries at most W/(p_a r_o²) = {carried:.4} (at the bearing number {:.0e}, where the film is at its Λ → ∞ limit P H = const); the load asks {target:.4}: add pads or area",
-                    LOAD_SEARCH_BEARING_NUMBERS.0
+                    "each pad carries at most W/(p_a r_o²) = {carried:.4} (at the clearance {:.3e} m, Λ = {:.3e}, the thinnest the search takes); the load asks {target:.4}: add pads or area",
+                    a.exp(),
+                    scales.film(a.exp()).bearing_number
                 )
             } else {
                 format!(
-                    "the load W/(p_a r_o²) = {target:.3e} per pad is below what the pad carries at Λ = {:.0e} ({carried:.3e}): the film would be thicker than the model's range",
-                    LOAD_SEARCH_BEARING_NUMBERS.1
+                    "the load W/(p_a r_o²) = {target:.3e} per pad is below what the pad carries at the clearance {:.3e} m, Λ = {:.3e} ({carried:.3e}): the film would be thicker than the model's range",
+                    a.exp(),
+                    scales.film(a.exp()).bearing_number
                 )
             },
         ));

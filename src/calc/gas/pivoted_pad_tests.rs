@@ -35,12 +35,15 @@ fn pad(sector: Sector, bearing_number: f64, crown: f64) -> PadFilm {
     }
 }
 
-/// Scales whose film at C = 1 m is `film` (so the clearance is the dimensionless one).
+/// The clearance the tests' films are at, m.
+const C_REF: f64 = 1e-5;
+
+/// Scales whose film at C = [`C_REF`] is `film`.
 fn scales_of(film: &PadFilm) -> PadScales {
     PadScales {
         sector: film.sector,
-        bearing_number_m2: film.bearing_number,
-        crown_m: film.crown,
+        bearing_number_m2: film.bearing_number * C_REF * C_REF,
+        crown_m: film.crown * C_REF,
         mean_free_path_m: None,
     }
 }
@@ -48,7 +51,7 @@ fn scales_of(film: &PadFilm) -> PadScales {
 fn balanced(film: &PadFilm, level: Level) -> Result<PadEvaluated, CalcError> {
     evaluate(
         &scales_of(film),
-        PadGiven::Clearance(1.0),
+        PadGiven::Clearance(C_REF),
         method(level),
         &Budget::unlimited(),
     )
@@ -188,7 +191,8 @@ fn load_and_clearance_searches_are_inverse() {
         ..method(Level::Fast)
     };
     for c in [0.8, 1.0, 1.5] {
-        let by_clearance = evaluate(&scales, PadGiven::Clearance(c), fast, &budget).unwrap();
+        let by_clearance =
+            evaluate(&scales, PadGiven::Clearance(c * C_REF), fast, &budget).unwrap();
         let by_load = evaluate(
             &scales,
             PadGiven::Load(by_clearance.performance.load),
@@ -197,7 +201,7 @@ fn load_and_clearance_searches_are_inverse() {
         )
         .unwrap();
         assert!(
-            (by_load.clearance_m / c - 1.0).abs() < 1e-7,
+            (by_load.clearance_m / (c * C_REF) - 1.0).abs() < 1e-7,
             "C {c}: {}",
             by_load.clearance_m
         );

@@ -1,0 +1,161 @@
+//! The tilting-pad gas thrust bearing over HTTP: its example, the load and clearance requests
+//! as each other's inverse, the 422s naming the field with the reason, and its range (a finite
+//! balanced pad or a 422, never a 500).
+
+use proptest::prelude::*;
+use serde_json::{json, Value};
+use stribeck::calc::{find, CalcError, Failure};
+
+use crate::helpers::{assert_all_finite, spawn_app};
+
+const PATH: &str = "/v1/gas-bearings/tilting-pad-thrust";
+
+/// The registered example with `extra`'s fields set (null removes one).
+fn body(extra: Value) -> Value {
+    let mut body: Value = serde_json::from_str(find(PATH).unwrap().example).unwrap();
+    for (k, v) in extra.as_object().unwrap() {
+        if v.is_null() {
+            body.as_object_mut().unwrap().remove(k);
+        } else {
+            body[k] = v.clone();
+        }
+    }
+    body
+}
+
+#[tokio::test]
+async fn the_example_balances_and_the_clearance_gives_the_load_back() {
+    let app = spawn_app().await;
+    let reply = app
+        .post_json(PATH, &body(json!({"fidelity": "fast"})))
+        .await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    assert_all_finite(&reply.body, "");
+    let r = &reply.body["result"];
+    assert_eq!(reply.body["solver"]["stop_reason"], "converged");
+    assert!(reply.body["solver"]["residual"].as_f64().unwrap() < 1e-9);
+    let load = r["load_n"].as_f64().unwrap();
+    assert!((load / 2001.7 - 1.0).abs() < 1e-6, "{load}");
+    // C_L = W/(n p_a r_o²).
+    let cl = r["load_coefficient"].as_f64().unwrap();
+    assert!((cl - 2001.7 / 6.0 / (103421.0 * 0.1016 * 0.1016)).abs() < 1e-6);
+    let c = r["clearance_m"].as_f64().unwrap();
+    assert!((r["crown_ratio"].as_f64().unwrap() - 1.0505e-5 / c).abs() < 1e-9);
+    let h = r["min_film_m"].as_f64().unwrap();
+    assert!(h > 0.0 && h < r["pivot_film_m"].as_f64().unwrap());
+    // The runner's friction exceeds the pads' (the pressure term shifts it), and the power is
+    // the runner's torque at ω.
+    let (runner, pads) = (
+        r["friction_torque_runner_n_m"].as_f64().unwrap(),
+        r["friction_torque_pads_n_m"].as_f64().unwrap(),
+    );
+    assert!(runner > pads && pads > 0.0);
+    let omega = 20000.0 * std::f64::consts::PI / 30.0;
+    assert!((r["power_loss_w"].as_f64().unwrap() / (runner * omega) - 1.0).abs() < 1e-12);
+    // The clearance asks for the same pad back.
+    let reply = app
+        .post_json(
+            PATH,
+            &body(json!({"fidelity": "fast", "load_n": null, "clearance_m": c})),
+        )
+        .await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    let back = reply.body["result"]["load_n"].as_f64().unwrap();
+    assert!((back / load - 1.0).abs() < 2e-2, "{back} vs {load}");
+}
+
+#[tokio::test]
+async fn bad_tilting_pad_input_is_a_422_with_its_reason() {
+    let app = spawn_app().await;
+    let rows = [
+        (json!({"inner_radius_m": 0.2}), "/inner_radius_m", "r_i/r_o"),
+        (json!({"pad_count": 9}), "/pad_angle_deg", "360°"),
+        (
+            json!({"pivot_radius_m": 0.04}),
+            "/pivot_radius_m",
+            "between",
+        ),
+        (
+            json!({"pivot_angle_fraction": 0.99}),
+            "/pivot_angle_fraction",
+            "within",
+        ),
+        (json!({"clearance_m": 1e-5}), "/clearance_m", "not both"),
+        (json!({"load_n": null}), "/load_n", "give"),
+        (json!({"load_n": 1e7}), "/load_n", "at most"),
+        (
+            json!({"crown_m": 0, "pivot_angle_fraction": 0.7, "load_n": null, "clearance_m": 5e-6}),
+            "/pivot_angle_fraction",
+            "no equilibrium",
+        ),
+        (
+            json!({"gas": {"viscosity_pa_s": 1.8e-5, "ambient_pressure_pa": -1.0}}),
+            "/gas/ambient_pressure_pa",
+            "> 0",
+        ),
+    ];
+    for (extra, pointer, why) in rows {
+        let reply = app.post_json(PATH, &body(extra.clone())).await;
+        let problem = reply.problem(422);
+        let found = problem["errors"].as_array().map_or_else(
+            || problem["pointer"] == pointer && problem["detail"].as_str().unwrap().contains(why),
+            |errors| {
+                errors.iter().any(|e| {
+                    e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)
+                })
+            },
+        );
+        assert!(found, "{extra}: want {pointer} ({why}), got {}", reply.text);
+    }
+}
+
+fn run(body: &Value) -> Result<Value, Failure> {
+    let entry = find(PATH).expect("registered");
+    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
+    (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())
+        .map(|done| serde_json::from_slice(&done.body).expect("the envelope is JSON"))
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(8))]
+
+    /// Over Λ from 1 to 1000 (by the clearance), crowns to twice the clearance and pivots from
+    /// 0.55 to 0.75 of the angle: a finite pad whose load falls as its clearance opens (the same
+    /// pad: its crown in metres unchanged), or a
+    /// 422 on the pivot (no equilibrium) or the crown (the pad would touch); never a 500.
+    #[test]
+    fn tilting_pads_are_finite_and_carry_less_on_a_thicker_film(
+        log_lambda in 0.0f64..3.0,
+        crown in 0.0f64..2.0,
+        pivot in 0.55f64..0.75,
+    ) {
+        let (ro, mu, pa, rpm): (f64, f64, f64, f64) = (0.1016, 2.2e-5, 103421.0, 20000.0);
+        let omega = rpm * std::f64::consts::PI / 30.0;
+        let c = ro * (6.0 * mu * omega / (pa * 10f64.powf(log_lambda))).sqrt();
+        let crown_m = crown * c;
+        let at = |c: f64| body(json!({
+            "load_n": null,
+            "clearance_m": c,
+            "crown_m": crown_m,
+            "pivot_angle_fraction": pivot,
+            "fidelity": "fast",
+            "effects": {"slip_flow": "off"}
+        }));
+        match (run(&at(c)), run(&at(1.05 * c))) {
+            (Ok(thin), Ok(thick)) => {
+                assert_all_finite(&thin, "");
+                let w = |v: &Value| v["result"]["load_n"].as_f64().unwrap();
+                prop_assert!(w(&thin) > 0.0);
+                prop_assert!(w(&thick) < w(&thin), "{} vs {}", w(&thick), w(&thin));
+            }
+            (Err(Failure::Calc(CalcError::Impossible { pointer, .. })), _)
+            | (_, Err(Failure::Calc(CalcError::Impossible { pointer, .. }))) => {
+                prop_assert!(
+                    pointer == "/pivot_angle_fraction" || pointer == "/crown_m",
+                    "{pointer}"
+                );
+            }
+            (Err(other), _) | (_, Err(other)) => prop_assert!(false, "{other:?}"),
+        }
+    }
+}
