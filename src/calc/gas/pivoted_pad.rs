@@ -850,6 +850,8 @@ pub struct PadEvaluated {
     pub error_estimate: Option<f64>,
     /// The fine mesh's equilibrium.
     pub fine: Balanced,
+    /// The half mesh's, with Richardson.
+    pub coarse: Option<Balanced>,
     /// Newton steps over both meshes.
     pub newton_steps: u32,
     /// Steps of the clearance searches over both meshes.
@@ -864,10 +866,13 @@ impl PadEvaluated {
     }
 }
 
+/// The pad by `method`, from the balanced pads of a nearby evaluation when given (the same pad
+/// with another film law: its searches start where that one's ended).
 pub fn evaluate(
     scales: &PadScales,
     given: PadGiven,
     method: Method,
+    warm: Option<&PadEvaluated>,
     budget: &Budget,
 ) -> Result<PadEvaluated, CalcError> {
     let on = |half: bool, near: Option<&Balanced>| match given {
@@ -877,11 +882,11 @@ pub fn evaluate(
         PadGiven::Load(w) => balanced_at_load(scales, w, (method.mesh, half), near, budget),
     };
     let coarse = if method.richardson {
-        Some(on(true, None)?)
+        Some(on(true, warm.and_then(|w| w.coarse.as_ref()))?)
     } else {
         None
     };
-    let fine = on(false, coarse.as_ref())?;
+    let fine = on(false, coarse.as_ref().or(warm.map(|w| &w.fine)))?;
     let f = &fine.solve;
     let Some(coarse) = coarse else {
         return Ok(PadEvaluated {
@@ -893,6 +898,7 @@ pub fn evaluate(
             newton_steps: fine.newton_steps,
             search_steps: fine.search_steps,
             fine,
+            coarse: None,
         });
     };
     let c = &coarse.solve;
@@ -928,6 +934,7 @@ pub fn evaluate(
         newton_steps: fine.newton_steps + coarse.newton_steps,
         search_steps: fine.search_steps + coarse.search_steps,
         fine,
+        coarse: Some(coarse),
     })
 }
 

@@ -53,6 +53,7 @@ fn balanced(film: &PadFilm, level: Level) -> Result<PadEvaluated, CalcError> {
         &scales_of(film),
         PadGiven::Clearance(C_REF),
         method(level),
+        None,
         &Budget::unlimited(),
     )
 }
@@ -192,11 +193,12 @@ fn load_and_clearance_searches_are_inverse() {
     };
     for c in [0.8, 1.0, 1.5] {
         let by_clearance =
-            evaluate(&scales, PadGiven::Clearance(c * C_REF), fast, &budget).unwrap();
+            evaluate(&scales, PadGiven::Clearance(c * C_REF), fast, None, &budget).unwrap();
         let by_load = evaluate(
             &scales,
             PadGiven::Load(by_clearance.performance.load),
             fast,
+            None,
             &budget,
         )
         .unwrap();

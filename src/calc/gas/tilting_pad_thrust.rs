@@ -305,12 +305,18 @@ pub struct GasTiltingPadThrustOutput {
 }
 
 impl GasTiltingPadThrust {
-    fn evaluate(case: &Case, slip: bool, ctx: &Context) -> Result<PadEvaluated, CalcError> {
+    /// The pads with or without slip flow, from a nearby evaluation's pads when given.
+    fn evaluate(
+        case: &Case,
+        slip: bool,
+        warm: Option<&PadEvaluated>,
+        ctx: &Context,
+    ) -> Result<PadEvaluated, CalcError> {
         let scales = PadScales {
             mean_free_path_m: slip.then_some(case.gas.mean_free_path_m),
             ..case.scales
         };
-        pivoted_pad::evaluate(&scales, case.given, case.method, &ctx.budget())
+        pivoted_pad::evaluate(&scales, case.given, case.method, warm, &ctx.budget())
     }
 }
 
@@ -331,11 +337,12 @@ impl Calculation for GasTiltingPadThrust {
             ctx.warn(code, message.clone());
         }
         // Slip is decided on the thinnest film, known once the film is solved: `auto` solves the
-        // continuum film first and again with slip if its h_min asks for it.
-        let first = Self::evaluate(&case, case.slip_flow == Mode::On, ctx)?;
+        // continuum film first and again with slip, from the continuum pads, if its h_min asks
+        // for it.
+        let first = Self::evaluate(&case, case.slip_flow == Mode::On, None, ctx)?;
         let slip = case.gas.slip_flow(case.slip_flow, first.thinnest_m().0);
         let done = if slip.applied && case.slip_flow != Mode::On {
-            Self::evaluate(&case, true, ctx)?
+            Self::evaluate(&case, true, Some(&first), ctx)?
         } else {
             first
         };
