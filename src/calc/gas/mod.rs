@@ -11,8 +11,8 @@
 //!   rotor's whirl threshold;
 //! - `journal_film`: the plain 360° gas journal's film and its performance;
 //! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
-//! - `pivoted_pad`: a crowned gas pad on its pivot, balanced for a clearance or a load (the
-//!   tilting-pad thrust bearing's pad);
+//! - `pivoted_pad`: a crowned gas sector pad balanced on its pivot for a clearance or a load
+//!   (the tilting-pad thrust bearing's pad); `sector_pad`: that pad's film and performance;
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
 //! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance;
 //! - `tilting_pad_thrust`: the `/v1/gas-bearings/tilting-pad-thrust` room (wire); its model is
@@ -28,6 +28,7 @@ pub mod journal_film;
 pub mod method;
 pub mod pivoted_pad;
 pub mod recess_pad;
+pub mod sector_pad;
 pub mod slider;
 pub mod slider_film;
 pub mod tilting_pad_thrust;

@@ -11,7 +11,8 @@ use utoipa::ToSchema;
 
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::method::{self, Method};
-use super::pivoted_pad::{self, PadEvaluated, PadGiven, PadScales, Sector, CLEARANCE_RANGE_M};
+use super::pivoted_pad::{self, PadEvaluated, PadGiven, PadScales, CLEARANCE_RANGE_M};
+use super::sector_pad::Sector;
 use super::slider::GasEffects;
 use super::slider_film;
 use crate::calc::quantity::{ratio_within, NonNegative, Positive};
