@@ -47,6 +47,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<squeeze::piston_ring::PistonRingSqueeze>().numerical(),
     Entry::of::<gas::journal::GasJournal>().numerical(),
     Entry::of::<gas::slider::GasSlider>().numerical(),
+    Entry::of::<gas::tilting_pad_journal::TiltingPadGasJournal>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
     Entry::of::<gas::foil_journal::FoilJournal>(),
     Entry::of::<hydrostatic::pad::HydrostaticPad>(),

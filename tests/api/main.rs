@@ -8,6 +8,7 @@
 //!   clients (header timeout, 408 body timeout).
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
 //! - `gas`: gas journal and slider: their 422s with reasons and their ranges.
+//! - `gas_tilting_pad`: the tilting-pad gas journal: its example, 422s naming the field, its range.
 //! - `hydrostatic`: hydrostatic pads and design: examples, 422s naming the field, the optima.
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
@@ -27,6 +28,7 @@ mod bounds;
 mod composite;
 mod contract;
 mod gas;
+mod gas_tilting_pad;
 mod helpers;
 mod hydrostatic;
 mod journal;

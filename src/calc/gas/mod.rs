@@ -12,7 +12,9 @@
 //! - `journal_film`: the plain 360° gas journal's film and its performance;
 //! - `method`: fidelity levels and meshes of a gas film, with the Richardson pair;
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
-//! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance.
+//! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance;
+//! - `tilting_pad_journal`: the `/v1/gas-bearings/tilting-pad-journal` room (wire);
+//!   `tilting_pad_film`: its model, the three pivoted pads' films, tilts and load balance.
 
 pub mod aerostatic_pad;
 pub mod foil;
@@ -25,5 +27,7 @@ pub mod method;
 pub mod recess_pad;
 pub mod slider;
 pub mod slider_film;
+pub mod tilting_pad_film;
+pub mod tilting_pad_journal;
 
 pub use gas_spec::{Gas, GasSpec, NamedGas};
