@@ -9,7 +9,9 @@
 //!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
 //!   2.0 and 2.5 ms);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
-//! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
+//! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each);
+//! - the tilting-pad journal at `standard` (Ex 11.6's bearing): 78 ms by load (12 secant steps
+//!   in ε′, 322 film solves), 13.9 ms at the ε′ found (two pads' tilt searches).
 //!
 //! `cargo bench --bench gas`.
 
@@ -87,6 +89,22 @@ fn gas(c: &mut Criterion) {
         let entry = find(path).unwrap();
         request(c, &format!("{path} (its example)"), path, entry.example);
     }
+    // The tilting-pad journal (Ex 11.6's bearing, its example): by load (a secant in ε′, each
+    // step two pads' tilt searches, each tilt both meshes), and at the ε′ found.
+    let path = "/v1/gas-bearings/tilting-pad-journal";
+    let example = find(path).unwrap().example;
+    request(
+        c,
+        "tilting-pad gas journal (Ex 11.6), C_LT = 1.333, Λ = 1.5, standard, by load",
+        path,
+        example,
+    );
+    request(
+        c,
+        "tilting-pad gas journal (Ex 11.6), ε′ = 0.58, Λ = 1.5, standard",
+        path,
+        &example.replace(r#""load_n": 11.12"#, r#""eccentricity_ratio": 0.58"#),
+    );
     request(
         c,
         "gas slider L/B = 1, h1/h2 = 2, Λ = 1000, standard",

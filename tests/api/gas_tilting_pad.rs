@@ -7,6 +7,8 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, Failure};
 
+use crate::gas::run;
+
 use crate::helpers::{assert_all_finite, spawn_app};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-journal";
@@ -71,13 +73,6 @@ async fn the_tilting_pad_journal_answers_its_example_and_refuses_bad_pads_by_fie
     }
 }
 
-fn run(body: &Value) -> Result<Value, Failure> {
-    let entry = find(PATH).expect("registered");
-    let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
-    (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())
-        .map(|done| serde_json::from_slice(&done.body).expect("the envelope is JSON"))
-}
-
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(16))]
 
@@ -99,7 +94,7 @@ proptest! {
             "eccentricity_ratio": e,
             "fidelity": "fast"
         });
-        match (run(&body(e)), run(&body(e + 0.05))) {
+        match (run(PATH, &body(e)), run(PATH, &body(e + 0.05))) {
             (Ok(lo), Ok(hi)) => {
                 assert_all_finite(&lo, "");
                 let w = |v: &Value| v["result"]["load_coefficient"].as_f64().unwrap();

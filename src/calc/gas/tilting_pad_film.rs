@@ -50,6 +50,7 @@ use std::cell::RefCell;
 use std::f64::consts::FRAC_PI_3;
 
 use super::method::{Mesh, Method};
+use super::slider_film::coarsen;
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{Level, SolverReport};
 use crate::numerics::driver::Stopped;
@@ -207,20 +208,6 @@ pub fn grid(film: &PadFilm, mesh: Mesh) -> GasGrid {
     GasGrid {
         x,
         y,
-        periodic: false,
-    }
-}
-
-/// The half mesh of `fine`: every other node.
-pub fn coarsen(fine: &GasGrid) -> GasGrid {
-    let every_other = |v: &[f64]| -> Vec<f64> { v.iter().step_by(2).copied().collect() };
-    GasGrid {
-        x: every_other(&fine.x),
-        y: if fine.y.len() == 1 {
-            fine.y.clone()
-        } else {
-            every_other(&fine.y)
-        },
         periodic: false,
     }
 }
@@ -559,15 +546,14 @@ impl BearingEquilibrium {
     pub fn searches(&self) -> u32 {
         self.upper.searches + self.loaded.searches
     }
-    /// Relative error estimate of C_LT: the pads' estimates, carried through the difference.
+    /// Relative error estimate of C_LT: Richardson's on the difference F̄3 − F̄1 itself (the
+    /// pads' errors are alike and largely cancel in it), from the two meshes at the found tilts.
     pub fn error_estimate(&self) -> Option<f64> {
-        let part = |p: &PadEquilibrium| {
-            p.evaluated
-                .error_estimate
-                .map(|e| e * p.evaluated.performance.load.abs())
-        };
-        Some((part(&self.loaded)? + part(&self.upper)?) / self.load().abs())
-            .filter(|e| e.is_finite())
+        let (l, u) = (&self.loaded.evaluated, &self.upper.evaluated);
+        let (lc, uc) = (l.coarse.as_ref()?, u.coarse.as_ref()?);
+        let coarse = lc.performance.load - uc.performance.load;
+        let fine = l.fine.performance.load - u.fine.performance.load;
+        Some((fine_error(coarse, fine) / self.load()).abs()).filter(|e| e.is_finite())
     }
 }
 
