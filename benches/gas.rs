@@ -10,8 +10,9 @@
 //!   2.0 and 2.5 ms);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each);
-//! - the tilting-pad journal at `standard` (Ex 11.6's bearing): 78 ms by load (12 secant steps
-//!   in ε′, 322 film solves), 13.9 ms at the ε′ found (two pads' tilt searches).
+//! - the tilting-pad journal at `standard` (Ex 11.6's bearing): 45 ms by load (6 secant steps
+//!   in stretched ε′, 206 film solves; a plain secant in ε′ from C_LT(0) = 0 took 12 steps,
+//!   322 solves, 78 ms), 9.6 ms at the ε′ found (two pads' tilt searches from cold).
 //!
 //! `cargo bench --bench gas`.
 

@@ -365,6 +365,8 @@ pub struct PadEquilibrium {
     pub evaluated: PadEvaluated,
     /// Film evaluations of the tilt search (each the mesh and its half mesh).
     pub searches: u32,
+    /// dM̄/dτ near the root (the search's last two tilts): a nearby pad's first step.
+    pub moment_slope: f64,
 }
 
 /// Steps the walk may take toward a touching edge before the pad is declared without an
@@ -374,8 +376,9 @@ const MAX_WALK: u32 = 40;
 /// The pad with pivot film `pivot_film` at its moment-free tilt: M̄(τ) = 0 by a walk from the
 /// warm tilt (or 0) until M̄ changes sign — downhill, since M̄ rises with τ (tilting the trailing
 /// edge closed moves the pressure aft) — each step at most half the way to the tilt at which
-/// an edge's film falls to [`EDGE_FLOOR`] H_p, then a bracketed secant. `pointer` names the field
-/// a missing equilibrium is blamed on.
+/// an edge's film falls to [`EDGE_FLOOR`] H_p, then a bracketed secant. A warm pad's slope
+/// dM̄/dτ makes the walk's first step a Newton step, a tenth long, so that it brackets the root
+/// at once. `pointer` names the field a missing equilibrium is blamed on.
 #[allow(clippy::too_many_arguments)]
 pub fn equilibrium(
     geometry: PadGeometry,
@@ -397,6 +400,7 @@ pub fn equilibrium(
     let last: RefCell<Option<PadEvaluated>> = RefCell::new(warm.map(|w| w.evaluated.clone()));
     let failed: RefCell<Option<Stopped>> = RefCell::new(None);
     let searches = RefCell::new(0u32);
+    let tried: RefCell<[(f64, f64); 2]> = RefCell::new([(f64::NAN, f64::NAN); 2]);
     let moment_at = |tilt: f64| -> f64 {
         let film = PadFilm {
             geometry,
@@ -411,6 +415,8 @@ pub fn equilibrium(
             Ok(done) => {
                 let m = done.performance.moment;
                 *last.borrow_mut() = Some(done);
+                let mut t = tried.borrow_mut();
+                *t = [t[1], (tilt, m)];
                 m
             }
             Err(stop) => {
@@ -418,6 +424,10 @@ pub fn equilibrium(
                 f64::NAN
             }
         }
+    };
+    let slope = |tried: &RefCell<[(f64, f64); 2]>| {
+        let [(ta, ma), (tb, mb)] = *tried.borrow();
+        (mb - ma) / (tb - ta)
     };
     let stopped = |failed: &RefCell<Option<Stopped>>| failed.borrow_mut().take();
     let inside = |t: f64| t.clamp(lo + 1e-6 * (hi - lo), hi - 1e-6 * (hi - lo));
@@ -432,6 +442,7 @@ pub fn equilibrium(
         return Ok(PadEquilibrium {
             evaluated,
             searches: *searches.borrow(),
+            moment_slope: f64::NAN,
         });
     }
     let no_equilibrium = || {
@@ -442,7 +453,10 @@ pub fn equilibrium(
     };
     // Downhill: M̄ > 0 lowers τ.
     let (dir, limit) = if m0 > 0.0 { (-1.0, lo) } else { (1.0, hi) };
-    let mut step = 0.05 * (hi - lo);
+    let mut step = match warm.map(|w| w.moment_slope) {
+        Some(s) if s.is_finite() && s > 0.0 => 1.1 * (m0 / s).abs(),
+        _ => 0.05 * (hi - lo),
+    };
     let mut t1 = inside(t0 + dir * step.min(0.5 * (limit - t0).abs()));
     let mut m1 = moment_at(t1);
     let mut walked = 1;
@@ -500,9 +514,11 @@ pub fn equilibrium(
     let evaluated = last
         .into_inner()
         .expect("the walk evaluated at least two tilts");
+    let moment_slope = slope(&tried);
     Ok(PadEquilibrium {
         evaluated,
         searches: searches.into_inner(),
+        moment_slope,
     })
 }
 
@@ -541,10 +557,6 @@ impl BearingEquilibrium {
     /// Pads 1, 2, 3.
     pub fn pads(&self) -> [&PadEquilibrium; 3] {
         [&self.upper, &self.upper, &self.loaded]
-    }
-    /// Film evaluations of the tilt searches.
-    pub fn searches(&self) -> u32 {
-        self.upper.searches + self.loaded.searches
     }
     /// Relative error estimate of C_LT: Richardson's on the difference F̄3 − F̄1 itself (the
     /// pads' errors are alike and largely cancel in it), from the two meshes at the found tilts.
@@ -586,22 +598,28 @@ pub fn at_eccentricity(
     })
 }
 
-/// The bearing at the load C_LT = `target`: a bracketed secant on C_LT(ε′) − target over
-/// ε′ in [0, [`MAX_ECCENTRICITY`]]. C_LT(0) = 0 exactly (three equal pads), so the bracket's
-/// lower end costs nothing; each equilibrium starts from the last one's tilts and fields.
+/// The smallest ε′ the load search tries: the lower end of its bracket.
+pub const MIN_ECCENTRICITY: f64 = 1e-4;
+
+/// The bearing at the load C_LT = `target`: a bracketed secant on ln(C_LT/target) in the
+/// stretched s = ln(ε′/(1 − ε′)) over ε′ in [[`MIN_ECCENTRICITY`], [`MAX_ECCENTRICITY`]] (as the
+/// plain gas journal's load search: C_LT ∝ ε′ at small ε′, so the residual is nearly linear in
+/// s); each equilibrium starts from the last one's tilts, slopes and fields.
 pub fn at_load(
     bearing: &BearingFilm,
     target: f64,
     method: Method,
     budget: &Budget,
 ) -> Result<(BearingEquilibrium, SolverReport), CalcError> {
+    let stretch = |e: f64| (e / (1.0 - e)).ln();
+    let unstretch = |s: f64| 1.0 / (1.0 + (-s).exp());
     let last: RefCell<Option<BearingEquilibrium>> = RefCell::new(None);
     let failed: RefCell<Option<CalcError>> = RefCell::new(None);
-    let residual_at = |e: f64| -> f64 {
+    let residual_at = |s: f64| -> f64 {
         let warm = last.borrow().clone();
         match at_eccentricity(
             bearing,
-            e,
+            unstretch(s),
             method,
             warm.as_ref(),
             budget,
@@ -610,7 +628,7 @@ pub fn at_load(
             Ok(done) => {
                 let w = done.load();
                 *last.borrow_mut() = Some(done);
-                w - target
+                (w / target).ln()
             }
             Err(err) => {
                 *failed.borrow_mut() = Some(err);
@@ -618,7 +636,8 @@ pub fn at_load(
             }
         }
     };
-    let hi = residual_at(MAX_ECCENTRICITY);
+    let (s_lo, s_hi) = (stretch(MIN_ECCENTRICITY), stretch(MAX_ECCENTRICITY));
+    let hi = residual_at(s_hi);
     if let Some(err) = failed.borrow_mut().take() {
         return Err(err);
     }
@@ -627,26 +646,40 @@ pub fn at_load(
             "/load_n",
             format!(
                 "the bearing carries at most C_LT = W/(p_a R L) = {:.4} at ε′ = {MAX_ECCENTRICITY}; the load asks {target:.4}",
-                hi + target
+                target * hi.exp()
             ),
         ));
     }
+    let lo = residual_at(s_lo);
+    if let Some(err) = failed.borrow_mut().take() {
+        return Err(err);
+    }
     let root = secant_bracketed(
         residual_at,
-        (0.0, -target),
-        (MAX_ECCENTRICITY, hi),
+        (s_lo, lo),
+        (s_hi, hi),
         Stopping {
-            x_tolerance: 1e-9,
+            // Δε′ = ε′(1 − ε′)Δs ≤ Δs/4.
+            x_tolerance: 4e-9,
             max_iterations: 60,
         },
     );
     if let Some(err) = failed.borrow_mut().take() {
         return Err(err);
     }
-    let root = root.map_err(|e| CalcError::from_root("tilting_pad_load", e))?;
+    let root = match root {
+        Ok(r) => r,
+        Err(RootError::NoSignChange { .. }) => {
+            return Err(CalcError::impossible(
+                "/load_n",
+                format!("the load C_LT = W/(p_a R L) = {target:.4e} is below what ε′ = {MIN_ECCENTRICITY} carries"),
+            ))
+        }
+        Err(e) => return Err(CalcError::from_root("tilting_pad_load", e)),
+    };
     // The secant's last evaluated point is the answer's film, unless it stopped at once on the
-    // bracket's unsolved lower end (a vanishing load): solve that one.
-    if last.borrow().as_ref().map(|l| l.eccentricity) != Some(root.x) {
+    // bracket's other end: solve that one again.
+    if last.borrow().as_ref().map(|l| l.eccentricity) != Some(unstretch(root.x)) {
         residual_at(root.x);
         if let Some(err) = failed.borrow_mut().take() {
             return Err(err);
@@ -654,7 +687,7 @@ pub fn at_load(
     }
     let done = last
         .into_inner()
-        .expect("the search evaluated at least the bracket's upper end");
+        .expect("the search evaluated at least the bracket's ends");
     Ok((done, root.report))
 }
 
