@@ -628,7 +628,8 @@ pub fn at_load(
             Ok(done) => {
                 let w = done.load();
                 *last.borrow_mut() = Some(done);
-                (w / target).ln()
+                // Apart: a target near the smallest double overflows w/target.
+                w.ln() - target.ln()
             }
             Err(err) => {
                 *failed.borrow_mut() = Some(err);
@@ -654,6 +655,15 @@ pub fn at_load(
     if let Some(err) = failed.borrow_mut().take() {
         return Err(err);
     }
+    let below = || {
+        CalcError::impossible(
+            "/load_n",
+            format!("the load C_LT = W/(p_a R L) = {target:.4e} is below what ε′ = {MIN_ECCENTRICITY} carries"),
+        )
+    };
+    if lo.is_nan() || lo > 0.0 {
+        return Err(below());
+    }
     let root = secant_bracketed(
         residual_at,
         (s_lo, lo),
@@ -669,12 +679,7 @@ pub fn at_load(
     }
     let root = match root {
         Ok(r) => r,
-        Err(RootError::NoSignChange { .. }) => {
-            return Err(CalcError::impossible(
-                "/load_n",
-                format!("the load C_LT = W/(p_a R L) = {target:.4e} is below what ε′ = {MIN_ECCENTRICITY} carries"),
-            ))
-        }
+        Err(RootError::NoSignChange { .. }) => return Err(below()),
         Err(e) => return Err(CalcError::from_root("tilting_pad_load", e)),
     };
     // The secant's last evaluated point is the answer's film, unless it stopped at once on the
