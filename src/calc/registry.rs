@@ -617,6 +617,7 @@ mod tests {
                 | "/v1/thrust-bearings/bearing"
                 | "/v1/gas-bearings/journal"
                 | "/v1/gas-bearings/slider"
+                | "/v1/gas-bearings/tilting-pad-journal"
                 | "/v1/composite-bearings/start-up"
                 | "/v1/composite-bearings/orbit" => Cost::Heavy,
                 _ => Cost::Light,
