@@ -48,6 +48,7 @@ pub static REGISTRY: &[Entry] = &[
     Entry::of::<gas::journal::GasJournal>().numerical(),
     Entry::of::<gas::slider::GasSlider>().numerical(),
     Entry::of::<gas::tilting_pad_thrust::GasTiltingPadThrust>().numerical(),
+    Entry::of::<gas::tilting_pad_journal::TiltingPadGasJournal>().numerical(),
     Entry::of::<gas::aerostatic_pad::AerostaticPad>(),
     Entry::of::<gas::foil_journal::FoilJournal>(),
     Entry::of::<hydrostatic::pad::HydrostaticPad>(),
@@ -618,6 +619,7 @@ mod tests {
                 | "/v1/gas-bearings/journal"
                 | "/v1/gas-bearings/slider"
                 | "/v1/gas-bearings/tilting-pad-thrust"
+                | "/v1/gas-bearings/tilting-pad-journal"
                 | "/v1/composite-bearings/start-up"
                 | "/v1/composite-bearings/orbit" => Cost::Heavy,
                 _ => Cost::Light,

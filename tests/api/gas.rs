@@ -252,7 +252,8 @@ async fn the_journal_gives_frequency_dependent_coefficients_and_the_whirl_thresh
     assert!(extra >= 2 * 4 + 4, "{extra} extra film solves");
 }
 
-fn run(path: &str, body: &Value) -> Result<Value, Failure> {
+/// A request through the registry, without HTTP (also the tilting-pad journal's proptest).
+pub(crate) fn run(path: &str, body: &Value) -> Result<Value, Failure> {
     let entry = find(path).expect("registered");
     let far = std::time::Instant::now() + std::time::Duration::from_secs(60);
     (entry.execute)(&serde_json::to_vec(body).unwrap(), far, Default::default())

@@ -9,6 +9,7 @@
 //! - `reference_cases`: every case in tests/data, each with its source and tolerance.
 //! - `gas`: gas journal and slider: their 422s with reasons and their ranges.
 //! - `gas_tilting_thrust`: the tilting-pad gas thrust bearing: example, inverse requests, 422s, range.
+//! - `gas_tilting_pad`: the tilting-pad gas journal: its example, 422s naming the field, its range.
 //! - `hydrostatic`: hydrostatic pads and design: examples, 422s naming the field, the optima.
 //! - `journal`: the plain journal bearing against Tables 8.4 and 8.6 and over its range.
 //! - `lubricants`: lubricant rooms' invalid-input tables and properties over their ranges.
@@ -28,6 +29,7 @@ mod bounds;
 mod composite;
 mod contract;
 mod gas;
+mod gas_tilting_pad;
 mod gas_tilting_thrust;
 mod helpers;
 mod hydrostatic;

@@ -44,6 +44,7 @@ async fn calculate(client: &Client, path: &str, example: &str) -> Value {
         "/v1/gas-bearings/journal" => typed!(gas_bearings_journal),
         "/v1/gas-bearings/slider" => typed!(gas_bearings_slider),
         "/v1/gas-bearings/tilting-pad-thrust" => typed!(gas_bearings_tilting_pad_thrust),
+        "/v1/gas-bearings/tilting-pad-journal" => typed!(gas_bearings_tilting_pad_journal),
         "/v1/hydrostatic-bearings/design" => typed!(hydrostatic_bearings_design),
         "/v1/hydrostatic-bearings/pad" => typed!(hydrostatic_bearings_pad),
         "/v1/journal-bearings/dynamic" => typed!(journal_bearings_dynamic),

@@ -15,6 +15,8 @@
 //!   (the tilting-pad thrust bearing's pad); `sector_pad`: that pad's film and performance;
 //! - `slider`: the `/v1/gas-bearings/slider` room (request, response);
 //! - `slider_film`: the plane slider's film (finite or infinitely wide) and its performance;
+//! - `tilting_pad_journal`: the `/v1/gas-bearings/tilting-pad-journal` room (wire);
+//!   `tilting_pad_film`: its model, the three pivoted pads' films, tilts and load balance;
 //! - `tilting_pad_thrust`: the `/v1/gas-bearings/tilting-pad-thrust` room (wire); its model is
 //!   `pivoted_pad`.
 
@@ -31,6 +33,8 @@ pub mod recess_pad;
 pub mod sector_pad;
 pub mod slider;
 pub mod slider_film;
+pub mod tilting_pad_film;
+pub mod tilting_pad_journal;
 pub mod tilting_pad_thrust;
 
 pub use gas_spec::{Gas, GasSpec, NamedGas};
