@@ -154,7 +154,8 @@ pub enum FarEdge {
     #[default]
     Symmetry,
     /// A second edge held at the boundary pressure: the grid holds the whole width (a
-    /// misaligned journal's film, antisymmetric in its tilt, has no symmetry plane).
+    /// misaligned journal's film, antisymmetric in its tilt, has no symmetry plane). An
+    /// infinitely wide film (one row) has no far edge: it is solved as without one.
     Held,
 }
 
@@ -722,6 +723,11 @@ pub fn harmonic_response(
     squeeze: f64,
     shapes: &[&dyn Fn(f64, f64) -> f64],
 ) -> Result<Vec<HarmonicResponse>, Singular> {
+    debug_assert_eq!(
+        problem.metric,
+        Metric::Cartesian,
+        "the harmonic response is Cartesian"
+    );
     let numbering = Numbering::new(grid, problem.far_edge);
     let system = |problem: &GasProblem| {
         System {

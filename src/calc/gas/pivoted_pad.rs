@@ -35,8 +35,9 @@ pub struct PadSolve {
 /// ∂(pitch moment, roll moment)/∂(pitch, roll), row-major.
 type Jacobian = [[f64; 2]; 2];
 
-/// The share of the way to a touching pad that the pitch search from rest may go.
-const CLEAR_SHARE: f64 = 0.995;
+/// The thinnest film H_min the pitch search from rest may go to (the grids are graded for the
+/// boundary layers, not for a pad about to touch).
+const MARCH_FILM_FLOOR: f64 = 0.02;
 /// Where the pitch search from rest starts, as a share of the way to touching: an aligned flat
 /// pad carries nothing, and its zero moment is no equilibrium.
 const START_SHARE: f64 = 0.05;
@@ -59,7 +60,7 @@ struct Solver<'a> {
 impl<'a> Solver<'a> {
     /// Solve the film at tilt `t`; None when the film would touch the runner.
     fn solve(&self, film: &PadFilm, t: Tilt) -> Result<Option<PadSolve>, CalcError> {
-        if film.thinnest(t).0 <= 0.0 {
+        if !(film.thinnest(t).0 > 0.0) {
             return Ok(None);
         }
         let grid = grid(film, self.mesh, self.half);
@@ -98,8 +99,7 @@ impl<'a> Solver<'a> {
 
     /// The pitch that zeroes the pitch moment with the roll held at 0, from rest.
     fn pitch_from_rest(&self, film: &PadFilm) -> Result<f64, CalcError> {
-        let (back, front) = film.touching_pitches();
-        let (back, front) = (CLEAR_SHARE * back, CLEAR_SHARE * front);
+        let (back, front) = film.pitches_to_film(MARCH_FILM_FLOOR);
         let failed: RefCell<Option<CalcError>> = RefCell::new(None);
         let moment = |m: f64| -> f64 {
             match self.solve(
@@ -227,6 +227,14 @@ impl<'a> Solver<'a> {
                 });
             }
             let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+            if !(det.is_finite() && det != 0.0) {
+                if fresh {
+                    return Err(unusable(film, t));
+                }
+                j = self.measure(film, t, f)?;
+                fresh = true;
+                continue;
+            }
             let dx = [
                 -(j[1][1] * f[0] - j[0][1] * f[1]) / det,
                 -(-j[1][0] * f[0] + j[0][0] * f[1]) / det,
@@ -396,22 +404,33 @@ fn balanced_at_clearance(
     near: Option<&Balanced>,
     budget: &Budget,
 ) -> Result<Balanced, CalcError> {
-    let solver = Solver {
-        mesh,
-        half,
-        budget,
-        last: RefCell::new(near.map(|b| b.solve.clone())),
-        jacobian: RefCell::new(near.and_then(|b| b.jacobian)),
-        newton_steps: RefCell::new(0),
+    let film = scales.film(clearance_m);
+    // From the nearby pad's tilt and Jacobian, or from rest; either way from its field.
+    let attempt = |warm: bool| {
+        let solver = Solver {
+            mesh,
+            half,
+            budget,
+            last: RefCell::new(near.map(|b| b.solve.clone())),
+            jacobian: RefCell::new(near.and_then(|b| b.jacobian).filter(|_| warm)),
+            newton_steps: RefCell::new(0),
+        };
+        let solve = solver.balance(&film, near.map(|b| b.solve.tilt).filter(|_| warm))?;
+        Ok(Balanced {
+            clearance_m,
+            solve,
+            jacobian: solver.jacobian.into_inner(),
+            newton_steps: solver.newton_steps.into_inner(),
+            search_steps: 0,
+        })
     };
-    let solve = solver.balance(&scales.film(clearance_m), near.map(|b| b.solve.tilt))?;
-    Ok(Balanced {
-        clearance_m,
-        solve,
-        jacobian: solver.jacobian.into_inner(),
-        newton_steps: solver.newton_steps.into_inner(),
-        search_steps: 0,
-    })
+    match attempt(near.is_some()) {
+        // A nearby tilt can lie where this film closes, or lead Broyden astray: from rest again.
+        Err(CalcError::Impossible { .. } | CalcError::NotConverged { .. }) if near.is_some() => {
+            attempt(false)
+        }
+        done => done,
+    }
 }
 
 /// The load search's range of bearing numbers: from the largest the solver takes down to 0.01
@@ -442,7 +461,7 @@ fn balanced_at_load(
                 *steps.borrow_mut() += b.newton_steps;
                 let w = b.solve.performance.load;
                 *last.borrow_mut() = Some(b);
-                (w / target).ln()
+                w.ln() - target.ln()
             }
             Err(e) => {
                 *failed.borrow_mut() = Some(e);
@@ -490,7 +509,7 @@ fn balanced_at_load(
         step *= 2.0;
     };
     let Some((lo, hi)) = bracket else {
-        let carried = target * ra.exp();
+        let carried = (target.ln() + ra).exp();
         return Err(CalcError::impossible(
             "/load_n",
             if ra < 0.0 {

@@ -38,6 +38,7 @@ use super::slider_film::coarsen;
 use crate::numerics::optimise::brent_minimise;
 use crate::numerics::quadrature::gauss_legendre;
 use crate::numerics::reynolds_gas::{graded, GasGrid};
+use crate::numerics::roots::MAX_DOUBLINGS;
 
 /// The pad's shape and pivot, dimensionless.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -105,13 +106,14 @@ impl PadFilm {
     /// The thinnest film and where: (H_min, θ, R). In Cartesian coordinates along the pad's
     /// centre line (ξ) and across it (η), H is quadratic in η (the crown) and linear in ξ, so
     /// its minimum over the pad lies on the pad's boundary: each of the four edges is searched
-    /// from the best of 65 samples by Brent's method.
+    /// from the best of 65 samples by Brent's method. NaN when H is not a number somewhere.
     pub fn thinnest(&self, t: Tilt) -> (f64, f64, f64) {
         let s = &self.sector;
         let (ri, tp) = (s.inner_radius, s.angle);
         let mut best = (f64::INFINITY, 0.0, 0.0);
+        // A film that is not a number anywhere is no film: NaN, which no test of H > 0 passes.
         let mut consider = |h: f64, theta: f64, r: f64| {
-            if h < best.0 {
+            if h < best.0 || h.is_nan() && !best.0.is_nan() {
                 best = (h, theta, r);
             }
         };
@@ -146,33 +148,29 @@ impl PadFilm {
         best
     }
 
-    /// The pitches at which the unrolled pad first touches the runner, (closing the leading
-    /// part, closing the trailing part): min H is concave in the pitch and 1 at 0, so each is a
-    /// bisection on the sign of min H.
-    pub fn touching_pitches(&self) -> (f64, f64) {
-        let touch = |dir: f64| {
+    /// The pitches (roll 0) at which the film's minimum falls to `floor` (below 1): (closing the
+    /// leading part, closing the trailing part). Min H is concave in the pitch and 1 at 0, so
+    /// each is a bisection on the sign of min H − floor, from a bracket found by doubling.
+    pub fn pitches_to_film(&self, floor: f64) -> (f64, f64) {
+        let above = |m: f64| {
+            self.thinnest(Tilt {
+                pitch: m,
+                roll: 0.0,
+            })
+            .0 > floor
+        };
+        let reach = |dir: f64| {
             let (mut lo, mut hi) = (0.0, dir);
-            while self
-                .thinnest(Tilt {
-                    pitch: hi,
-                    roll: 0.0,
-                })
-                .0
-                > 0.0
-            {
+            for _ in 0..MAX_DOUBLINGS {
+                if !above(hi) {
+                    break;
+                }
                 lo = hi;
                 hi *= 2.0;
             }
             for _ in 0..60 {
                 let mid = 0.5 * (lo + hi);
-                if self
-                    .thinnest(Tilt {
-                        pitch: mid,
-                        roll: 0.0,
-                    })
-                    .0
-                    > 0.0
-                {
+                if above(mid) {
                     lo = mid;
                 } else {
                     hi = mid;
@@ -180,7 +178,7 @@ impl PadFilm {
             }
             lo
         };
-        (touch(-1.0), touch(1.0))
+        (reach(-1.0), reach(1.0))
     }
 }
 

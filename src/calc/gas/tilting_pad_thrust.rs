@@ -69,11 +69,11 @@ pub struct GasTiltingPadThrustInput {
     pub load_n: Option<Positive>,
     /// Clearance C, m (1e-8 … 1e-3): the film at the crown's peak before the pad tilts; give it
     /// or `load_n`.
-    #[schema(value_type = Option<f64>, minimum = 1e-8, maximum = 1e-3)]
+    #[schema(value_type = Option<f64>, minimum = 1e-8, maximum = 1e-3, example = 1.0505e-5)]
     pub clearance_m: Option<Positive>,
     /// `fast`, `standard` (default), `high`, or `{"grid": [cells along the pad's angle 8…512,
-    /// cells across each half of its radial width 2…128]}`; each is also solved on its half
-    /// mesh and Richardson-extrapolated.
+    /// cells across each half of its radial width 2…128]}`; a level, or a grid of even counts,
+    /// is also solved on its half mesh and Richardson-extrapolated.
     #[serde(default)]
     pub fidelity: FidelityRequest,
     #[serde(default)]
@@ -365,10 +365,7 @@ impl Calculation for GasTiltingPadThrust {
                 .counting(done.newton_steps, budget.field_solves())
                 .with_residual(fine.performance.imbalance())
                 .at(case.method.level)
-                .on_grid(vec![
-                    case.method.mesh.along as u32,
-                    2 * case.method.mesh.across as u32,
-                ])
+                .on_grid(case.method.grid())
                 .with_error_estimate(done.error_estimate)
                 .with_film_solves(budget.field_solves()),
         );
