@@ -60,7 +60,9 @@ struct Solver<'a> {
 impl<'a> Solver<'a> {
     /// Solve the film at tilt `t`; None when the film would touch the runner.
     fn solve(&self, film: &PadFilm, t: Tilt) -> Result<Option<PadSolve>, CalcError> {
-        if !(film.thinnest(t).0 > 0.0) {
+        // A NaN film (no number anywhere) counts as touching.
+        let thinnest = film.thinnest(t).0;
+        if thinnest.is_nan() || thinnest <= 0.0 {
             return Ok(None);
         }
         let grid = grid(film, self.mesh, self.half);
