@@ -19,7 +19,9 @@
 //! (second order) where the cell Péclet number is small, upwind where it is large. It is exact
 //! for P H = const, the Λ → ∞ interior, so it stays stable and accurate at Λ = 1000 on grids
 //! that are fine only in the boundary layers (the callers grade their grids; [`graded`]).
-//! Across (y) there is no sliding and the flux is −k ∂y P, central.
+//! Across (y) there is no sliding and the flux is −k ∂y P, central. The first row is an edge
+//! held at the boundary pressure; the last is a symmetry plane (half of a symmetric film) or a
+//! second held edge (the whole width), as the problem's [`FarEdge`] says.
 //!
 //! **Newton.** The residual is the net outflow of every control volume; its Jacobian is
 //! assembled analytically (the derivatives of the fitted flux through u, k and Pe) in band
@@ -48,8 +50,9 @@ pub struct GasGrid {
     /// the first again (x[n] = x[0] + period) and mirrors it.
     pub x: Vec<f64>,
     /// Node coordinates across, strictly increasing from y[0] = 0, the edge held at the
-    /// boundary pressure, to the symmetry plane (∂P/∂y = 0) at the last node. One node only:
-    /// an infinitely wide film (no y flux).
+    /// boundary pressure, to the far boundary at the last node: the symmetry plane (∂P/∂y = 0)
+    /// or a second held edge, as the problem's [`FarEdge`] says. One node only: an infinitely
+    /// wide film (no y flux).
     pub y: Vec<f64>,
     pub periodic: bool,
 }
@@ -143,6 +146,18 @@ pub fn graded(n: usize, finest: f64, at_start: bool) -> Vec<f64> {
     }
 }
 
+/// The boundary at the grid's last row (y at its largest).
+#[derive(Debug, Clone, Copy, PartialEq, Eq, Default)]
+pub enum FarEdge {
+    /// A symmetry plane, ∂P/∂y = 0: the grid holds half of a film symmetric about it (an
+    /// aligned journal's mid-plane, a slider's centre line).
+    #[default]
+    Symmetry,
+    /// A second edge held at the boundary pressure: the grid holds the whole width (a
+    /// misaligned journal's film, antisymmetric in its tilt, has no symmetry plane).
+    Held,
+}
+
 /// The film and the physics on a grid.
 #[derive(Debug, Clone)]
 pub struct GasProblem {
@@ -152,6 +167,8 @@ pub struct GasProblem {
     pub knudsen_number: f64,
     /// P held on the boundaries (1: ambient).
     pub boundary_pressure: f64,
+    /// The last row: a symmetry plane ([`GasProblem::new`]'s default) or a held edge.
+    pub far_edge: FarEdge,
     /// H at every node, indexed as [`GasGrid::at`].
     pub h_nodes: Vec<f64>,
     /// H at the x-faces: (i, j) is the face between nodes i and i+1 of row j.
@@ -187,6 +204,7 @@ impl GasProblem {
             bearing_number,
             knudsen_number,
             boundary_pressure: 1.0,
+            far_edge: FarEdge::Symmetry,
             h_nodes,
             h_x_faces,
             h_y_faces,
@@ -288,16 +306,18 @@ struct Numbering {
     column: Vec<Option<usize>>,
     /// First unknown row (0 for an infinitely wide film, 1 otherwise: row 0 is the edge).
     row0: usize,
+    /// Unknown rows (the last row is one unless it is a held edge).
     rows: usize,
     unknowns: usize,
     band: usize,
 }
 
 impl Numbering {
-    fn new(grid: &GasGrid) -> Self {
+    fn new(grid: &GasGrid, far_edge: FarEdge) -> Self {
         let nx = grid.nx();
         let row0 = usize::from(grid.ny() > 0);
-        let rows = grid.y.len() - row0;
+        let held = usize::from(grid.ny() > 1 && far_edge == FarEdge::Held);
+        let rows = grid.y.len() - row0 - held;
         let mut column = vec![None; nx + 1];
         let count;
         if grid.periodic {
@@ -334,7 +354,7 @@ impl Numbering {
     }
 
     fn index(&self, i: usize, j: usize) -> Option<usize> {
-        if j < self.row0 {
+        if j < self.row0 || j >= self.row0 + self.rows {
             return None;
         }
         self.column[i].map(|c| c * self.rows + (j - self.row0))
@@ -490,7 +510,7 @@ pub fn solve(
     stop: GasStopping,
     budget: &Budget,
 ) -> Result<GasSolution, Stopped> {
-    let numbering = Numbering::new(grid);
+    let numbering = Numbering::new(grid, problem.far_edge);
     let mut field = vec![problem.boundary_pressure; (grid.nx() + 1) * grid.y.len()];
     let target = problem.bearing_number;
     let line = LineSearch {
@@ -675,7 +695,7 @@ pub fn harmonic_response(
     squeeze: f64,
     shapes: &[&dyn Fn(f64, f64) -> f64],
 ) -> Result<Vec<HarmonicResponse>, Singular> {
-    let numbering = Numbering::new(grid);
+    let numbering = Numbering::new(grid, problem.far_edge);
     let system = |problem: &GasProblem| {
         System {
             grid,
@@ -821,6 +841,66 @@ mod tests {
         let h = 2.0 - grid.x[mid];
         assert!((s.p[mid] * h - 2.0).abs() < 5e-3, "{}", s.p[mid] * h);
         assert!(s.p.iter().all(|p| p.is_finite() && *p > 0.0));
+    }
+
+    /// A held far edge solves the whole width: the film of a slider symmetric about its centre
+    /// line, solved over the whole width with both edges held, is the half-width film with the
+    /// symmetry plane, mirrored, node by node; an unsymmetric film on the whole width is not.
+    #[test]
+    fn a_held_far_edge_solves_the_whole_width() {
+        let half_y = graded(6, 0.05, true);
+        let mirrored = half_y.iter().rev().skip(1).map(|v| 2.0 - v);
+        let whole_y: Vec<f64> = half_y.iter().copied().chain(mirrored).collect();
+        let x = graded(24, 0.02, false);
+        let (half, whole) = (
+            GasGrid {
+                x: x.clone(),
+                y: half_y,
+                periodic: false,
+            },
+            GasGrid {
+                x,
+                y: whole_y,
+                periodic: false,
+            },
+        );
+        let film = |x: f64, _: f64| 2.0 - x;
+        let solve_on = |grid: &GasGrid, far_edge: FarEdge, h: &dyn Fn(f64, f64) -> f64| {
+            let problem = GasProblem {
+                far_edge,
+                ..GasProblem::new(grid, 5.0, 0.0, h)
+            };
+            solve(
+                grid,
+                &problem,
+                None,
+                GasStopping::default(),
+                &Budget::unlimited(),
+            )
+            .unwrap()
+            .p
+        };
+        let (ph, pw) = (
+            solve_on(&half, FarEdge::Symmetry, &film),
+            solve_on(&whole, FarEdge::Held, &film),
+        );
+        let ny = half.ny();
+        for i in 0..=half.nx() {
+            for j in 0..=ny {
+                let p = ph[half.at(i, j)];
+                assert!((pw[whole.at(i, j)] - p).abs() < 1e-10, "({i}, {j})");
+                assert!(
+                    (pw[whole.at(i, 2 * ny - j)] - p).abs() < 1e-10,
+                    "({i}, {j})"
+                );
+            }
+        }
+        // Both edges of the whole width stay at ambient; a film tilted across it is not mirrored.
+        assert!((0..=whole.nx()).all(|i| pw[whole.at(i, 2 * ny)] == 1.0));
+        let tilted = |x: f64, y: f64| 2.0 - x + 0.2 * (y - 1.0);
+        let pt = solve_on(&whole, FarEdge::Held, &tilted);
+        let mid = whole.nx() / 2;
+        assert!((pt[whole.at(mid, 2)] - pt[whole.at(mid, 2 * ny - 2)]).abs() > 1e-3);
     }
 
     #[test]

@@ -10,6 +10,7 @@ pub(crate) fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
         bearing_number: lambda,
         knudsen_number: 0.0,
         l_over_d,
+        tilt: None,
     }
 }
 
