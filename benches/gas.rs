@@ -67,6 +67,21 @@ fn gas(c: &mut Criterion) {
             ),
         );
     }
+    // Misaligned: the whole-length film (twice the axial cells), the tilt placed against the
+    // attitude (a secant on φ), ε′ = βL/C = 0.5 in the load plane.
+    for lambda in [1.0, 10.0] {
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+        let rpm = omega * 30.0 / std::f64::consts::PI;
+        let slope = 0.5 * cl / d;
+        request(
+            c,
+            &format!("gas journal L/D = 1, ε = 0.6, Λ = {lambda}, standard, misaligned ε′ = 0.5"),
+            "/v1/gas-bearings/journal",
+            &format!(
+                r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6, "misalignment": {{"slope_rad": {slope}}}}}"#
+            ),
+        );
+    }
     for (name, pad) in [
         ("L/B = 1", r#"{"breadth_m": 0.02, "length_m": 0.02}"#),
         ("infinitely wide", r#"{"breadth_m": 0.02}"#),

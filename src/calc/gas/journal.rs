@@ -737,10 +737,11 @@ impl Calculation for GasJournal {
             .fine
             .report
             .clone()
-            .named(if search.is_some() {
-                "finite_volume_newton_fitted_flux_secant_load"
-            } else {
-                "finite_volume_newton_fitted_flux"
+            .named(match (search.is_some(), tilt.is_some()) {
+                (true, false) => "finite_volume_newton_fitted_flux_secant_load",
+                (false, false) => "finite_volume_newton_fitted_flux",
+                (true, true) => "finite_volume_newton_fitted_flux_whole_length_secant_load",
+                (false, true) => "finite_volume_newton_fitted_flux_whole_length",
             })
             .counting(evaluated.iterations, evaluated.evaluations)
             .at(case.method.level)

@@ -374,8 +374,8 @@ const PLACEMENT_STEPS: u32 = 40;
 /// direction in the film frame follows from the attitude φ when it is measured from the load
 /// line ([`Misalignment::film_direction`]), and φ from the film. The consistent φ is the root of
 /// g(φ) = φ_film(φ) − φ, found by the secant from φ_film of the first placement (the attitude
-/// moves with the tilt's direction at second order in ε′ only, so g′ ≈ −1 and two to four
-/// placements settle it to 1e-10 rad), each film started from the last. A tilt measured from the
+/// moves with the tilt's direction at second order in ε′ only, so g′ ≈ −1: three placements
+/// settle it to 1e-10 rad at Ex 11.4's Λ for a small tilt, six for ε′ = 1), each film started from the last. A tilt measured from the
 /// line of centres is placed once. A placement that brings the film below [`MIN_FILM`] anywhere
 /// is refused at `/misalignment`.
 pub fn evaluate_tilted(

@@ -357,8 +357,8 @@ fn a_tilt_is_placed_against_the_attitude_and_a_touching_one_refused() {
 
 /// Ausman's chart is a small-ε perturbation result, said to hold to ε ≈ 0.5. At Ex 11.4's
 /// Λ = 0.413 and L/D = 1 with a small tilt, the full film's M̄ stays within 3 % of the linear
-/// theory up to ε = 0.4 (0.0251–0.0254 against 0.0256), is 14 % above it at 0.5 and about
-/// twice it at 0.6: the moment then grows with the thinning film as the load does.
+/// theory up to ε = 0.4 (0.0250–0.0254 against 0.0251), is 16 % above it at 0.5 and twice it
+/// at 0.6: the moment then grows with the thinning film as the load does.
 #[test]
 fn ausmans_small_eccentricity_moment_holds_to_about_half_the_clearance() {
     let budget = Budget::unlimited();
