@@ -645,34 +645,37 @@ impl Calculation for GasJournal {
         // attitude is: `auto` solves the continuum film first, decides on its h_min, and solves
         // again with slip if that decides so.
         let budget = ctx.budget();
-        let solve =
-            |film: JournalFilm| -> Result<(JournalEvaluated, Option<SolverReport>), CalcError> {
-                match case.given {
-                    Given::Eccentricity(e) => Ok((
-                        evaluate(
-                            &JournalFilm {
-                                eccentricity: e,
-                                ..film
-                            },
-                            tilt,
-                            case.method,
-                            None,
-                            &budget,
-                        )?,
-                        None,
-                    )),
-                    Given::Load(w) => {
-                        let (done, report) = at_load(
-                            film,
-                            tilt,
-                            w / (pa * l * case.diameter_m),
-                            case.method,
-                            &budget,
-                        )?;
-                        Ok((done, Some(report)))
-                    }
+        // `warm`: an earlier film at this ε (the continuum one, before slip is applied) to start
+        // from; a load search starts afresh.
+        let solve = |film: JournalFilm,
+                     warm: Option<&JournalEvaluated>|
+         -> Result<(JournalEvaluated, Option<SolverReport>), CalcError> {
+            match case.given {
+                Given::Eccentricity(e) => Ok((
+                    evaluate(
+                        &JournalFilm {
+                            eccentricity: e,
+                            ..film
+                        },
+                        tilt,
+                        case.method,
+                        warm,
+                        &budget,
+                    )?,
+                    None,
+                )),
+                Given::Load(w) => {
+                    let (done, report) = at_load(
+                        film,
+                        tilt,
+                        w / (pa * l * case.diameter_m),
+                        case.method,
+                        &budget,
+                    )?;
+                    Ok((done, Some(report)))
                 }
-            };
+            }
+        };
         // h_min of a solved film, m.
         let min_film = |done: &JournalEvaluated| {
             let solved = JournalFilm {
@@ -689,19 +692,19 @@ impl Calculation for GasJournal {
         let (evaluated, search, slip) = match (case.given, case.slip_flow) {
             (Given::Eccentricity(e), mode) if tilt.is_none() => {
                 let slip = case.gas.slip_flow(mode, c * (1.0 - e));
-                let (done, search) = solve(if slip.applied { slip_film } else { film })?;
+                let (done, search) = solve(if slip.applied { slip_film } else { film }, None)?;
                 (done, search, slip)
             }
             (_, Mode::On) => {
-                let (done, search) = solve(slip_film)?;
+                let (done, search) = solve(slip_film, None)?;
                 let slip = case.gas.slip_flow(Mode::On, min_film(&done));
                 (done, search, slip)
             }
             (_, mode) => {
-                let (done, search) = solve(film)?;
+                let (done, search) = solve(film, None)?;
                 let slip = case.gas.slip_flow(mode, min_film(&done));
                 if slip.applied {
-                    let (done, search) = solve(slip_film)?;
+                    let (done, search) = solve(slip_film, Some(&done))?;
                     (done, search, slip)
                 } else {
                     (done, search, slip)

@@ -370,14 +370,19 @@ pub const MIN_FILM: f64 = 0.05;
 /// Most placements (film evaluations) of a tilt measured from the load line.
 const PLACEMENT_STEPS: u32 = 40;
 
+/// The placement's tolerance on |φ_film(φ) − φ|, rad. Each film is converged to 1e-10 in P, so
+/// its attitude carries noise near that level (a warm-started Newton may not move at all for a
+/// smaller change of the film): the secant could chase it for many placements. 1e-8 rad is far
+/// below the attitude's mesh error (about 1e-3 at `standard`).
+const PLACEMENT_TOLERANCE: f64 = 1e-8;
+
 /// A tilted film (`film` with its tilt given by `misalignment`) by `method`: the tilt's
 /// direction in the film frame follows from the attitude φ when it is measured from the load
 /// line ([`Misalignment::film_direction`]), and φ from the film. The consistent φ is the root of
 /// g(φ) = φ_film(φ) − φ, found by the secant from φ_film of the first placement (the attitude
-/// moves with the tilt's direction at second order in ε′ only, so g′ ≈ −1: three placements
-/// settle it to 1e-10 rad at Ex 11.4's Λ for a small tilt, six for ε′ = 1), each film started from the last. A tilt measured from the
-/// line of centres is placed once. A placement that brings the film below [`MIN_FILM`] anywhere
-/// is refused at `/misalignment`.
+/// moves with the tilt's direction at second order in ε′ only, so g′ ≈ −1), each film started
+/// from the last. A tilt measured from the line of centres is placed once. A placement that
+/// brings the film below [`MIN_FILM`] anywhere is refused at `/misalignment`.
 pub fn evaluate_tilted(
     film: &JournalFilm,
     misalignment: Misalignment,
@@ -427,7 +432,7 @@ pub fn evaluate_tilted(
         let turn = done.performance.attitude() - phi;
         let g = turn.sin().atan2(turn.cos());
         last = Some(done);
-        if g.abs() <= 1e-10 {
+        if g.abs() <= PLACEMENT_TOLERANCE {
             return Verdict::Converged((), g.abs());
         }
         let next = match previous {
