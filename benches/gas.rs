@@ -8,6 +8,10 @@
 //!   whirl threshold: a 13-point scan of the whirl ratio and a secant per crossing, each ratio
 //!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
 //!   2.0 and 2.5 ms);
+//! - the misaligned gas journal at `standard` (ε = 0.6, ε′ = 0.5 in the load plane, auto slip
+//!   applied): 51 ms at Λ = 1, 43 ms at Λ = 10 (the aligned film mirrored, then 2–4 placements
+//!   of the tilt against the attitude, continuum and slip; each Newton step on the whole length
+//!   costs 8× the half length's);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each).
 //!

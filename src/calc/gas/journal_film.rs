@@ -372,16 +372,73 @@ const PLACEMENT_STEPS: u32 = 40;
 
 /// The placement's tolerance on |φ_film(φ) − φ|, rad. Each film is converged to 1e-10 in P, so
 /// its attitude carries noise near that level (a warm-started Newton may not move at all for a
-/// smaller change of the film): the secant could chase it for many placements. 1e-8 rad is far
+/// smaller change of the film): the secant could chase it for many placements. 1e-7 rad is far
 /// below the attitude's mesh error (about 1e-3 at `standard`).
-const PLACEMENT_TOLERANCE: f64 = 1e-8;
+const PLACEMENT_TOLERANCE: f64 = 1e-7;
+
+/// The aligned film at `film`'s ε by `method`, its fields mirrored about the mid-plane onto the
+/// whole-length grids: a start for the tilted film, whose attitude it gives to O(ε′²) and whose
+/// field to O(ε′). None where a mesh does not mirror exactly (then the tilted film starts
+/// afresh).
+fn aligned_start(
+    film: &JournalFilm,
+    method: Method,
+    budget: &Budget,
+) -> Result<Option<JournalEvaluated>, Stopped> {
+    let aligned = evaluate(
+        &JournalFilm {
+            tilt: None,
+            ..*film
+        },
+        method,
+        None,
+        budget,
+    )?;
+    let whole = grid(
+        &JournalFilm {
+            tilt: Some((0.0, 0.0)),
+            ..*film
+        },
+        method.mesh,
+    );
+    let mirror = |half: &JournalSolve, whole: GasGrid| -> Option<JournalSolve> {
+        let ny = half.grid.y.len() - 1;
+        if whole.y.len() != 2 * ny + 1 || whole.x.len() != half.grid.x.len() {
+            return None;
+        }
+        let mut p = vec![0.0; whole.x.len() * whole.y.len()];
+        for i in 0..whole.x.len() {
+            for j in 0..whole.y.len() {
+                p[whole.at(i, j)] = half.p[half.grid.at(i, j.min(2 * ny - j))];
+            }
+        }
+        Some(JournalSolve {
+            grid: whole,
+            p,
+            performance: half.performance,
+            report: half.report.clone(),
+        })
+    };
+    let coarse = aligned
+        .coarse
+        .as_ref()
+        .and_then(|c| mirror(c, coarsen(&whole)));
+    Ok(mirror(&aligned.fine, whole).map(|fine| JournalEvaluated {
+        fine,
+        coarse,
+        tilt: None,
+        ..aligned
+    }))
+}
 
 /// A tilted film (`film` with its tilt given by `misalignment`) by `method`: the tilt's
 /// direction in the film frame follows from the attitude φ when it is measured from the load
 /// line ([`Misalignment::film_direction`]), and φ from the film. The consistent φ is the root of
 /// g(φ) = φ_film(φ) − φ, found by the secant from φ_film of the first placement (the attitude
 /// moves with the tilt's direction at second order in ε′ only, so g′ ≈ −1), each film started
-/// from the last. A tilt measured from the line of centres is placed once. A placement that
+/// from the last, the first from the aligned film mirrored onto the whole length
+/// ([`aligned_start`]) unless `warm` is given. A tilt measured from the line of centres is
+/// placed once. A placement that
 /// brings the film below [`MIN_FILM`] anywhere is refused at `/misalignment`.
 pub fn evaluate_tilted(
     film: &JournalFilm,
@@ -407,11 +464,17 @@ pub fn evaluate_tilted(
         }
         Ok(placed)
     };
+    let start = match warm {
+        Some(w) => Some(w.clone()),
+        None => aligned_start(film, method, budget)?,
+    };
     if misalignment.from_line_of_centres {
-        return Ok(evaluate(&place(0.0)?, method, warm, budget)?);
+        return Ok(evaluate(&place(0.0)?, method, start.as_ref(), budget)?);
     }
-    let mut phi = warm.map_or(0.5 * PI, |w| w.performance.attitude());
-    let mut last = warm.cloned();
+    let mut phi = start
+        .as_ref()
+        .map_or(0.5 * PI, |w| w.performance.attitude());
+    let mut last = start;
     let mut previous: Option<(f64, f64)> = None;
     let mut failure = None;
     let outcome = Driver::new(
