@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, Failure};
 
-use crate::helpers::{assert_all_finite, spawn_app};
+use crate::helpers::{assert_all_finite, refused, spawn_app};
 
 const JOURNAL: &str = "/v1/gas-bearings/journal";
 const SLIDER: &str = "/v1/gas-bearings/slider";
@@ -122,16 +122,7 @@ async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
         ),
     ];
     for (path, body, pointer, why) in rows {
-        let reply = app.post_json(path, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{path} {body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
+        refused(&app, path, [(body, pointer, why)]).await;
     }
     // A load the film cannot carry below ε = 0.95 names the load.
     let reply = app
@@ -520,21 +511,9 @@ async fn a_misaligned_gas_journal_gives_its_moment_and_refuses_a_touching_tilt()
             "/misalignment/angle_deg",
             "unknown field",
         ),
-    ];
-    for (tilt, pointer, why) in rows {
-        let reply = app
-            .post_json(JOURNAL, &journal(json!({"misalignment": tilt})))
-            .await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{tilt}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
+    ]
+    .map(|(tilt, pointer, why)| (journal(json!({"misalignment": tilt})), pointer, why));
+    refused(&app, JOURNAL, rows).await;
     // Towards h_min at ε = 0.9: the end's film 1 − 0.9 − 0.25 < 0.05 C.
     let touching = journal(json!({
         "eccentricity_ratio": 0.9,

@@ -14,7 +14,7 @@ pub(crate) fn film(e: f64, lambda: f64, l_over_d: f64) -> JournalFilm {
     }
 }
 
-fn method(level: Level) -> Method {
+pub(crate) fn method(level: Level) -> Method {
     Method {
         level,
         mesh: level_mesh(level),
@@ -170,31 +170,52 @@ fn large_bearing_numbers_tend_to_the_mass_conserving_limit_not_the_foil_section_
     assert!(solved.performance.attitude().abs() < 0.05);
 }
 
+/// `f` on a mesh finer than `high` (192 × 36), Richardson-extrapolated: the reference the
+/// levels' error estimates are held to.
+pub(crate) fn reference(f: &JournalFilm, budget: &Budget) -> JournalEvaluated {
+    let mesh = Mesh {
+        along: 192,
+        across: 36,
+    };
+    let method = Method {
+        level: Level::High,
+        mesh,
+        richardson: true,
+    };
+    evaluate(f, method, None, budget).unwrap()
+}
+
 /// A complex number, for the linear theory.
-#[derive(Clone, Copy)]
-struct C(f64, f64);
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct C(pub(crate) f64, pub(crate) f64);
 
 impl C {
-    fn mul(self, o: C) -> C {
+    pub(crate) fn mul(self, o: C) -> C {
         C(self.0 * o.0 - self.1 * o.1, self.0 * o.1 + self.1 * o.0)
     }
-    fn div(self, o: C) -> C {
+    pub(crate) fn add(self, o: C) -> C {
+        C(self.0 + o.0, self.1 + o.1)
+    }
+    pub(crate) fn abs(self) -> f64 {
+        self.0.hypot(self.1)
+    }
+    pub(crate) fn div(self, o: C) -> C {
         let d = o.0 * o.0 + o.1 * o.1;
         C(
             (self.0 * o.0 + self.1 * o.1) / d,
             (self.1 * o.0 - self.0 * o.1) / d,
         )
     }
-    fn sqrt(self) -> C {
+    pub(crate) fn sqrt(self) -> C {
         let r = self.0.hypot(self.1).sqrt();
         let t = self.1.atan2(self.0) / 2.0;
         C(r * t.cos(), r * t.sin())
     }
-    fn exp(self) -> C {
+    pub(crate) fn exp(self) -> C {
         let m = self.0.exp();
         C(m * self.1.cos(), m * self.1.sin())
     }
-    fn tanh(self) -> C {
+    pub(crate) fn tanh(self) -> C {
         // Re z > 0 here: (1 − e^−2z)/(1 + e^−2z).
         let q = C(-2.0 * self.0, -2.0 * self.1).exp();
         C(1.0 - q.0, -q.1).div(C(1.0 + q.0, q.1))
@@ -239,22 +260,7 @@ fn the_richardson_estimate_brackets_the_error_from_lambda_1_to_1000() {
     let budget = Budget::unlimited();
     for lambda in [1.0, 10.0, 100.0, 1000.0] {
         let f = film(0.6, lambda, 1.0);
-        let reference = evaluate(
-            &f,
-            Method {
-                level: Level::High,
-                mesh: Mesh {
-                    along: 192,
-                    across: 36,
-                },
-                richardson: true,
-            },
-            None,
-            &budget,
-        )
-        .unwrap()
-        .performance
-        .load();
+        let reference = reference(&f, &budget).performance.load();
         for level in [Level::Fast, Level::Standard, Level::High] {
             let got = evaluate(&f, method(level), None, &budget).unwrap();
             let err = rel(got.performance.load(), reference);

@@ -3,18 +3,10 @@
 //! Λ → 0 limit against the liquid room's tilted full film, the Richardson estimate of the
 //! moment, and the refusal of a film that touches.
 
-use super::tests::film;
+use super::tests::{film, method, reference, C};
 use super::*;
 use crate::calc::journal::film::{self as liquid, FilmModel};
 use crate::numerics::reynolds::Stopping;
-
-fn method(level: Level) -> Method {
-    Method {
-        level,
-        mesh: level_mesh(level),
-        richardson: true,
-    }
-}
 
 fn tilted(e: f64, lambda: f64, l_over_d: f64, tilt: f64, direction: f64) -> JournalFilm {
     JournalFilm {
@@ -30,40 +22,6 @@ fn magnitude(m: [f64; 2]) -> f64 {
 /// Ausman's M̄ = 12 C M/(π p_a R L³ β) = 12 |M|/(π p_a R L² ε′) of a performance.
 fn moment_coefficient(p: &JournalPerformance, tilt: f64) -> f64 {
     12.0 * magnitude(p.moment) / (PI * tilt)
-}
-
-/// A complex number, for the linear theory.
-#[derive(Clone, Copy, Debug)]
-struct C(f64, f64);
-
-impl C {
-    fn mul(self, o: C) -> C {
-        C(self.0 * o.0 - self.1 * o.1, self.0 * o.1 + self.1 * o.0)
-    }
-    fn div(self, o: C) -> C {
-        let d = o.0 * o.0 + o.1 * o.1;
-        C(
-            (self.0 * o.0 + self.1 * o.1) / d,
-            (self.1 * o.0 - self.0 * o.1) / d,
-        )
-    }
-    fn add(self, o: C) -> C {
-        C(self.0 + o.0, self.1 + o.1)
-    }
-    fn abs(self) -> f64 {
-        self.0.hypot(self.1)
-    }
-    fn sqrt(self) -> C {
-        let r = self.abs().sqrt();
-        let t = self.1.atan2(self.0) / 2.0;
-        C(r * t.cos(), r * t.sin())
-    }
-    fn tanh(self) -> C {
-        // Re z > 0 here: (1 − e^−2z)/(1 + e^−2z).
-        let m = (-2.0 * self.0).exp();
-        let q = C(m * (-2.0 * self.1).cos(), m * (-2.0 * self.1).sin());
-        C(1.0 - q.0, -q.1).div(C(1.0 + q.0, q.1))
-    }
 }
 
 /// Ausman's small-ε moment coefficient by linear theory. At ε → 0 the tilt alone makes
@@ -270,22 +228,7 @@ fn the_moment_error_estimate_brackets_its_error() {
     let budget = Budget::unlimited();
     for lambda in [1.0, 10.0, 100.0] {
         let f = tilted(0.5, lambda, 1.0, 0.5, 0.5 * PI);
-        let reference = evaluate(
-            &f,
-            Method {
-                level: Level::High,
-                mesh: Mesh {
-                    along: 192,
-                    across: 36,
-                },
-                richardson: true,
-            },
-            None,
-            &budget,
-        )
-        .unwrap()
-        .performance
-        .moment;
+        let reference = reference(&f, &budget).performance.moment;
         let mut errors = Vec::new();
         for level in [Level::Fast, Level::Standard, Level::High] {
             let got = evaluate(&f, method(level), None, &budget).unwrap();
