@@ -44,11 +44,37 @@ pub(crate) fn incompressible_force(
     l_over_d: f64,
     (n, m): (usize, usize),
 ) -> [f64; 2] {
+    let (grid, p) = incompressible_film(h, wedge, source, l_over_d, (n, m), false);
+    let (mut sc, mut ss) = (0.0, 0.0);
+    for i in 0..n {
+        let (s, c) = grid.x[i].sin_cos();
+        for j in 0..=m {
+            let w = grid.cv_x(i) * grid.cv_y(j);
+            let v = p[incompressible::at(&grid, i, j)];
+            sc += w * v * c;
+            ss += w * v * s;
+        }
+    }
+    [-sc / (2.0 * l_over_d), -ss / (2.0 * l_over_d)]
+}
+
+/// The incompressible full film of ∂θ(H³∂θp) + ∂y(H³∂yp) = `wedge` ∂θH + s, periodic in θ, on
+/// the incompressible basement (one banded solve): on `n` × `m` cells of the half bearing (y
+/// from an end to the mid-plane, L/D) or, `whole`, of the whole length (y to 2 L/D, both ends
+/// at p = 0).
+pub(crate) fn incompressible_film(
+    h: &dyn Fn(f64, f64) -> f64,
+    wedge: f64,
+    source: Option<&dyn Fn(f64, f64) -> f64>,
+    l_over_d: f64,
+    (n, m): (usize, usize),
+    whole: bool,
+) -> (Grid, Vec<f64>) {
     let grid = Grid {
         x: (0..=n).map(|k| k as f64 * TAU / n as f64).collect(),
         ny: m,
-        width: l_over_d,
-        symmetric: true,
+        width: if whole { 2.0 * l_over_d } else { l_over_d },
+        symmetric: !whole,
         periodic: true,
     };
     let problem = Problem {
@@ -62,17 +88,7 @@ pub(crate) fn incompressible_force(
     let stencil = Stencil::assemble(&grid, &problem);
     let mut p = vec![0.0; (n + 1) * (m + 1)];
     incompressible::solve(&stencil, &mut p, false, &Budget::unlimited()).unwrap();
-    let (mut sc, mut ss) = (0.0, 0.0);
-    for i in 0..n {
-        let (s, c) = grid.x[i].sin_cos();
-        for j in 0..=m {
-            let w = grid.cv_x(i) * grid.cv_y(j);
-            let v = p[incompressible::at(&grid, i, j)];
-            sc += w * v * c;
-            ss += w * v * s;
-        }
-    }
-    [-sc / (2.0 * l_over_d), -ss / (2.0 * l_over_d)]
+    (grid, p)
 }
 
 #[test]

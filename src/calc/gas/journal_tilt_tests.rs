@@ -3,9 +3,10 @@
 //! Λ → 0 limit against the liquid room's tilted full film, the Richardson estimate of the
 //! moment, and the refusal of a film that touches.
 
-use super::tests::{film, method, reference, C};
+use super::tests::{film, incompressible_film, method, reference, C};
 use super::*;
 use crate::calc::journal::film::{self as liquid, FilmModel};
+use crate::numerics::reynolds as incompressible;
 use crate::numerics::reynolds::Stopping;
 
 fn tilted(e: f64, lambda: f64, l_over_d: f64, tilt: f64, direction: f64) -> JournalFilm {
@@ -161,6 +162,27 @@ fn small_eccentricity_follows_ausmans_linear_theory() {
     assert!((linear_moment_coefficient(1e6, 1.0) - 1.0).abs() < 5e-3);
 }
 
+/// The gas film's moment and load per Λ against an incompressible film's (`want`: its moment
+/// M/(p_a R L²) and W̄, per Λ), to 5e-3 of each.
+fn assert_small_bearing_number_limit(
+    gas: &JournalPerformance,
+    lambda: f64,
+    (moment, load): ([f64; 2], f64),
+    whose: &str,
+) {
+    let got = gas.moment.map(|v| v / lambda);
+    let scale = magnitude(moment);
+    assert!(scale > 0.0);
+    for k in 0..2 {
+        assert!(
+            (got[k] - moment[k]).abs() < 5e-3 * scale,
+            "M/Λ {got:?} vs {whose} {moment:?}"
+        );
+    }
+    let w = gas.load() / lambda;
+    assert!(rel(w, load) < 5e-3, "W̄/Λ {w} vs {whose} {load}");
+}
+
 /// (b) Λ → 0: (P − 1)/Λ tends to the incompressible full film, so M/(p_a R L²)/Λ tends to the
 /// liquid room's tilted full (Sommerfeld, no cavitation) film's moment over 12π (its pressure
 /// scale μ N_s (R/C)² is p_a Λ/(12π)). The liquid film starts at h_max held at P̄ = 0; with the
@@ -202,22 +224,44 @@ fn small_bearing_numbers_give_the_liquid_rooms_tilted_full_film() {
         )
         .unwrap();
         let want = solution.moment.map(|v| v / (12.0 * PI));
-        let got = gas.moment.map(|v| v / lambda);
-        let scale = magnitude(want);
-        assert!(scale > 0.0);
-        for k in 0..2 {
-            assert!(
-                (got[k] - want[k]).abs() < 5e-3 * scale,
-                "ε {e} θ_δ {direction}: M/Λ {got:?} vs liquid {want:?}"
-            );
-        }
         // The force too: the liquid's ∫∫P̄ over the whole length per 12π against W̄/Λ.
         let w_liquid = solution.load_radial.hypot(solution.load_tangential) / (12.0 * PI) / 2.0;
-        assert!(
-            rel(gas.load() / lambda, w_liquid) < 5e-3,
-            "{} vs {w_liquid}",
-            gas.load() / lambda
-        );
+        assert_small_bearing_number_limit(&gas, lambda, (want, w_liquid), "the liquid room's");
+    }
+}
+
+/// (b) Λ → 0 with a tilt out of the line of centres' plane (where the liquid room's film, held
+/// at P̄ = 0 along h_max, is not the periodic one): against the incompressible periodic full film
+/// of the whole length solved directly on the basement (`numerics::reynolds`, one banded solve,
+/// both ends at p = 0), ∂θ(H³∂θp) + ∂y(H³∂yp) = ∂θH with the tilted H: M/(p_a R L²)/Λ is
+/// ∫∫ p (y − L/D)(sin θ, −cos θ) dθ dy/(2 L/D)², and W̄/Λ its force over 4 L/D.
+#[test]
+fn an_oblique_tilt_at_small_bearing_numbers_is_the_incompressible_periodic_film() {
+    let budget = Budget::unlimited();
+    let lambda = 1e-3;
+    for (e, tilt, direction, w) in [(0.4, 0.6, 2.0, 1.0), (0.2, 1.2, -0.7, 0.5)] {
+        let f = tilted(e, lambda, w, tilt, direction);
+        let gas = evaluate(&f, method(Level::High), None, &budget)
+            .unwrap()
+            .performance;
+        let h = |t: f64, y: f64| f.thickness(t, y);
+        let (n, m) = (256, 64);
+        let (grid, p) = incompressible_film(&h, 1.0, None, w, (n, m), true);
+        let (mut force, mut moment) = ([0.0; 2], [0.0; 2]);
+        for i in 0..n {
+            let (s, c) = grid.x[i].sin_cos();
+            for j in 0..=m {
+                let v = grid.cv_x(i) * grid.cv_y(j) * p[incompressible::at(&grid, i, j)];
+                let arm = grid.y(j) - w;
+                force[0] -= v * c;
+                force[1] -= v * s;
+                moment[0] += v * arm * s;
+                moment[1] -= v * arm * c;
+            }
+        }
+        let want = moment.map(|v| v / (4.0 * w * w));
+        let w_want = magnitude(force) / (4.0 * w);
+        assert_small_bearing_number_limit(&gas, lambda, (want, w_want), "the basement's");
     }
 }
 
