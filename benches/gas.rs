@@ -8,6 +8,10 @@
 //!   whirl threshold: a 13-point scan of the whirl ratio and a secant per crossing, each ratio
 //!   one harmonic band LU on each mesh): 45 ms at Λ = 1, 80 ms at Λ = 10 (the steady film alone
 //!   2.0 and 2.5 ms);
+//! - the misaligned gas journal at `standard` (ε = 0.6, ε′ = 0.5 in the load plane, auto slip
+//!   applied): 51 ms at Λ = 1, 43 ms at Λ = 10 (the aligned film mirrored, then 2–4 placements
+//!   of the tilt against the attitude, continuum and slip; each Newton step on the whole length
+//!   costs 8× the half length's);
 //! - the gas slider at `standard` (finite and infinitely wide): under 5 ms;
 //! - the aerostatic pad and the foil journal (closed forms with one adaptive quadrature each);
 //! - the tilting-pad journal at `standard` (Ex 11.6's bearing): 45 ms by load (6 secant steps
@@ -68,6 +72,21 @@ fn gas(c: &mut Criterion) {
             "/v1/gas-bearings/journal",
             &format!(
                 r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6, "dynamics": {{}}}}"#
+            ),
+        );
+    }
+    // Misaligned: the whole-length film (twice the axial cells), the tilt placed against the
+    // attitude (a secant on φ), ε′ = βL/C = 0.5 in the load plane.
+    for lambda in [1.0, 10.0] {
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / cl).powi(2));
+        let rpm = omega * 30.0 / std::f64::consts::PI;
+        let slope = 0.5 * cl / d;
+        request(
+            c,
+            &format!("gas journal L/D = 1, ε = 0.6, Λ = {lambda}, standard, misaligned ε′ = 0.5"),
+            "/v1/gas-bearings/journal",
+            &format!(
+                r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {cl}}}, "speed_rpm": {rpm}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.6, "misalignment": {{"slope_rad": {slope}}}}}"#
             ),
         );
     }

@@ -7,7 +7,7 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, spawn_app, TestApp};
+use crate::helpers::{assert_all_finite, refused, spawn_app};
 
 const SPLIT: &str = "/v1/composite-bearings/speed-split";
 const START: &str = "/v1/composite-bearings/start-up";
@@ -39,22 +39,6 @@ fn split(extra: Value) -> Value {
         }
     }
     body
-}
-
-/// Each body answered 422 with an error at its pointer whose message says why.
-async fn refused<const N: usize>(app: &TestApp, path: &str, rows: [(Value, &str, &str); N]) {
-    for (body, pointer, why) in rows {
-        let reply = app.post_json(path, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
 }
 
 #[tokio::test]

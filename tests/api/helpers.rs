@@ -153,3 +153,19 @@ pub fn assert_all_finite(v: &Value, at: &str) {
         _ => {}
     }
 }
+
+/// Each body answered 422 with an error at its pointer whose message says why.
+pub async fn refused<const N: usize>(app: &TestApp, path: &str, rows: [(Value, &str, &str); N]) {
+    for (body, pointer, why) in rows {
+        let reply = app.post_json(path, &body).await;
+        let problem = reply.problem(422);
+        let errors = problem["errors"].as_array().unwrap();
+        assert!(
+            errors
+                .iter()
+                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
+            "{body}: want {pointer} ({why}), got {}",
+            reply.text
+        );
+    }
+}

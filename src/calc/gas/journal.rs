@@ -2,23 +2,23 @@
 //! Reynolds equation, at a given eccentricity or load (Khonsari & Booser §11.2–11.5).
 
 use std::cell::RefCell;
+use std::f64::consts::PI;
 
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::journal_dynamics::{self, STANDARD_GRAVITY};
-use super::journal_film::{self, JournalEvaluated, JournalFilm};
+use super::journal_film::{self, JournalEvaluated, JournalFilm, MIN_FILM};
 use super::method::{self, Method};
-use super::slider::GasEffects;
 use crate::calc::journal::dynamics::Coefficients;
-use crate::calc::journal::plain::{DynamicCoefficients, GeometrySpec};
+use crate::calc::journal::film::Misalignment;
+use crate::calc::journal::plain::{DynamicCoefficients, GeometrySpec, MisalignmentSpec};
 use crate::calc::quantity::Positive;
 use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
-use crate::numerics::driver::Stopped;
 use crate::numerics::roots::{secant_bracketed, RootError, Stopping};
 
 pub struct GasJournal;
@@ -51,9 +51,14 @@ pub struct GasJournalInput {
     /// Richardson-extrapolated.
     #[serde(default)]
     pub fidelity: FidelityRequest,
+    /// Journal misalignment: the shaft's slope in the bearing and the plane it tilts in (the
+    /// liquid journal room's object and conventions). The film is then solved over the whole
+    /// length and the response gives its moment on the journal (`misalignment_moment`).
+    pub misalignment: Option<MisalignmentSpec>,
     #[serde(default)]
-    pub effects: GasEffects,
-    /// Include the pressure field over the half bearing (default false).
+    pub effects: GasJournalEffects,
+    /// Include the pressure field over the half bearing (the whole length when misaligned;
+    /// default false).
     #[serde(default)]
     #[schema(example = false)]
     pub include_field: bool,
@@ -61,6 +66,24 @@ pub struct GasJournalInput {
     /// threshold (`{}` for the defaults); absent: none computed.
     #[serde(default)]
     pub dynamics: Option<GasDynamicsRequest>,
+}
+
+/// Effects the gas journal understands.
+#[derive(Debug, Clone, Copy, Default, Deserialize, ToSchema)]
+#[serde(deny_unknown_fields)]
+pub struct GasJournalEffects {
+    /// Rarefaction: first-order slip (Burgdorfer; Khonsari & Booser Eq. 11.10), the Poiseuille
+    /// term's H³P becoming H³P(1 + 6Kn/(PH)) with Kn = λ_a/h_ref. `auto` applies it when the
+    /// Knudsen number at the thinnest film, λ_a/h_min, exceeds 0.01 (§11.2: continuum flow
+    /// below); a warning follows above 1, where the first-order form no longer holds.
+    #[serde(default)]
+    pub slip_flow: Mode,
+    /// Journal misalignment (the whole-length film of a tilted journal, the liquid room's
+    /// Khonsari & Booser Eq. 8.70 film; Ausman's moment, §11.5). `auto` and `on` apply the
+    /// request's `misalignment` when it gives one (the journal is aligned otherwise, on the
+    /// half length); `off` solves the aligned journal whatever `misalignment` gives.
+    #[serde(default)]
+    pub misalignment: Mode,
 }
 
 /// Most whirl frequency ratios a request may list.
@@ -96,6 +119,10 @@ pub struct Case {
     pub gas: super::Gas,
     pub given: Given,
     pub slip_flow: Mode,
+    /// The request's misalignment (ε′ = slope L/C and its direction), whatever the
+    /// misalignment effect's mode ([`Case::tilt`]).
+    pub misalignment: Option<Misalignment>,
+    pub misalignment_mode: Mode,
     pub method: Method,
     pub include_field: bool,
     /// Whirl ratios besides the synchronous one, when dynamics are asked for.
@@ -109,6 +136,11 @@ impl Case {
     /// ω, rad/s.
     pub fn angular_speed(&self) -> f64 {
         self.speed_rpm * std::f64::consts::PI / 30.0
+    }
+    /// The misalignment the film is solved with: the request's, unless the effect is off.
+    pub fn tilt(&self) -> Option<Misalignment> {
+        self.misalignment
+            .filter(|_| self.misalignment_mode != Mode::Off)
     }
     /// Λ = 6μω(R/C)²/p_a.
     pub fn bearing_number(&self) -> f64 {
@@ -192,6 +224,7 @@ impl Validate for GasJournalInput {
                 }
             }
         }
+        let misalignment = self.misalignment.and_then(|m| m.parse(l, c, &mut errors));
         let gas = match self.gas.parse("/gas") {
             Ok(gas) => Some(gas),
             Err(mut e) => {
@@ -210,6 +243,8 @@ impl Validate for GasJournalInput {
             gas,
             given,
             slip_flow: self.effects.slip_flow,
+            misalignment,
+            misalignment_mode: self.effects.misalignment,
             method,
             include_field: self.include_field,
             dynamics: self.dynamics.map(|d| d.whirl_frequency_ratios),
@@ -230,7 +265,8 @@ impl Validate for GasJournalInput {
 pub struct GasJournalFieldPoint {
     /// θ from the maximum film in the direction of rotation, degrees.
     pub angle_deg: f64,
-    /// z/L from a bearing end (0) to the mid-plane (0.5).
+    /// z/L from a bearing end (0) to the mid-plane (0.5), or on to the other end (1) when
+    /// misaligned.
     pub axial_fraction: f64,
     /// Absolute pressure, Pa.
     pub pressure_pa: f64,
@@ -265,16 +301,51 @@ pub struct GasJournalOutput {
     pub max_pressure_pa: f64,
     /// Where the peak is, θ from the maximum film in the direction of rotation, degrees.
     pub max_pressure_angle_deg: f64,
-    /// h_min = C(1 − ε), m.
+    /// h_min, m: C(1 − ε) when aligned; a misaligned journal's at its worse end.
     pub min_film_m: f64,
     /// Kn = λ_a/h_min, dimensionless.
     pub knudsen_number: f64,
-    /// The pressure field over the half bearing (with `include_field`).
+    /// The film's moment on the journal when `misalignment` is given and applied (absent when
+    /// aligned: it is then zero by symmetry).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub misalignment_moment: Option<GasFilmMoment>,
+    /// The pressure field over the half bearing, or the whole length when misaligned (with
+    /// `include_field`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub pressure_field: Option<Vec<GasJournalFieldPoint>>,
     /// Stiffness, damping and the whirl threshold (with `dynamics`).
     #[serde(skip_serializing_if = "Option::is_none")]
     pub dynamics: Option<GasJournalDynamics>,
+}
+
+/// The film's moment on a misaligned gas journal: Ausman's misalignment moment (Khonsari &
+/// Booser §11.5, Fig. 11.15), from the whole-length film.
+#[derive(Debug, Clone, Serialize, ToSchema)]
+pub struct GasFilmMoment {
+    /// The frame: x along the static load, y 90° ahead of it in the direction of rotation, z
+    /// along the journal's spin vector (x, y, z right-handed); the tilted journal's end at +z is
+    /// the one displaced towards `misalignment.direction_deg`. The moment is the gauge
+    /// pressure's (p − p_a), taken about the bearing centre (on the axis at mid-length).
+    pub frame: String,
+    /// Moment about x, N·m.
+    pub mx_n_m: f64,
+    /// Moment about y, N·m.
+    pub my_n_m: f64,
+    /// |M|, N·m.
+    pub magnitude_n_m: f64,
+    /// (M_x, M_y)/(p_a R L²), dimensionless.
+    pub dimensionless: [f64; 2],
+    /// M̄ = 12 C |M|/(π p_a R L³ β), β the slope (Khonsari & Booser's normalisation of
+    /// Ausman's chart, Fig. 11.15: M = M̄ π p_a R L³ β/(12C)), dimensionless; it rises with Λ
+    /// and tends to 1 as Λ → ∞ (small-ε linear theory). The chart is a small-ε perturbation
+    /// result (ε ≤ 0.5); this is the full film's at the solved ε.
+    pub moment_coefficient: f64,
+    /// The moment's component against the tilt, N·m: −M·(z × u) for the tilt direction u (a
+    /// tilt by the slope about z × u); positive when the film resists the misalignment.
+    pub restoring_n_m: f64,
+    /// Relative error estimate of |M| (the Richardson pair's difference over 3), dimensionless.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub error_estimate: Option<f64>,
 }
 
 /// The film's dynamics about the solved equilibrium.
@@ -357,44 +428,59 @@ fn unstretch(s: f64) -> f64 {
 /// [`stretch`] over ε in [1e-4, 0.95]. The residual is nearly linear in s, so the secant lands in
 /// a few film solves where Brent on W̄(ε) − W̄ took 10–12 (each solve is the film and its
 /// Richardson half mesh); each film is solved by Newton from the last one's field (continuation in
-/// Λ where that fails).
+/// Λ where that fails). A misaligned journal's search ends at ε = 0.95 − ε′/2, where its film
+/// may reach [`MIN_FILM`] at an end whatever the attitude.
 fn at_load(
     film: JournalFilm,
+    tilt: Option<Misalignment>,
     target: f64,
     method: Method,
     budget: &crate::calc::Budget,
 ) -> Result<(JournalEvaluated, SolverReport), CalcError> {
     let last: RefCell<Option<JournalEvaluated>> = RefCell::new(None);
-    let failed: RefCell<Option<Stopped>> = RefCell::new(None);
+    let failed: RefCell<Option<CalcError>> = RefCell::new(None);
     let residual_at = |s: f64| -> f64 {
         let f = JournalFilm {
             eccentricity: unstretch(s),
             ..film
         };
         let warm = last.borrow().clone();
-        match journal_film::evaluate(&f, method, warm.as_ref(), budget) {
+        match evaluate(&f, tilt, method, warm.as_ref(), budget) {
             Ok(done) => {
                 let w = done.performance.load();
                 *last.borrow_mut() = Some(done);
                 (w / target).ln()
             }
-            Err(stop) => {
-                *failed.borrow_mut() = Some(stop);
+            Err(e) => {
+                *failed.borrow_mut() = Some(e);
                 f64::NAN
             }
         }
     };
-    let (s_lo, s_hi) = (stretch(MIN_ECCENTRICITY), stretch(MAX_ECCENTRICITY));
+    let largest = match tilt {
+        None => MAX_ECCENTRICITY,
+        // The worst end's centre is ε + ε′/2 off (both at once when the tilt lies along the
+        // line of centres); a hair inside, so that rounding does not refuse the bracket's end.
+        Some(m) => (1.0 - MIN_FILM - 0.5 * m.tilt) * (1.0 - 1e-12),
+    };
+    if largest <= MIN_ECCENTRICITY {
+        return Err(CalcError::impossible(
+            "/misalignment",
+            format!("the misaligned journal's film would fall below {MIN_FILM} C at an end even when centred: reduce the misalignment"),
+        ));
+    }
+    let (s_lo, s_hi) = (stretch(MIN_ECCENTRICITY), stretch(largest));
     let hi = residual_at(s_hi);
-    if let Some(stop) = failed.borrow_mut().take() {
-        return Err(stop.into());
+    if let Some(e) = failed.borrow_mut().take() {
+        return Err(e);
     }
     if hi < 0.0 {
         return Err(CalcError::impossible(
             "/load_n",
             format!(
-                "the film carries at most W/(p_a L D) = {:.4} at ε = {MAX_ECCENTRICITY}; the load asks {target:.4}",
-                target * hi.exp()
+                "the film carries at most W/(p_a L D) = {:.4} at ε = {largest:.4}{}; the load asks {target:.4}",
+                target * hi.exp(),
+                if tilt.is_some() { " (the misaligned journal's largest, its film at an end reaching the grids' smallest)" } else { "" }
             ),
         ));
     }
@@ -409,8 +495,8 @@ fn at_load(
             max_iterations: 60,
         },
     );
-    if let Some(stop) = failed.borrow_mut().take() {
-        return Err(stop.into());
+    if let Some(e) = failed.borrow_mut().take() {
+        return Err(e);
     }
     let root = match root {
         Ok(r) => r,
@@ -430,6 +516,21 @@ fn at_load(
         .expect("the search evaluated at least the bracket's ends");
     debug_assert_eq!(done.eccentricity, unstretch(root.x));
     Ok((done, root.report))
+}
+
+/// The film at `film`'s ε by `method`: aligned, or tilted by `tilt`
+/// ([`journal_film::evaluate_tilted`]), from `warm` when given.
+fn evaluate(
+    film: &JournalFilm,
+    tilt: Option<Misalignment>,
+    method: Method,
+    warm: Option<&JournalEvaluated>,
+    budget: &crate::calc::Budget,
+) -> Result<JournalEvaluated, CalcError> {
+    match tilt {
+        None => Ok(journal_film::evaluate(film, method, warm, budget)?),
+        Some(m) => journal_film::evaluate_tilted(film, m, method, warm, budget),
+    }
 }
 
 /// A film's coefficients on the wire: dimensionless as computed, in SI by W/C and W/(C ω).
@@ -515,7 +616,7 @@ impl Calculation for GasJournal {
         "Plain 360° gas journal bearing: compressible Reynolds by Newton, load or eccentricity, attitude, friction, peak pressure";
     const DESCRIPTION: &'static str = include_str!("journal.md");
     const FIDELITY: &'static [Level] = &[Level::Fast, Level::Standard, Level::High];
-    const EFFECTS: &'static [&'static str] = &["slip_flow"];
+    const EFFECTS: &'static [&'static str] = &["slip_flow", "misalignment"];
     const EXAMPLE: &'static str = r#"{"geometry": {"diameter_m": 0.025, "length_m": 0.025, "radial_clearance_m": 1e-5}, "speed_rpm": 30000, "gas": {"name": "air"}, "eccentricity_ratio": 0.5}"#;
 
     type Input = GasJournalInput;
@@ -532,53 +633,78 @@ impl Calculation for GasJournal {
             bearing_number: case.bearing_number(),
             knudsen_number: 0.0,
             l_over_d: l / case.diameter_m,
+            tilt: None,
         };
-        // Slip is decided on the thinnest film, C(1 − ε). For a load, ε is not known before the
-        // film is solved: `auto` solves the continuum film first, decides on its h_min, and
-        // solves again with slip if that decides so.
+        let tilt = case.tilt();
+        ctx.decide(
+            "misalignment",
+            Misalignment::decision(case.misalignment, case.misalignment_mode),
+        );
+        // Slip is decided on the thinnest film, C(1 − ε) when aligned. For a load, ε is not
+        // known before the film is solved, nor a misaligned film's thinnest end before its
+        // attitude is: `auto` solves the continuum film first, decides on its h_min, and solves
+        // again with slip if that decides so.
         let budget = ctx.budget();
-        let solve =
-            |film: JournalFilm| -> Result<(JournalEvaluated, Option<SolverReport>), CalcError> {
-                match case.given {
-                    Given::Eccentricity(e) => Ok((
-                        journal_film::evaluate(
-                            &JournalFilm {
-                                eccentricity: e,
-                                ..film
-                            },
-                            case.method,
-                            None,
-                            &budget,
-                        )?,
-                        None,
-                    )),
-                    Given::Load(w) => {
-                        let (done, report) =
-                            at_load(film, w / (pa * l * case.diameter_m), case.method, &budget)?;
-                        Ok((done, Some(report)))
-                    }
+        // `warm`: an earlier film at this ε (the continuum one, before slip is applied) to start
+        // from; a load search starts afresh.
+        let solve = |film: JournalFilm,
+                     warm: Option<&JournalEvaluated>|
+         -> Result<(JournalEvaluated, Option<SolverReport>), CalcError> {
+            match case.given {
+                Given::Eccentricity(e) => Ok((
+                    evaluate(
+                        &JournalFilm {
+                            eccentricity: e,
+                            ..film
+                        },
+                        tilt,
+                        case.method,
+                        warm,
+                        &budget,
+                    )?,
+                    None,
+                )),
+                Given::Load(w) => {
+                    let (done, report) = at_load(
+                        film,
+                        tilt,
+                        w / (pa * l * case.diameter_m),
+                        case.method,
+                        &budget,
+                    )?;
+                    Ok((done, Some(report)))
                 }
+            }
+        };
+        // h_min of a solved film, m.
+        let min_film = |done: &JournalEvaluated| {
+            let solved = JournalFilm {
+                eccentricity: done.eccentricity,
+                tilt: done.tilt,
+                ..film
             };
+            c * solved.min_thickness()
+        };
         let slip_film = JournalFilm {
             knudsen_number: case.gas.knudsen_number(c),
             ..film
         };
         let (evaluated, search, slip) = match (case.given, case.slip_flow) {
-            (Given::Eccentricity(e), mode) => {
+            (Given::Eccentricity(e), mode) if tilt.is_none() => {
                 let slip = case.gas.slip_flow(mode, c * (1.0 - e));
-                let (done, search) = solve(if slip.applied { slip_film } else { film })?;
+                let (done, search) = solve(if slip.applied { slip_film } else { film }, None)?;
                 (done, search, slip)
             }
-            (Given::Load(_), Mode::On) => {
-                let (done, search) = solve(slip_film)?;
-                let slip = case.gas.slip_flow(Mode::On, c * (1.0 - done.eccentricity));
+            (_, Mode::On) => {
+                let (done, search) = solve(slip_film, None)?;
+                let slip = case.gas.slip_flow(Mode::On, min_film(&done));
                 (done, search, slip)
             }
-            (Given::Load(_), mode) => {
-                let (done, search) = solve(film)?;
-                let slip = case.gas.slip_flow(mode, c * (1.0 - done.eccentricity));
+            (_, mode) => {
+                let (done, search) = solve(film, None)?;
+                let slip = case.gas.slip_flow(mode, min_film(&done));
                 if slip.applied {
-                    let (done, search) = solve(slip_film)?;
+                    let (done, search) = solve(slip_film, Some(&done))?;
                     (done, search, slip)
                 } else {
                     (done, search, slip)
@@ -586,9 +712,11 @@ impl Calculation for GasJournal {
             }
         };
         film.eccentricity = evaluated.eccentricity;
+        film.tilt = evaluated.tilt;
         ctx.decide("slip_flow", slip.clone());
         let e = film.eccentricity;
-        let knudsen_number = case.gas.knudsen_number(c * (1.0 - e));
+        let min_film_m = min_film(&evaluated);
+        let knudsen_number = case.gas.knudsen_number(min_film_m);
         if slip.applied && knudsen_number > FIRST_ORDER_SLIP_LIMIT {
             ctx.warn(
                 "slip_beyond_first_order",
@@ -612,10 +740,11 @@ impl Calculation for GasJournal {
             .fine
             .report
             .clone()
-            .named(if search.is_some() {
-                "finite_volume_newton_fitted_flux_secant_load"
-            } else {
-                "finite_volume_newton_fitted_flux"
+            .named(match (search.is_some(), tilt.is_some()) {
+                (true, false) => "finite_volume_newton_fitted_flux_secant_load",
+                (false, false) => "finite_volume_newton_fitted_flux",
+                (true, true) => "finite_volume_newton_fitted_flux_whole_length_secant_load",
+                (false, true) => "finite_volume_newton_fitted_flux_whole_length",
             })
             .counting(evaluated.iterations, evaluated.evaluations)
             .at(case.method.level)
@@ -661,8 +790,25 @@ impl Calculation for GasJournal {
             power_loss_w: friction_journal * u,
             max_pressure_pa: p.max_pressure * pa,
             max_pressure_angle_deg: p.max_pressure_angle.to_degrees(),
-            min_film_m: c * (1.0 - e),
+            min_film_m,
             knudsen_number,
+            misalignment_moment: tilt.map(|m| {
+                let scale = pa * r * l * l;
+                let nd = p.moment_in_load_frame();
+                let (mx, my) = (nd[0] * scale, nd[1] * scale);
+                let magnitude = mx.hypot(my);
+                GasFilmMoment {
+                    frame: "x along the static load, y 90° ahead in the direction of rotation, z along the spin; the +z end of the journal is displaced towards the tilt direction; about the bearing centre".into(),
+                    mx_n_m: mx,
+                    my_n_m: my,
+                    magnitude_n_m: magnitude,
+                    dimensionless: nd,
+                    // β = ε′ C/L: 12 C M/(π p_a R L³ β) = 12 M/(π p_a R L² ε′).
+                    moment_coefficient: 12.0 * nd[0].hypot(nd[1]) / (PI * m.tilt),
+                    restoring_n_m: m.restoring(p.attitude(), [mx, my]),
+                    error_estimate: evaluated.moment_error_estimate,
+                }
+            }),
             pressure_field,
             dynamics,
         };
@@ -674,6 +820,9 @@ impl Calculation for GasJournal {
             out.friction_force_bearing_n,
             out.power_loss_w,
             out.max_pressure_pa,
+            out.misalignment_moment.as_ref().map_or(0.0, |m| {
+                m.magnitude_n_m + m.moment_coefficient + m.error_estimate.unwrap_or(0.0)
+            }),
         ];
         if numbers.iter().all(|v| v.is_finite()) {
             Ok(out)

@@ -11,7 +11,8 @@
 //! so motion at ν has the squeeze number **σ = 2Λ ν/ω** (Eq. 11.3's σ with the journal's
 //! lengths). Its first-order response P₁ solves a complex linear system with the steady Newton
 //! Jacobian ([`reynolds_gas::harmonic_response`]), one per direction (cos θ and sin θ are
-//! both symmetric about the mid-plane, so the half-length grid serves). The film force's
+//! both symmetric about the mid-plane, so the half-length grid serves an aligned journal; a
+//! misaligned one's whole-length film is perturbed on its own grid). The film force's
 //! response F₁ = Z d defines the impedance Z(ν) = K(ν) + iν C(ν): a gas film's K and C depend
 //! on ν (its compressibility stores and returns energy), which the liquid film's do not.
 //!
@@ -35,9 +36,9 @@ pub const STANDARD_GRAVITY: f64 = 9.80665;
 /// error there is O(ν²) ≈ 1e-12.
 pub const STATIC_WHIRL_RATIO: f64 = 1e-6;
 
-/// Film force (a, b) on the journal of a pressure perturbation `dp` over the half bearing,
-/// per p_a L D: −∫∫ dp (cos θ, sin θ) dθ dy over both halves, / (2 L/D).
-fn force(grid: &GasGrid, l_over_d: f64, dp: &[f64]) -> [f64; 2] {
+/// Film force (a, b) on the journal of a pressure perturbation `dp` over the grid, per
+/// p_a L D: −∫∫ dp (cos θ, sin θ) dθ dy times the film's [`JournalFilm::load_factor`].
+fn force(grid: &GasGrid, load_factor: f64, dp: &[f64]) -> [f64; 2] {
     let (mut sc, mut ss) = (0.0, 0.0);
     for i in 0..grid.nx() {
         let (s, c) = grid.x[i].sin_cos();
@@ -47,7 +48,7 @@ fn force(grid: &GasGrid, l_over_d: f64, dp: &[f64]) -> [f64; 2] {
             ss += w * s;
         }
     }
-    [-sc / (2.0 * l_over_d), -ss / (2.0 * l_over_d)]
+    [-sc * load_factor, -ss * load_factor]
 }
 
 /// The film's impedance in the film frame (a, b), per p_a L D and per C, at one whirl ratio:
@@ -94,8 +95,8 @@ pub fn impedance(
         damping: [[0.0; 2]; 2],
     };
     for (j, r) in responses.iter().enumerate() {
-        let re = force(grid, film.l_over_d, &r.re);
-        let im = force(grid, film.l_over_d, &r.im);
+        let re = force(grid, film.load_factor(), &r.re);
+        let im = force(grid, film.load_factor(), &r.im);
         for i in 0..2 {
             out.stiffness[i][j] = re[i];
             out.damping[i][j] = im[i] / gamma;

@@ -44,7 +44,7 @@ fn steady_force(
         .unwrap()
         .p;
     let dp: Vec<f64> = p.iter().map(|v| v - 1.0).collect();
-    force(&s.grid, f.l_over_d, &dp)
+    force(&s.grid, f.load_factor(), &dp)
 }
 
 /// (a) ν → 0: the stiffness is the derivative of the steady load, by central differences of

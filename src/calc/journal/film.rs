@@ -24,6 +24,7 @@ use std::f64::consts::PI;
 
 use crate::calc::turbulence::{turbulent_flow_factors, turbulent_shear_factor};
 use crate::calc::Budget;
+use crate::effects::{Decision, Mode};
 use crate::fidelity::IterationUnit;
 use crate::numerics::banded::NotPositiveDefinite;
 use crate::numerics::driver::{Driver, Verdict};
@@ -289,6 +290,63 @@ pub struct Misalignment {
     pub from_line_of_centres: bool,
 }
 
+impl Misalignment {
+    /// The tilt's direction θ_δ in the film frame (from h_max, positive with rotation) when the
+    /// attitude angle is φ: the load line lies at θ = π − φ there, h_min at θ = π.
+    pub fn film_direction(&self, attitude: f64) -> f64 {
+        if self.from_line_of_centres {
+            PI + self.direction
+        } else {
+            PI - attitude + self.direction
+        }
+    }
+
+    /// The tilt's direction u in the load frame (x along the load, y 90° ahead in the rotation)
+    /// when the attitude angle is φ.
+    pub fn load_frame_direction(&self, attitude: f64) -> f64 {
+        if self.from_line_of_centres {
+            // h_min lies φ ahead of the load line.
+            self.direction + attitude
+        } else {
+            self.direction
+        }
+    }
+
+    /// The component of a moment (M_x, M_y) in the load frame against the tilt: −M·(z × u), the
+    /// tilt being a rotation about z × u; positive when the film resists the misalignment.
+    pub fn restoring(&self, attitude: f64, [mx, my]: [f64; 2]) -> f64 {
+        let towards = self.load_frame_direction(attitude);
+        -(mx * -towards.sin() + my * towards.cos())
+    }
+
+    /// The misalignment effect's decision: applied when the request tilts the journal and the
+    /// effect is not off.
+    pub fn decision(given: Option<Misalignment>, mode: Mode) -> Decision {
+        match (given, mode) {
+            (None, _) => Decision::not_applicable(mode, "the request gives no misalignment: journal aligned"),
+            (Some(Misalignment { tilt: e, .. }), Mode::Off) => Decision::not_applicable(
+                mode,
+                format!("requested off: the misalignment given (ε′ = {e:.4} of the clearance) is not applied; journal aligned"),
+            ),
+            (Some(Misalignment {
+                tilt: e,
+                direction: dir,
+                from_line_of_centres: from_centres,
+            }), Mode::Auto | Mode::On) => Decision {
+                applied: true,
+                mode: Mode::On,
+                reason: format!(
+                    "journal tilted {:.1}° from the {}: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
+                    dir.to_degrees(),
+                    if from_centres { "line of centres" } else { "load line" }
+                ),
+                criterion: None,
+                model: None,
+            },
+        }
+    }
+}
+
 /// Where a mass-conserving film is fed.
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 pub enum FeedLine {
@@ -424,15 +482,23 @@ impl Film {
         -self.a() * sin + self.sin_offset * cos + tilt
     }
 
+    /// ∂h̄/∂θ at θ and ȳ.
+    pub fn slope(&self, theta: f64, y: f64) -> f64 {
+        self.slope_at(theta.sin_cos(), y)
+    }
+
+    /// |e|/C of the journal centre in the section at ȳ (a tilted journal's centre moves along
+    /// its length): h̄ = 1 + |e| cos(θ − ψ) there, its smallest film 1 − |e|.
+    pub fn centre_offset(&self, y: f64) -> f64 {
+        let (e, dir) = self.tilt.unwrap_or((0.0, 0.0));
+        let s = e * (y - 0.5);
+        (self.a() - s * dir.cos()).hypot(self.sin_offset - s * dir.sin())
+    }
+
     /// The smallest h̄ anywhere in the clearance: 1 − |e| of the journal centre at the mid-plane,
     /// or at the worse end when tilted.
     pub fn min_thickness(&self) -> f64 {
-        let centre = |y: f64| {
-            let (e, dir) = self.tilt.unwrap_or((0.0, 0.0));
-            let s = e * (y - 0.5);
-            (self.a() - s * dir.cos()).hypot(self.sin_offset - s * dir.sin())
-        };
-        1.0 - centre(0.0).max(centre(1.0))
+        1.0 - self.centre_offset(0.0).max(self.centre_offset(1.0))
     }
 }
 

@@ -630,25 +630,15 @@ fn outputs(
         moment: point.moment_nd.map(|m| {
             let scale = pressure_scale * 0.5 * g.diameter_m * g.length_m * g.length_m;
             let (mx, my) = (m[0] * scale, m[1] * scale);
-            // The tilt direction u in the load frame; the tilt is a rotation about z × u.
-            let Misalignment {
-                direction: dir,
-                from_line_of_centres: from_centres,
-                ..
-            } = case.tilt().unwrap_or_default();
-            let towards = if from_centres {
-                // From the line of centres (h_min lies φ ahead of the load line).
-                dir + point.attitude_angle
-            } else {
-                dir
-            };
-            let axis = [-towards.sin(), towards.cos()];
             Moment {
                 mx_n_m: mx,
                 my_n_m: my,
                 magnitude_n_m: mx.hypot(my),
                 nd: m,
-                restoring_n_m: -(mx * axis[0] + my * axis[1]),
+                restoring_n_m: case
+                    .tilt()
+                    .unwrap_or_default()
+                    .restoring(point.attitude_angle, [mx, my]),
             }
         }),
         dynamics: None,

@@ -193,17 +193,7 @@ pub fn positioned_film(
             Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
             None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
         },
-        tilt: model.misalignment.map(|m| {
-            let (e, dir, from_centres) = (m.tilt, m.direction, m.from_line_of_centres);
-            (
-                e,
-                if from_centres {
-                    PI + dir
-                } else {
-                    PI - phi + dir
-                },
-            )
-        }),
+        tilt: model.misalignment.map(|m| (m.tilt, m.film_direction(phi))),
         ..base
     };
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The

@@ -354,43 +354,16 @@ impl Validate for PlainInput {
         if arc.is_some() && self.feed.is_some() {
             errors.push(FieldError::new("/feed", "Martin's feed-flow model is for the full 360° bearing; a partial arc is fed at its edges"));
         }
-        let misalignment = match self.misalignment {
-            None => None,
-            Some(m) => {
-                let tilt = m.slope_rad.get() * l / c;
-                if m.slope_rad.get() > 0.01 {
-                    errors.push(FieldError::new(
-                        "/misalignment/slope_rad",
-                        "must be within [0, 0.01] rad",
-                    ));
-                }
-                if !(-180.0..=180.0).contains(&m.direction_deg) {
-                    errors.push(FieldError::new(
-                        "/misalignment/direction_deg",
-                        "must be within [-180, 180] degrees",
-                    ));
-                }
-                if tilt >= 1.9 {
-                    errors.push(FieldError::new(
-                        "/misalignment/slope_rad",
-                        format!("the ends of the journal move {tilt:.3} C apart: it would touch the bearing even when centred"),
-                    ));
-                }
-                if matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
-                    && self.effects.misalignment != Mode::Off
-                {
-                    errors.push(FieldError::new(
-                        "/misalignment",
-                        "the closed forms are for an aligned journal; use a numerical fidelity",
-                    ));
-                }
-                (tilt > 0.0).then_some(Misalignment {
-                    tilt,
-                    direction: m.direction_deg.to_radians(),
-                    from_line_of_centres: m.measured_from == MisalignmentReference::LineOfCentres,
-                })
-            }
-        };
+        let misalignment = self.misalignment.and_then(|m| m.parse(l, c, &mut errors));
+        if self.misalignment.is_some()
+            && matches!(self.fidelity, FidelityRequest::Level(Level::ClosedForm))
+            && self.effects.misalignment != Mode::Off
+        {
+            errors.push(FieldError::new(
+                "/misalignment",
+                "the closed forms are for an aligned journal; use a numerical fidelity",
+            ));
+        }
         if misalignment.is_some()
             && self.effects.misalignment != Mode::Off
             && self
@@ -506,6 +479,43 @@ pub struct MisalignmentSpec {
     /// where 0 tilts towards h_min: h_min = C(1 − ε) − ε′C/2 at one end).
     #[serde(default)]
     pub measured_from: MisalignmentReference,
+}
+
+impl MisalignmentSpec {
+    /// The tilt of a journal of length `length_m` in the clearance `clearance_m`: ε′ = slope L/C
+    /// (None for a zero slope); the ranges' and a tilt's that touches even when centred
+    /// (ε′ ≥ 1.9) errors are pushed at their pointers.
+    pub fn parse(
+        &self,
+        length_m: f64,
+        clearance_m: f64,
+        errors: &mut Vec<FieldError>,
+    ) -> Option<Misalignment> {
+        let tilt = self.slope_rad.get() * length_m / clearance_m;
+        if self.slope_rad.get() > 0.01 {
+            errors.push(FieldError::new(
+                "/misalignment/slope_rad",
+                "must be within [0, 0.01] rad",
+            ));
+        }
+        if !(-180.0..=180.0).contains(&self.direction_deg) {
+            errors.push(FieldError::new(
+                "/misalignment/direction_deg",
+                "must be within [-180, 180] degrees",
+            ));
+        }
+        if tilt >= 1.9 {
+            errors.push(FieldError::new(
+                "/misalignment/slope_rad",
+                format!("the ends of the journal move {tilt:.3} C apart: it would touch the bearing even when centred"),
+            ));
+        }
+        (tilt > 0.0).then_some(Misalignment {
+            tilt,
+            direction: self.direction_deg.to_radians(),
+            from_line_of_centres: self.measured_from == MisalignmentReference::LineOfCentres,
+        })
+    }
 }
 
 /// The film's moment on a misaligned journal.

@@ -5,7 +5,7 @@ use super::{Case, Effects, Geometry, Notes, TURBULENT_REYNOLDS};
 use crate::calc::journal::feed::Feed;
 use crate::calc::journal::film::{FeedLine, Misalignment};
 use crate::calc::journal::performance::{Approximation, Method, Point};
-use crate::effects::{Criterion, Decision, Mode};
+use crate::effects::{Criterion, Decision};
 use crate::fidelity::Level;
 
 /// Turbulence: `auto` applies the Ng–Pan film above a film Reynolds number of 1000 (at the
@@ -184,30 +184,8 @@ pub(super) fn decide_cavitation(notes: &mut Notes, case: &Case, temperature_c: f
 
 /// Misalignment: applied when the request tilts the journal and the effect is not off.
 pub(super) fn decide_misalignment(notes: &mut Notes, case: &Case) {
-    let mode = case.effects.misalignment;
     notes.decide(
         "misalignment",
-        match (case.misalignment, mode) {
-            (None, _) => Decision::not_applicable(mode, "the request gives no misalignment: journal aligned"),
-            (Some(Misalignment { tilt: e, .. }), Mode::Off) => Decision::not_applicable(
-                mode,
-                format!("requested off: the misalignment given (ε′ = {e:.4} of the clearance) is not applied; journal aligned"),
-            ),
-            (Some(Misalignment {
-                tilt: e,
-                direction: dir,
-                from_line_of_centres: from_centres,
-            }), Mode::Auto | Mode::On) => Decision {
-                applied: true,
-                mode: Mode::On,
-                reason: format!(
-                    "journal tilted {:.1}° from the {}: the ends' centres differ by ε′ = {e:.4} of the clearance (Khonsari & Booser Eq. 8.70); whole-length film, h_min at an end",
-                    dir.to_degrees(),
-                    if from_centres { "line of centres" } else { "load line" }
-                ),
-                criterion: None,
-                model: None,
-            },
-        },
+        Misalignment::decision(case.misalignment, case.effects.misalignment),
     );
 }
