@@ -33,37 +33,6 @@ fn ex_11_6(geometry: PadGeometry) -> BearingFilm {
     }
 }
 
-#[test]
-#[ignore = "exploration: prints the chart quantities of Ex 11.6 over pad arcs and pivot offsets"]
-fn explore_ex_11_6_pad_geometries() {
-    let budget = Budget::unlimited();
-    for arc in [90.0, 100.0, 110.0, 120.0] {
-        for offset in [0.5, 0.55, 0.6, 0.65] {
-            let g = PadGeometry {
-                arc: f64::to_radians(arc),
-                pivot_offset: offset,
-            };
-            let b = ex_11_6(g);
-            let e = at_eccentricity(&b, 0.575, standard(), None, &budget, "").unwrap();
-            let [p1, _, p3] = e.pads();
-            let hm = |p: &PadEquilibrium| p.evaluated.film.min_film().0;
-            let f = |p: &PadEquilibrium| p.evaluated.performance.friction_journal;
-            println!(
-                "arc {arc} offset {offset}: C_LT(0.575) = {:.4}  H_M1 {:.4} H_M3 {:.4}  F1 {:.3} F3 {:.3} pad F1 {:.3} F3 {:.3} tilt1 {:.4} tilt3 {:.4}",
-                e.load(),
-                hm(p1),
-                hm(p3),
-                f(p1),
-                f(p3),
-                p1.evaluated.performance.friction_pad,
-                p3.evaluated.performance.friction_pad,
-                p1.evaluated.film.tilt,
-                p3.evaluated.film.tilt
-            );
-        }
-    }
-}
-
 /// P − 1 of the incompressible infinitely long pad, Λ ∫(H⁻² − H* H⁻³) dψ from the leading
 /// edge, H* = ∫H⁻²/∫H⁻³ over the pad (P = 1 at both edges): H³P′ = Λ(H − H*), by Simpson's
 /// rule on 4000 panels — independent of the finite-volume solver.
@@ -281,7 +250,7 @@ fn the_richardson_estimate_brackets_the_error_as_the_mesh_is_refined() {
         let estimate = e.error_estimate().unwrap();
         // The estimate is the unextrapolated fine mesh's; the extrapolated value is closer.
         assert!(
-            error <= estimate + 1e-4,
+            error <= 1.1 * estimate,
             "{level:?}: error {error} estimate {estimate}"
         );
         errors.push(error);

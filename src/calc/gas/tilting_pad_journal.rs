@@ -371,7 +371,10 @@ impl Calculation for TiltingPadGasJournal {
             report.iterations_unit = s.iterations_unit;
         }
         ctx.report(report);
-        Ok(output(&case, &done))
+        CalcError::finite_or_out_of_range(
+            output(&case, &done),
+            "the bearing's size, speed and load",
+        )
     }
 }
 
