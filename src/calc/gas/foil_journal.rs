@@ -183,13 +183,7 @@ impl Validate for FoilJournalInput {
     fn validate(self) -> Result<FoilJournalCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let (d, l, c) = self.geometry.check(&mut errors);
-        let gas = match self.gas.parse("/gas") {
-            Ok(gas) => Some(gas),
-            Err(mut e) => {
-                errors.append(&mut e);
-                None
-            }
-        };
+        let gas = self.gas.parse_into("/gas", &mut errors);
         let alpha = parse_foil(
             self.foil,
             c,

@@ -201,6 +201,12 @@ fn check_range(
 }
 
 impl GasSpec {
+    /// [`GasSpec::parse`] for a request that gathers all its errors: the gas, or None with
+    /// its errors added to `errors`.
+    pub fn parse_into(self, at: &str, errors: &mut Vec<FieldError>) -> Option<Gas> {
+        self.parse(at).map_err(|mut e| errors.append(&mut e)).ok()
+    }
+
     /// Parse into a [`Gas`]; `at` is the JSON pointer of this object in the request.
     pub fn parse(self, at: &str) -> Result<Gas, Vec<FieldError>> {
         let mut errors = Vec::new();

@@ -225,13 +225,7 @@ impl Validate for GasJournalInput {
             }
         }
         let misalignment = self.misalignment.and_then(|m| m.parse(l, c, &mut errors));
-        let gas = match self.gas.parse("/gas") {
-            Ok(gas) => Some(gas),
-            Err(mut e) => {
-                errors.append(&mut e);
-                None
-            }
-        };
+        let gas = self.gas.parse_into("/gas", &mut errors);
         let Some(gas) = gas.filter(|_| errors.is_empty()) else {
             return Err(errors);
         };

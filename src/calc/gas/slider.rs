@@ -153,13 +153,7 @@ impl Validate for GasSliderInput {
             (2, 256),
             &mut errors,
         );
-        let gas = match self.gas.parse("/gas") {
-            Ok(g) => Some(g),
-            Err(mut e) => {
-                errors.append(&mut e);
-                None
-            }
-        };
+        let gas = self.gas.parse_into("/gas", &mut errors);
         let Some(gas) = gas.filter(|_| errors.is_empty()) else {
             return Err(errors);
         };

@@ -185,13 +185,7 @@ impl Validate for GasTiltingPadThrustInput {
             (2, 128),
             &mut errors,
         );
-        let gas = match self.gas.parse("/gas") {
-            Ok(g) => Some(g),
-            Err(mut e) => {
-                errors.append(&mut e);
-                None
-            }
-        };
+        let gas = self.gas.parse_into("/gas", &mut errors);
         let (Some(gas), Some(given), true) = (gas, given, errors.is_empty()) else {
             return Err(errors);
         };
