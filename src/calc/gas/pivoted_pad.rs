@@ -481,13 +481,24 @@ fn balanced_at_load(
             "no clearance within the model's range gives a bearing number the film can be solved at",
         )
     })?;
-    let u0 = near
+    let mut u0 = near
         .map_or_else(
             || scales.clearance_at(LOAD_SEARCH_START).ln(),
             |b| b.clearance_m.ln(),
         )
         .clamp(u_min, u_max);
-    let r0 = residual(u0);
+    let mut r0 = residual(u0);
+    // A pad without an equilibrium at the start may have one on a thicker film (a flat pad's
+    // centre of pressure moves aft as Λ grows): from rest, start again at Λ = 1.
+    let unbalanced = matches!(
+        &*failed.borrow(),
+        Some(CalcError::Impossible { pointer, .. }) if pointer == "/pivot_angle_fraction"
+    );
+    if unbalanced && near.is_none() {
+        failed.borrow_mut().take();
+        u0 = scales.clearance_at(1.0).ln().clamp(u_min, u_max);
+        r0 = residual(u0);
+    }
     check()?;
     // Step ln C (by 2 % near a guess, by ln 2 from rest) toward the target until the residual
     // changes sign, doubling the step.
