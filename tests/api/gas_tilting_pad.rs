@@ -8,8 +8,7 @@ use serde_json::{json, Value};
 use stribeck::calc::{find, Failure};
 
 use crate::gas::run;
-
-use crate::helpers::{assert_all_finite, spawn_app};
+use crate::helpers::{assert_all_finite, refused, spawn_app};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-journal";
 
@@ -58,19 +57,12 @@ async fn the_tilting_pad_journal_answers_its_example_and_refuses_bad_pads_by_fie
             "no closed form",
         ),
     ];
-    for (extra, pointer, why) in rows {
-        let body = example(extra);
-        let reply = app.post_json(PATH, &body).await;
-        let problem = reply.problem(422);
-        let errors = problem["errors"].as_array().unwrap();
-        assert!(
-            errors
-                .iter()
-                .any(|e| e["pointer"] == pointer && e["message"].as_str().unwrap().contains(why)),
-            "{body}: want {pointer} ({why}), got {}",
-            reply.text
-        );
-    }
+    refused(
+        &app,
+        PATH,
+        rows.map(|(extra, p, why)| (example(extra), p, why)),
+    )
+    .await;
 }
 
 proptest! {
