@@ -109,6 +109,17 @@ impl GasGrid {
     }
 }
 
+/// `2n` cells on [0, 1] clustered toward both ends: [`graded`]'s `n` cells toward 0 on [0, ½],
+/// `finest` the end cell's length, and their mirror image on [½, 1] (a whole width whose two
+/// edges both form boundary layers).
+pub fn graded_both_ends(n: usize, finest: f64) -> Vec<f64> {
+    let half = graded(n, 2.0 * finest, true);
+    half.iter()
+        .map(|v| 0.5 * v)
+        .chain(half.iter().rev().skip(1).map(|v| 1.0 - 0.5 * v))
+        .collect()
+}
+
 /// `n` cells on [0, 1] clustered toward 1 (toward 0 with `at_start`) so that the cell at that end
 /// is about `finest` long: x(s) = tanh(δ s)/tanh δ, with δ solved from the end cell's length
 /// (uniform when `finest` ≥ 1/n).

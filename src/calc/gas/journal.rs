@@ -9,7 +9,7 @@ use utoipa::ToSchema;
 
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::journal_dynamics::{self, STANDARD_GRAVITY};
-use super::journal_film::{self, JournalEvaluated, JournalFilm, MIN_FILM};
+use super::journal_film::{self, stretch, unstretch, JournalEvaluated, JournalFilm, MIN_FILM};
 use super::method::{self, Method};
 use crate::calc::journal::dynamics::Coefficients;
 use crate::calc::journal::film::Misalignment;
@@ -405,17 +405,6 @@ pub struct GasWhirlThreshold {
     pub mass_parameter_at_speed: f64,
     /// Whether that rotor runs stably at the request's speed (M̄ < M̄_c).
     pub stable_at_speed: bool,
-}
-
-/// The stretched eccentricity s = ln(ε/(1 − ε)) in which the load search runs: W̄ ∝ ε at small ε
-/// (linear theory), so ln W̄ is nearly linear in s there and bends only gently toward ε → 1.
-fn stretch(e: f64) -> f64 {
-    (e / (1.0 - e)).ln()
-}
-
-/// ε from the stretched s of [`stretch`].
-fn unstretch(s: f64) -> f64 {
-    1.0 / (1.0 + (-s).exp())
 }
 
 /// The film at the given load: a bracketed secant on ln(W̄/W̄_target) in the stretched s of

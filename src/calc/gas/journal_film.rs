@@ -24,7 +24,9 @@ use crate::calc::journal::film::{Film, Misalignment};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{IterationUnit, Level, SolverReport};
 use crate::numerics::driver::{Driver, Stopped, Verdict};
-use crate::numerics::reynolds_gas::{self, graded, FarEdge, GasGrid, GasProblem, GasStopping};
+use crate::numerics::reynolds_gas::{
+    self, graded, graded_both_ends, FarEdge, GasGrid, GasProblem, GasStopping,
+};
 use crate::numerics::richardson::{extrapolate, fine_error};
 use std::f64::consts::{PI, TAU};
 
@@ -133,22 +135,32 @@ pub fn level_mesh(level: Level) -> Mesh {
     }
 }
 
+/// The stretched eccentricity s = ln(ε/(1 − ε)) in which the load searches run (the plain and the tilting-pad gas journals'): W̄ ∝ ε at small ε
+/// (linear theory), so ln W̄ is nearly linear in s there and bends only gently toward ε → 1.
+pub fn stretch(e: f64) -> f64 {
+    (e / (1.0 - e)).ln()
+}
+
+/// ε from the stretched s of [`stretch`].
+pub fn unstretch(s: f64) -> f64 {
+    1.0 / (1.0 + (-s).exp())
+}
+
 /// The grid: θ uniform; y graded toward the bearing end so that its first cell is about
 /// 1/(3√Λ) (the end layer's thickness scales as Λ^−½). A tilted film's grid is the half grid
 /// and its mirror image about the mid-plane, y from 0 to 2 L/D.
 pub fn grid(film: &JournalFilm, mesh: Mesh) -> GasGrid {
     let w = film.l_over_d;
     let finest = 0.33 / film.bearing_number.max(1.0).sqrt();
-    let half: Vec<f64> = graded(mesh.across.max(2), finest / w, true)
-        .into_iter()
-        .map(|v| v * w)
-        .collect();
     let y = match film.tilt {
-        None => half,
-        Some(_) => {
-            let mirrored = half.iter().rev().skip(1).map(|v| 2.0 * w - v);
-            half.iter().copied().chain(mirrored).collect()
-        }
+        None => graded(mesh.across.max(2), finest / w, true)
+            .into_iter()
+            .map(|v| v * w)
+            .collect(),
+        Some(_) => graded_both_ends(mesh.across.max(2), finest / (2.0 * w))
+            .into_iter()
+            .map(|v| v * 2.0 * w)
+            .collect(),
     };
     GasGrid {
         x: (0..=mesh.along)

@@ -6,7 +6,6 @@ use proptest::prelude::*;
 use super::*;
 use crate::calc::gas::slider_film::{self, SliderFilm};
 use crate::fidelity::Level;
-use crate::numerics::reynolds_gas::graded;
 
 fn method(level: Level) -> Method {
     Method {
@@ -188,18 +187,12 @@ fn the_polar_film_at_small_bearing_numbers_is_the_incompressible_sector() {
     let rm = 0.5 * (1.0 + ri);
     // The gas film on the sector, r_o = 1, h2 = C = 1, p_a = 1: Λ = 6μω.
     let mesh = slider_film::level_mesh(Level::High);
-    let half = mesh.across;
-    let side = graded(half, 1.0 / half as f64, true);
     let width = 1.0 - ri;
+    let (nx, ny) = (mesh.along, 2 * mesh.across);
     let grid = GasGrid {
-        x: graded(mesh.along, 1.0 / mesh.along as f64, false)
-            .into_iter()
-            .map(|v| v * angle)
-            .collect(),
-        y: side
-            .iter()
-            .map(|v| ri + v * 0.5 * width)
-            .chain(side.iter().rev().skip(1).map(|v| 1.0 - v * 0.5 * width))
+        x: (0..=nx).map(|i| angle * i as f64 / nx as f64).collect(),
+        y: (0..=ny)
+            .map(|j| ri + width * j as f64 / ny as f64)
             .collect(),
         periodic: false,
     };

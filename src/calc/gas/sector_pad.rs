@@ -37,7 +37,7 @@ use super::method::Mesh;
 use super::slider_film::coarsen;
 use crate::numerics::optimise::brent_minimise;
 use crate::numerics::quadrature::gauss_legendre;
-use crate::numerics::reynolds_gas::{graded, GasGrid};
+use crate::numerics::reynolds_gas::{graded, graded_both_ends, GasGrid};
 use crate::numerics::roots::MAX_DOUBLINGS;
 
 /// The pad's shape and pivot, dimensionless.
@@ -278,13 +278,11 @@ pub fn grid(film: &PadFilm, mesh: Mesh, half: bool) -> GasGrid {
         .into_iter()
         .map(|v| v * s.angle)
         .collect();
-    let half_width = 0.5 * (1.0 - s.inner_radius);
-    let finest = 0.33 * rm * s.angle / lambda.sqrt() / half_width;
-    let side = graded(mesh.across.max(2), finest, true);
-    let y = side
-        .iter()
-        .map(|v| s.inner_radius + v * half_width)
-        .chain(side.iter().rev().skip(1).map(|v| 1.0 - v * half_width))
+    let width = 1.0 - s.inner_radius;
+    let finest = 0.33 * rm * s.angle / lambda.sqrt() / width;
+    let y = graded_both_ends(mesh.across.max(2), finest)
+        .into_iter()
+        .map(|v| s.inner_radius + v * width)
         .collect();
     let fine = GasGrid {
         x,

@@ -49,6 +49,7 @@
 use std::cell::RefCell;
 use std::f64::consts::FRAC_PI_3;
 
+use super::journal_film::{stretch, unstretch};
 use super::method::{Mesh, Method};
 use super::slider_film::coarsen;
 use crate::calc::{Budget, CalcError};
@@ -611,8 +612,6 @@ pub fn at_load(
     method: Method,
     budget: &Budget,
 ) -> Result<(BearingEquilibrium, SolverReport), CalcError> {
-    let stretch = |e: f64| (e / (1.0 - e)).ln();
-    let unstretch = |s: f64| 1.0 / (1.0 + (-s).exp());
     let last: RefCell<Option<BearingEquilibrium>> = RefCell::new(None);
     let failed: RefCell<Option<CalcError>> = RefCell::new(None);
     let residual_at = |s: f64| -> f64 {
