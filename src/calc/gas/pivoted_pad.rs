@@ -393,8 +393,6 @@ pub struct Balanced {
     jacobian: Option<Jacobian>,
     /// Newton steps of every film solve of the searches.
     pub newton_steps: u32,
-    /// Steps of the clearance search (0 when the clearance is given).
-    pub search_steps: u32,
 }
 
 /// The pad at clearance C in equilibrium on `mesh` (`half`: every other node of it), from a
@@ -423,7 +421,6 @@ fn balanced_at_clearance(
             solve,
             jacobian: solver.jacobian.into_inner(),
             newton_steps: solver.newton_steps.into_inner(),
-            search_steps: 0,
         })
     };
     match attempt(near.is_some()) {
@@ -559,7 +556,6 @@ fn balanced_at_load(
         *steps.borrow_mut() += done.newton_steps;
     }
     done.newton_steps = steps.into_inner();
-    done.search_steps = root.iterations;
     Ok(done)
 }
 
@@ -590,8 +586,6 @@ pub struct PadEvaluated {
     pub coarse: Option<Balanced>,
     /// Newton steps over both meshes.
     pub newton_steps: u32,
-    /// Steps of the clearance searches over both meshes.
-    pub search_steps: u32,
 }
 
 impl PadEvaluated {
@@ -632,7 +626,6 @@ pub fn evaluate(
             performance: f.performance,
             error_estimate: None,
             newton_steps: fine.newton_steps,
-            search_steps: fine.search_steps,
             fine,
             coarse: None,
         });
@@ -668,7 +661,6 @@ pub fn evaluate(
         performance,
         error_estimate,
         newton_steps: fine.newton_steps + coarse.newton_steps,
-        search_steps: fine.search_steps + coarse.search_steps,
         fine,
         coarse: Some(coarse),
     })
