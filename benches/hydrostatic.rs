@@ -2,7 +2,9 @@
 //! closed form; each case is the whole request through the room (parse, validate, physics,
 //! envelope):
 //! - the pad: Ex 10.1 (constant flow), Ex 10.2 (capillary designed for m = ½), an orifice at a
-//!   given film and supply pressure (the quadratic root), the thermal effect's root in T;
+//!   given film and supply pressure (the quadratic root), the thermal effect's root in T, and
+//!   the turbulence effect (the README's water pad: Brent on the turbulent capillary; an
+//!   annulus in water at a load and supply pressure: Brent nested over the two lands' roots);
 //! - the design: Ex 10.1's minimum-pumping ratio (scan + Brent), the free film at speed with
 //!   its power curves, Ex 10.4's oil lift.
 //!
@@ -48,6 +50,18 @@ fn hydrostatic(c: &mut Criterion) {
         "pad: capillary, thermal effect on (root in the film temperature)",
         PAD,
         r#"{"pad": {"kind": "circular_step", "recess_radius_m": 0.0635, "outer_radius_m": 0.127}, "compensation": {"kind": "capillary", "radius_m": 7.62e-4, "length_m": 0.4}, "lubricant": {"iso_vg": 68}, "film_m": 7.62e-5, "supply_pressure_pa": 1.3e7, "speed_rpm": 3000, "effects": {"thermal": "on"}}"#,
+    );
+    request(
+        c,
+        "pad: water, turbulent capillary (the README's), given film and supply pressure",
+        PAD,
+        r#"{"pad": {"kind": "circular_step", "recess_radius_m": 0.025, "outer_radius_m": 0.05}, "compensation": {"kind": "capillary", "radius_m": 0.001, "length_m": 0.2}, "lubricant": {"viscosity_pa_s": 0.001, "density_15c_kg_m3": 1000}, "temperature_c": 15, "film_m": 1.5e-4, "supply_pressure_pa": 1e6, "speed_rpm": 3000}"#,
+    );
+    request(
+        c,
+        "pad: water, annulus with turbulent lands and capillary, given load and supply pressure",
+        PAD,
+        r#"{"pad": {"kind": "annular", "inner_radius_m": 0.03, "recess_inner_radius_m": 0.05, "recess_outer_radius_m": 0.09, "outer_radius_m": 0.12}, "compensation": {"kind": "capillary", "radius_m": 0.002, "length_m": 0.05}, "lubricant": {"viscosity_pa_s": 0.001, "density_15c_kg_m3": 1000}, "temperature_c": 15, "load_n": 3000, "supply_pressure_pa": 1e6}"#,
     );
     request(
         c,

@@ -25,6 +25,12 @@ pub fn turbulent_shear_factor(re: f64) -> f64 {
     1.0 + 0.0012 * re.powf(0.94)
 }
 
+/// Hydraulic drag on a surface moving past a wall at a gap, f = 0.016/Re^0.25 with Re = ρUh/μ
+/// (Khonsari & Booser Eq. 7.18): the power loss per area is f (ρ U²/2) U (Eq. 7.17).
+pub fn surface_drag_friction_factor(re: f64) -> f64 {
+    0.016 / re.powf(0.25)
+}
+
 /// The turbulent friction factor of a thrust film, f = 0.026/Re^0.25 (Khonsari & Booser
 /// Eq. 7.20, from Missana et al.'s tests; parasitic losses included, so above the 0.016 of
 /// plain hydraulic drag, Eq. 7.18): the power loss per area is f (ρ U²/2) U (Eq. 7.17).

@@ -58,6 +58,33 @@ pub fn brent(
     brent_bracketed(f, (a, fa), (b, fb), stop)
 }
 
+/// [`brent`] over an f whose evaluations can fail (a nested solve): the first failure ends the
+/// search and is returned as it was, else the search's own outcome (as `E`).
+pub fn brent_fallible<E: From<RootError>>(
+    mut f: impl FnMut(f64) -> Result<f64, E>,
+    a: f64,
+    b: f64,
+    stop: Stopping,
+) -> Result<Root, E> {
+    let mut failure = None;
+    let root = brent(
+        |x| match f(x) {
+            Ok(v) => v,
+            Err(e) => {
+                failure.get_or_insert(e);
+                f64::NAN
+            }
+        },
+        a,
+        b,
+        stop,
+    );
+    match failure {
+        Some(e) => Err(e),
+        None => root.map_err(E::from),
+    }
+}
+
 /// [`brent`] from a bracket whose ends the caller has already evaluated (f(a), f(b)), for a
 /// function that costs a solve: the ends are not evaluated again.
 pub fn brent_bracketed(

@@ -45,6 +45,49 @@ async fn the_examples_answer_over_http() {
     assert!((k / (3.0 * w / 5e-5) - 0.585_786).abs() < 1e-6);
 }
 
+/// The README's water-lubricated pad: its capillary runs at Re 6×10⁴, so `auto` applies the
+/// turbulent laws. Checked from the reply alone: the capillary drops Khonsari & Booser's
+/// turbulent line loss f (l/d) ρU²/2 with f = 0.184 Re^−0.2 (Eq. 2.36), and the lands, laminar
+/// at Re_2h 1230, hold p_r = 6μQ ln(R2/R1)/(πh³) (Eq. 10.6).
+#[tokio::test]
+async fn a_turbulent_capillary_follows_the_line_loss() {
+    let app = spawn_app().await;
+    let body = json!({
+        "pad": {"kind": "circular_step", "recess_radius_m": 0.025, "outer_radius_m": 0.05},
+        "compensation": {"kind": "capillary", "radius_m": 0.001, "length_m": 0.2},
+        "lubricant": {"viscosity_pa_s": 0.001, "density_15c_kg_m3": 1000}, "temperature_c": 15,
+        "film_m": 1.5e-4, "supply_pressure_pa": 1e6, "speed_rpm": 3000,
+    });
+    let reply = app.post_json(PAD, &body).await;
+    assert_eq!(reply.status, 200, "{}", reply.text);
+    assert_all_finite(&reply.body, "");
+    let decision = &reply.body["effects"]["turbulence"];
+    assert_eq!(decision["applied"], true, "{decision}");
+    assert_eq!(decision["model"], "larger_loss_of_laminar_and_turbulent");
+    let r = &reply.body["result"];
+    let n = |v: &Value| v.as_f64().unwrap();
+    let rest = &r["restrictor"];
+    let (re, u, drop) = (
+        n(&rest["reynolds_number"]),
+        n(&rest["mean_velocity_m_s"]),
+        n(&rest["pressure_drop_pa"]),
+    );
+    assert!(re > 2000.0, "{re}");
+    let line_loss = 0.184 * re.powf(-0.2) * (0.2 / 0.002) * 1000.0 * u * u / 2.0;
+    assert!(
+        (drop / line_loss - 1.0).abs() < 1e-12,
+        "{drop} vs {line_loss}"
+    );
+    let (q, pr) = (n(&r["flow_m3_s"]), n(&r["recess_pressure_pa"]));
+    assert!(n(&r["land_pressure_flow_reynolds_number"]) < 2000.0);
+    let laminar_land = 6.0 * 1e-3 * q * 2f64.ln() / (std::f64::consts::PI * 1.5e-4f64.powi(3));
+    assert!(
+        (pr / laminar_land - 1.0).abs() < 1e-12,
+        "{pr} vs {laminar_land}"
+    );
+    assert!((pr + drop) / 1e6 - 1.0 < 1e-12);
+}
+
 #[tokio::test]
 async fn bad_pads_are_422s_naming_the_field_with_the_reason() {
     let app = spawn_app().await;

@@ -1,9 +1,12 @@
 //! A hydrostatic pad's geometry as the film sees it: the effective area A_eff (W = A_eff·p_r),
 //! the flow coefficient B̄ (Q = B̄ h³ p_r/μ), the land friction per unit μω/h or μU/h, and the
-//! lengths the validity checks need. Parallel film, laminar, isoviscous, deep recess
+//! lengths the validity checks need, and the lands as the turbulent film law sees them (`lands`).
+//! Parallel film, laminar, isoviscous, deep recess
 //! (Khonsari & Booser §10.3, §10.7, Prob. 10.4; Stachowiak & Batchelor §6.2–6.3).
 
 use std::f64::consts::PI;
+
+use super::lands::{Film, Lands, RadialLand, Slit};
 
 /// A pad, dimensions in metres.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -46,9 +49,10 @@ pub enum Geometry {
 /// How the lands' viscous drag is expressed for this geometry.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub enum Drag {
-    /// A rotating runner: torque T = μ ω c/h with c = Σ π(R_o⁴ − R_i⁴)/2 over the lands
-    /// (Couette shear, recess neglected: Khonsari & Booser Eq. 10.14).
-    Torque(f64),
+    /// A rotating runner over lands (R_i, R_o) (a second land of zero width where there is one
+    /// land): laminar, T = μ ω Σ π(R_o⁴ − R_i⁴)/(2h) (Couette shear, recess neglected:
+    /// Khonsari & Booser Eq. 10.14).
+    Torque([(f64, f64); 2]),
     /// A sliding runner: force F = μ U c/h with c = the land area (Couette shear).
     Force(f64),
     /// The geometry gives no friction (Loeb–Rippel factors carry none).
@@ -125,22 +129,78 @@ impl Geometry {
         }
     }
 
-    /// The land drag of this pad.
-    pub fn drag(&self) -> Drag {
-        let ring = |ri: f64, ro: f64| PI * (ro.powi(4) - ri.powi(4)) / 2.0;
+    /// The laminar lands at film viscosity μ: Q = B̄ s/μ, A_eff fixed.
+    pub fn laminar_lands(&self, mu: f64) -> Lands {
+        Lands::Laminar(Film {
+            area: self.effective_area(),
+            c2: self.flow_coefficient() / mu,
+        })
+    }
+
+    /// The lands with the slit law where the flow is turbulent (see `lands`). Chart factors
+    /// stay laminar: the charts give no land to apply it to.
+    pub fn turbulent_lands(&self, slit: Slit) -> Lands {
         match *self {
             Geometry::CircularStep {
                 recess_radius,
                 outer_radius,
-            } => Drag::Torque(ring(recess_radius, outer_radius)),
+            } => Lands::Radial {
+                slit,
+                outward: RadialLand {
+                    inner: recess_radius,
+                    outer: outer_radius,
+                },
+                inward: None,
+            },
             Geometry::Annular {
                 inner_radius,
                 recess_inner_radius,
                 recess_outer_radius,
                 outer_radius,
-            } => Drag::Torque(
-                ring(inner_radius, recess_inner_radius) + ring(recess_outer_radius, outer_radius),
-            ),
+            } => Lands::Radial {
+                slit,
+                outward: RadialLand {
+                    inner: recess_outer_radius,
+                    outer: outer_radius,
+                },
+                inward: Some(RadialLand {
+                    inner: inner_radius,
+                    outer: recess_inner_radius,
+                }),
+            },
+            Geometry::Rectangular {
+                recess_length: b,
+                recess_width: w,
+                land_width: l,
+            } => Lands::Strips {
+                slit,
+                width: 2.0 * ((b + l) + (w + l)),
+                length: l,
+                area: self.effective_area(),
+            },
+            Geometry::PerformanceFactors { .. } => self.laminar_lands(slit.mu),
+        }
+    }
+
+    /// The land drag of this pad.
+    pub fn drag(&self) -> Drag {
+        match *self {
+            Geometry::CircularStep {
+                recess_radius,
+                outer_radius,
+            } => Drag::Torque([
+                (recess_radius, outer_radius),
+                (recess_radius, recess_radius),
+            ]),
+            Geometry::Annular {
+                inner_radius,
+                recess_inner_radius,
+                recess_outer_radius,
+                outer_radius,
+            } => Drag::Torque([
+                (inner_radius, recess_inner_radius),
+                (recess_outer_radius, outer_radius),
+            ]),
             Geometry::Rectangular {
                 recess_length: b,
                 recess_width: w,

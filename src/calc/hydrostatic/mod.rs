@@ -6,6 +6,7 @@
 //! - `operating`: a pad at its operating point: the determinate set solved, stiffness, effects;
 //! - `point`: the operating point itself (film, load, pressures, flow);
 //! - `geometry`: A_eff, the flow coefficient and the land drag of each pad kind;
+//! - `lands`: the lands' film law, laminar or with the turbulent slit law;
 //! - `restrictor`: constant flow, capillary, orifice: laws, sizes, optimum pressure ratios;
 //! - `power`: pumping, land friction, temperature rise;
 //! - `optimum`: the circular step's minimum-power recess ratio and film;
@@ -13,6 +14,7 @@
 
 pub mod design;
 pub mod geometry;
+pub mod lands;
 pub mod lift;
 pub mod operating;
 pub mod optimum;

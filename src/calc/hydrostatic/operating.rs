@@ -8,14 +8,15 @@
 //! when nothing ties p_r to the film (constant flow, or a restrictor still to be sized).
 
 use super::geometry::{Drag, Geometry};
+use super::lands::{Film, Lands, Slit};
 use super::point::Point;
-use super::power::{self, Motion, Power};
-use super::restrictor::{self, Kind, Law};
+use super::power::{self, Motion, Power, Shear};
+use super::restrictor::{self, Kind, Law, Pipe};
 use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
 use crate::calc::lubricant::validity;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::numerics::roots::{brent, RootError, Stopping};
+use crate::numerics::roots::{brent, brent_fallible, RootError, Stopping};
 
 /// The two quantities the request fixes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -60,10 +61,20 @@ impl Compensation {
         }
     }
 
-    /// The law at the restrictor's viscosity μ and density ρ.
-    pub fn law(self, mu: f64, rho: f64) -> Law {
+    /// The law at the restrictor's viscosity μ and density ρ; a capillary with `turbulent` is a
+    /// [`Pipe`] (the larger of the laminar and turbulent drops).
+    pub fn law(self, mu: f64, rho: f64, turbulent: bool) -> Law {
         match self {
             Compensation::ConstantFlow => Law::Direct,
+            Compensation::Capillary {
+                radius,
+                sizing: Sizing::Given(length),
+            } if turbulent => Law::Pipe(Pipe {
+                radius,
+                length,
+                mu,
+                rho,
+            }),
             Compensation::Capillary {
                 radius,
                 sizing: Sizing::Given(length),
@@ -88,16 +99,8 @@ impl Compensation {
     }
 }
 
-/// The film's two constants at one viscosity.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub struct Film {
-    /// A_eff, m².
-    pub area: f64,
-    /// c₂ = B̄/μ, m/(Pa·s): Q = c₂ h³ p_r.
-    pub c2: f64,
-}
-
-/// The point where `known` holds, in closed form. Refusals name the request field at fault.
+/// The point where `known` holds on laminar lands, in closed form (a turbulent capillary at a
+/// given film and supply pressure by [`solve_lands`]). Refusals name the request field at fault.
 pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
     let Film { area, c2 } = film;
     let film_for = |q: f64, pr: f64| (q / (c2 * pr)).cbrt();
@@ -120,54 +123,21 @@ pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
                 // The positive root of c₂²h⁶p_r² + k²p_r − k²p_s = 0 (Eq. 10.32–10.33), in the
                 // form without cancellation when the orifice is large.
                 Law::Root(k) => 2.0 * k * k * ps / (k * k + k * (k * k + 4.0 * a * a * ps).sqrt()),
+                Law::Pipe(_) => return solve_lands(&Lands::Laminar(film), law, known),
             };
             (h, pr, a * pr, Some(ps))
         }
         Known::LoadSupply(w, ps) => {
             let pr = w / area;
-            let q = match law {
-                Law::Linear(k) | Law::Root(k) if pr < ps => {
-                    let drop = ps - pr;
-                    if let Law::Linear(_) = law {
-                        k * drop
-                    } else {
-                        k * drop.sqrt()
-                    }
-                }
-                Law::Linear(_) | Law::Root(_) => {
-                    return Err(CalcError::impossible(
-                        "/load_n",
-                        format!(
-                            "the load needs a recess pressure W/A_eff = {pr:.6e} Pa, not below the supply pressure {ps:.6e} Pa: no film carries it"
-                        ),
-                    ))
-                }
-                Law::Direct | Law::Ratio(_) => {
-                    return Err(CalcError::impossible(
-                        "/supply_pressure_pa",
-                        "load and supply pressure are tied by W = A_eff·m·p_s whatever the film: give film_m or flow_m3_s instead of one of them",
-                    ))
-                }
-            };
+            tied_by_supply(law)?;
+            if pr >= ps {
+                return Err(beyond_supply(pr, ps));
+            }
+            let q = law.flow(ps - pr).unwrap_or(0.0);
             (film_for(q, pr), pr, q, Some(ps))
         }
         Known::SupplyFlow(ps, q) => {
-            let pr = match law {
-                Law::Direct => ps,
-                Law::Ratio(m) => m * ps,
-                Law::Linear(_) | Law::Root(_) => {
-                    let drop = law.drop(q).unwrap_or(0.0);
-                    if drop >= ps {
-                        return Err(CalcError::impossible(
-                            "/flow_m3_s",
-                            format!(
-                                "the restrictor alone drops {drop:.6e} Pa at this flow, not less than the supply pressure {ps:.6e} Pa"
-                            ),
-                        ));
-                    }
-                    ps - drop
-                }
-            };
+            let pr = recess_at_flow(law, ps, q)?;
             (film_for(q, pr), pr, q, Some(ps))
         }
     };
@@ -182,6 +152,167 @@ pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
         recess: pr,
         flow: q,
     })
+}
+
+/// Load with supply pressure fixes nothing when p_r is tied to p_s (constant flow, or a
+/// restrictor still to be sized).
+fn tied_by_supply(law: Law) -> Result<(), CalcError> {
+    match law {
+        Law::Direct | Law::Ratio(_) => Err(CalcError::impossible(
+            "/supply_pressure_pa",
+            "load and supply pressure are tied by W = A_eff·m·p_s whatever the film: give film_m or flow_m3_s instead of one of them",
+        )),
+        _ => Ok(()),
+    }
+}
+
+/// A load whose recess pressure W/A_eff is not below the supply pressure.
+fn beyond_supply(pr: f64, ps: f64) -> CalcError {
+    CalcError::impossible(
+        "/load_n",
+        format!(
+            "the load needs a recess pressure W/A_eff = {pr:.6e} Pa, not below the supply pressure {ps:.6e} Pa: no film carries it"
+        ),
+    )
+}
+
+/// p_r behind the restrictor at supply pressure p_s and flow Q.
+fn recess_at_flow(law: Law, ps: f64, q: f64) -> Result<f64, CalcError> {
+    match law {
+        Law::Direct => Ok(ps),
+        Law::Ratio(m) => Ok(m * ps),
+        _ => {
+            let drop = law.drop(q).unwrap_or(0.0);
+            if drop >= ps {
+                return Err(CalcError::impossible(
+                    "/flow_m3_s",
+                    format!(
+                        "the restrictor alone drops {drop:.6e} Pa at this flow, not less than the supply pressure {ps:.6e} Pa"
+                    ),
+                ));
+            }
+            Ok(ps - drop)
+        }
+    }
+}
+
+/// The method name of the roots on turbulent lands.
+const TURBULENT_ROOTS: &str = "hydrostatic_turbulent_film";
+
+/// Brent to round-off relative to the root (a recess pressure of a thousandth of the supply's
+/// still gets all its digits), a root error named for this room.
+fn root_of(f: impl FnMut(f64) -> Result<f64, RootError>, a: f64, b: f64) -> Result<f64, CalcError> {
+    let stop = Stopping {
+        x_tolerance: f64::MIN_POSITIVE,
+        max_iterations: 200,
+    };
+    brent_fallible(f, a, b, stop)
+        .map(|root| root.x)
+        .map_err(|e| CalcError::from_root(TURBULENT_ROOTS, e))
+}
+
+/// The point where `known` holds on any lands: [`solve`]'s closed forms on laminar lands with a
+/// laminar restrictor, else bracketed Brent roots of monotone balances (W rises with p_r at a
+/// film; the lands' flow rises and the restrictor's falls with p_r at a supply pressure).
+pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcError> {
+    if let (Lands::Laminar(film), false) = (lands, matches!(law, Law::Pipe(_))) {
+        return solve(*film, law, known);
+    }
+    let failed = |e: RootError| CalcError::from_root(TURBULENT_ROOTS, e);
+    // (h, p_r, Q, given p_s, A_eff)
+    let (h, pr, q, ps, area) = match known {
+        Known::FilmFlow(h, q) => {
+            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            (h, s / h.powi(3), q, None, area)
+        }
+        Known::LoadFlow(w, q) => {
+            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            let pr = w / area;
+            ((s / pr).cbrt(), pr, q, None, area)
+        }
+        Known::FilmLoad(h, w) => {
+            let h3 = h.powi(3);
+            let excess = |pr: f64| lands.at(pr * h3).map(|(_, area)| area * pr - w);
+            // W/A_eff at no flow, doubled until the load is passed (A_eff moves by far less).
+            let mut hi = w / lands.at(0.0).map_err(failed)?.1;
+            while excess(hi).map_err(failed)? <= 0.0 && hi.is_finite() {
+                hi *= 2.0;
+            }
+            let pr = root_of(excess, 0.0, hi)?;
+            let (q, area) = lands.at(pr * h3).map_err(failed)?;
+            (h, pr, q, None, area)
+        }
+        Known::FilmSupply(h, ps) => {
+            let s_at = |t: f64| t * ps * h.powi(3);
+            let t = match law {
+                Law::Direct => 1.0,
+                Law::Ratio(m) => m,
+                _ => root_of(
+                    |t| {
+                        let restrictor = law.flow((1.0 - t) * ps).unwrap_or(0.0);
+                        lands.at(s_at(t)).map(|(q, _)| q - restrictor)
+                    },
+                    0.0,
+                    1.0,
+                )?,
+            };
+            let (q, area) = lands.at(s_at(t)).map_err(failed)?;
+            (h, t * ps, q, Some(ps), area)
+        }
+        Known::LoadSupply(w, ps) => {
+            tied_by_supply(law)?;
+            let still = lands.at(0.0).map_err(failed)?.1;
+            if w / still >= ps {
+                return Err(beyond_supply(w / still, ps));
+            }
+            let at_recess = |pr: f64| {
+                let q = law.flow(ps - pr).unwrap_or(0.0);
+                lands.at_flow(q).map(|(s, area)| (q, s, area))
+            };
+            let pr = root_of(
+                |pr| at_recess(pr).map(|(_, _, area)| area * pr - w),
+                0.0,
+                ps,
+            )?;
+            let (q, s, area) = at_recess(pr).map_err(failed)?;
+            ((s / pr).cbrt(), pr, q, Some(ps), area)
+        }
+        Known::SupplyFlow(ps, q) => {
+            let pr = recess_at_flow(law, ps, q)?;
+            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            ((s / pr).cbrt(), pr, q, Some(ps), area)
+        }
+    };
+    let supply = ps.unwrap_or_else(|| match law {
+        Law::Ratio(m) => pr / m,
+        other => pr + other.drop(q).unwrap_or(0.0),
+    });
+    Ok(Point {
+        film: h,
+        load: area * pr,
+        supply,
+        recess: pr,
+        flow: q,
+    })
+}
+
+/// −dW/dh at fixed supply pressure through the restrictor as built, on any lands: the closed
+/// form on laminar lands with a laminar restrictor; at constant flow 3W/h (Q fixes s = h³p_r and
+/// so A_eff); else central differences of the film-and-supply solve (step 1e-4 h: truncation
+/// ~1e-8, the roots' round-off ~1e-10).
+fn stiffness_on(lands: &Lands, law: Law, kind: Kind, point: &Point) -> Result<f64, CalcError> {
+    match (lands, law) {
+        (_, Law::Direct) | (Lands::Laminar(_), Law::Linear(_) | Law::Root(_)) => {
+            Ok(stiffness(kind, point))
+        }
+        _ => {
+            let dh = 1e-4 * point.film;
+            let load = |h: f64| {
+                solve_lands(lands, law, Known::FilmSupply(h, point.supply)).map(|p| p.load)
+            };
+            Ok((load(point.film - dh)? - load(point.film + dh)?) / (2.0 * dh))
+        }
+    }
 }
 
 /// −dW/dh at fixed supply pressure (fixed flow for constant flow): (3W/h) × the restrictor's
@@ -235,9 +366,11 @@ pub struct Operating {
     pub stiffness: f64,
     pub power: Power,
     pub restrictor: Restrictor,
-    /// ρ Q h̄/(μ …): the land film's Reynolds number (the larger of the pressure flow's at the
-    /// recess edge and the shear flow's at the fastest edge).
-    pub land_reynolds_number: Option<f64>,
+    /// The lands' pressure flow's Reynolds number at the recess edge, 2ρQ/(μ × its length)
+    /// (hydraulic diameter 2h; None for chart factors).
+    pub land_pressure_flow_reynolds_number: Option<f64>,
+    /// The lands' shear flow's film Reynolds number ρUh/μ at the fastest edge.
+    pub land_shear_reynolds_number: Option<f64>,
     /// Where the film's viscosity is taken, °C, and that viscosity, Pa·s.
     pub film_temperature_c: f64,
     pub film_viscosity_pa_s: f64,
@@ -246,6 +379,8 @@ pub struct Operating {
     pub inlet_density_kg_m3: f64,
     /// Evaluations of the pad in the thermal root (0: closed form, no search).
     pub thermal_evaluations: u32,
+    /// Whether the turbulent laws were applied (the point then comes from Brent roots).
+    pub turbulent: bool,
     pub notes: Notes,
 }
 
@@ -260,57 +395,87 @@ pub const ORIFICE_LOW_REYNOLDS: f64 = 100.0;
 /// Above this recess-to-supply ratio a restrictor drops almost nothing: a capillary's or an
 /// orifice's pad keeps less than a tenth of the stiffness it has at the optimum ratio.
 pub const INEFFECTIVE_RESTRICTOR_RATIO: f64 = 0.95;
-/// Thin-film transition to turbulence, film Reynolds number (Khonsari & Booser §7.11's lower
-/// bound, 580–800).
-pub const LAND_REYNOLDS_LIMIT: f64 = 580.0;
+/// Laminar limit of a slit's pressure flow, Reynolds number on the hydraulic diameter 2h
+/// (Khonsari & Booser §16.1).
+pub const LAND_PRESSURE_FLOW_REYNOLDS_LIMIT: f64 = 2000.0;
+/// Thin-film transition to turbulence under a moving surface, film Reynolds number ρUh/μ
+/// (Khonsari & Booser §7.11's lower bound, 580–800).
+pub const LAND_SHEAR_REYNOLDS_LIMIT: f64 = 580.0;
 /// The thermal effect applies (auto) when the isothermal rise lowers μ by more than this.
 pub const THERMAL_VISCOSITY_DROP: f64 = 0.05;
 
-/// The pad at temperature `t_film` (the film's viscosity) with the restrictor at the inlet.
-fn at(case: &Case, t_film: f64) -> Result<Operating, CalcError> {
+/// How the flow is modelled: laminar everywhere, or the turbulent effect applied (the
+/// capillary a [`Pipe`], the lands' pressure flow by the slit law, their shear by Ng–Pan).
+#[derive(Debug, Clone, Copy, PartialEq, Eq)]
+enum Regime {
+    Laminar,
+    Turbulent,
+}
+
+/// The pad at temperature `t_film` (the film's viscosity and density) with the restrictor at the
+/// inlet.
+fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
     let lub = &case.lubricant;
     let (mu_in, rho) = (lub.viscosity_pa_s(t_in), lub.density_kg_m3(t_in));
-    let mu = lub.viscosity_pa_s(t_film);
+    let (mu, rho_film) = (lub.viscosity_pa_s(t_film), lub.density_kg_m3(t_film));
     let cp = lub.specific_heat_j_kg_k(t_in);
-    let flow_coefficient = case.geometry.flow_coefficient();
-    let film = Film {
-        area: case.geometry.effective_area(),
-        c2: flow_coefficient / mu,
+    let turbulent = regime == Regime::Turbulent;
+    let lands = if turbulent {
+        case.geometry.turbulent_lands(Slit { mu, rho: rho_film })
+    } else {
+        case.geometry.laminar_lands(mu)
     };
-    let law = case.compensation.law(mu_in, rho);
-    let point = solve(film, law, case.known)?;
+    let law = case.compensation.law(mu_in, rho, turbulent);
+    let point = solve_lands(&lands, law, case.known)?;
     let kind = case.compensation.kind();
     // The restrictor's own law gives its drop without the cancellation of p_s − p_r near m = 1.
     let drop = law.drop(point.flow).unwrap_or(point.supply - point.recess);
-    let restrictor = match case.compensation {
-        Compensation::ConstantFlow => Restrictor {
-            kind,
-            radius: None,
-            length: None,
-            discharge_coefficient: None,
-            conductance: None,
-            pressure_drop: 0.0,
-            mean_velocity: None,
-            reynolds_number: None,
-        },
+    let (restrictor, built) = match case.compensation {
+        Compensation::ConstantFlow => (
+            Restrictor {
+                kind,
+                radius: None,
+                length: None,
+                discharge_coefficient: None,
+                conductance: None,
+                pressure_drop: 0.0,
+                mean_velocity: None,
+                reynolds_number: None,
+            },
+            Law::Direct,
+        ),
         Compensation::Capillary { radius, sizing } => {
             let conductance = point.flow / drop;
             let length = match sizing {
                 Sizing::Given(l) => l,
+                Sizing::Ratio(_) if turbulent => {
+                    restrictor::pipe_length(point.flow, drop, radius, rho, mu_in)
+                }
                 Sizing::Ratio(_) => restrictor::capillary_length(radius, conductance, mu_in),
             };
             let (u, re) = restrictor::bore_flow(point.flow, radius, rho, mu_in);
-            Restrictor {
-                kind,
-                radius: Some(radius),
-                length: Some(length),
-                discharge_coefficient: None,
-                conductance: Some(conductance),
-                pressure_drop: drop,
-                mean_velocity: Some(u),
-                reynolds_number: Some(re),
-            }
+            let built = match sizing {
+                Sizing::Given(_) => law,
+                Sizing::Ratio(_) => Compensation::Capillary {
+                    radius,
+                    sizing: Sizing::Given(length),
+                }
+                .law(mu_in, rho, turbulent),
+            };
+            (
+                Restrictor {
+                    kind,
+                    radius: Some(radius),
+                    length: Some(length),
+                    discharge_coefficient: None,
+                    conductance: Some(conductance),
+                    pressure_drop: drop,
+                    mean_velocity: Some(u),
+                    reynolds_number: Some(re),
+                },
+                built,
+            )
         }
         Compensation::Orifice {
             discharge_coefficient,
@@ -323,61 +488,77 @@ fn at(case: &Case, t_film: f64) -> Result<Operating, CalcError> {
                 }
             };
             let (u, re) = restrictor::bore_flow(point.flow, radius, rho, mu_in);
-            Restrictor {
-                kind,
-                radius: Some(radius),
-                length: None,
-                discharge_coefficient: Some(discharge_coefficient),
-                conductance: Some(restrictor::orifice_coefficient(
-                    radius,
-                    discharge_coefficient,
-                    rho,
-                )),
-                pressure_drop: drop,
-                mean_velocity: Some(u),
-                reynolds_number: Some(re),
-            }
+            let coefficient = restrictor::orifice_coefficient(radius, discharge_coefficient, rho);
+            (
+                Restrictor {
+                    kind,
+                    radius: Some(radius),
+                    length: None,
+                    discharge_coefficient: Some(discharge_coefficient),
+                    conductance: Some(coefficient),
+                    pressure_drop: drop,
+                    mean_velocity: Some(u),
+                    reynolds_number: Some(re),
+                },
+                Law::Root(coefficient),
+            )
         }
     };
+    let shear = if turbulent {
+        Shear::Turbulent { rho: rho_film }
+    } else {
+        Shear::Laminar
+    };
+    let friction = power::friction(case.geometry.drag(), case.motion, point.film, mu, shear);
     let power = power::of(
-        case.geometry.drag(),
+        friction,
         &point,
-        mu,
         case.motion,
         case.pump_efficiency,
         rho * cp,
     );
-    let land_reynolds_number = case.geometry.recess_perimeter().map(|perimeter| {
-        let pressure_flow = rho * point.flow / (mu * perimeter);
-        let shear_speed = match (case.motion, case.geometry.outer_radius()) {
-            (Motion::Rotating { omega }, Some(r)) => omega * r,
-            (Motion::Sliding { speed }, _) => speed,
-            _ => 0.0,
-        };
-        pressure_flow.max(rho * shear_speed * point.film / mu)
-    });
+    let shear_speed = match (case.motion, case.geometry.outer_radius()) {
+        (Motion::Rotating { omega }, Some(r)) => omega * r,
+        (Motion::Sliding { speed }, _) => speed,
+        _ => 0.0,
+    };
+    let perimeter = case.geometry.recess_perimeter();
     Ok(Operating {
-        stiffness: stiffness(kind, &point),
+        stiffness: stiffness_on(&lands, built, kind, &point)?,
+        effective_area: point.load / point.recess,
+        flow_coefficient: point.flow * mu / (point.film.powi(3) * point.recess),
         point,
-        effective_area: film.area,
-        flow_coefficient,
         power,
         restrictor,
-        land_reynolds_number,
+        land_pressure_flow_reynolds_number: perimeter
+            .map(|perimeter| 2.0 * rho_film * point.flow / (mu * perimeter)),
+        land_shear_reynolds_number: perimeter.map(|_| rho_film * shear_speed * point.film / mu),
         film_temperature_c: t_film,
         film_viscosity_pa_s: mu,
         inlet_viscosity_pa_s: mu_in,
         inlet_density_kg_m3: rho,
         thermal_evaluations: 0,
+        turbulent,
         notes: Notes::default(),
     })
 }
 
-/// The pad at its operating point, the thermal effect decided (and solved as a root in the
-/// film temperature where it applies), turbulence decided, warnings noted.
+/// The pad at its operating point: turbulence decided on the laminar isothermal point (and the
+/// turbulent laws applied where it holds), then the thermal effect decided (and solved as a root
+/// in the film temperature where it applies), warnings noted.
 pub fn operate(case: &Case) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
-    let isothermal = at(case, t_in)?;
+    let laminar = at(case, t_in, Regime::Laminar)?;
+    let turbulence = decide_turbulence(case, &laminar);
+    let regime = if turbulence.applied {
+        Regime::Turbulent
+    } else {
+        Regime::Laminar
+    };
+    let isothermal = match regime {
+        Regime::Laminar => laminar,
+        Regime::Turbulent => at(case, t_in, regime)?,
+    };
     let constant = matches!(
         case.lubricant.temperature_law,
         TemperatureLaw::Constant { .. }
@@ -412,7 +593,7 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
         );
         decision.model = Some("mean_film_temperature");
         if decision.applied {
-            let mut op = thermal_root(case, rise)?;
+            let mut op = thermal_root(case, rise, regime)?;
             op.notes.decide("thermal", decision);
             op
         } else {
@@ -421,21 +602,21 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
             op
         }
     };
-    decide_turbulence(case, &mut op);
-    warn(case, &mut op);
+    op.notes.decide("turbulence", turbulence);
+    warn(case, &mut op, regime);
     Ok(op)
 }
 
 /// T such that T = T_in + ΔT(μ(T))/2. ΔT falls as the film warms (the flow rises and the
 /// shear falls with μ), so the root lies in [T_in, T_in + ΔT_iso/2].
-fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
+fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
     let hi = (t_in + 0.5 * rise).min(crate::calc::quantity::Celsius::MAX);
     let mut failure = None;
     let mut evaluations = 0;
     let mut residual = |t: f64| {
         evaluations += 1;
-        match at(case, t) {
+        match at(case, t, regime) {
             Ok(op) => t - t_in - 0.5 * op.power.temperature_rise,
             Err(e) => {
                 failure.get_or_insert(e);
@@ -452,7 +633,7 @@ fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
         return Err(e);
     }
     match root {
-        Ok(root) => at(case, root.x).map(|op| Operating {
+        Ok(root) => at(case, root.x, regime).map(|op| Operating {
             thermal_evaluations: evaluations + 1,
             ..op
         }),
@@ -466,39 +647,32 @@ fn thermal_root(case: &Case, rise: f64) -> Result<Operating, CalcError> {
     }
 }
 
-fn decide_turbulence(case: &Case, op: &mut Operating) {
-    let capillary = match (op.restrictor.kind, op.restrictor.reynolds_number) {
+/// Turbulence: the largest of the capillary's Reynolds number over 2000, the lands' pressure
+/// flow's (hydraulic diameter 2h, at the recess edge) over 2000 and their shear's (ρUh/μ at the
+/// fastest edge) over 580, on the laminar point, against 1.
+fn decide_turbulence(case: &Case, laminar: &Operating) -> Decision {
+    let capillary = match (laminar.restrictor.kind, laminar.restrictor.reynolds_number) {
         (Kind::Capillary, Some(re)) => re / CAPILLARY_REYNOLDS_LIMIT,
         _ => 0.0,
     };
-    let land = op.land_reynolds_number.unwrap_or(0.0) / LAND_REYNOLDS_LIMIT;
-    let decision = Decision::decide(
+    let pressure = laminar.land_pressure_flow_reynolds_number.unwrap_or(0.0)
+        / LAND_PRESSURE_FLOW_REYNOLDS_LIMIT;
+    let shear = laminar.land_shear_reynolds_number.unwrap_or(0.0) / LAND_SHEAR_REYNOLDS_LIMIT;
+    let mut decision = Decision::decide(
         case.effects.turbulence,
         Criterion {
             name: "reynolds_number_over_transition",
-            value: capillary.max(land),
+            value: capillary.max(pressure).max(shear),
             threshold: 1.0,
         },
-        "turbulence (capillary Re against 2000, land film Re against 580)",
+        "turbulence (capillary Re against 2000, land pressure flow Re_2h against 2000, land shear Re_h against 580)",
     );
-    // The texts give only the laminar limits, no turbulent law for restrictor or lands: an
-    // `auto` above the limit is reported (with a warning), never silently modelled.
-    let decision = if decision.applied {
-        Decision {
-            applied: false,
-            reason: format!(
-                "{}; the texts give no turbulent law for hydrostatic restrictors or lands: the laminar result stands, see the warnings",
-                decision.reason
-            ),
-            ..decision
-        }
-    } else {
-        decision
-    };
-    op.notes.decide("turbulence", decision);
+    decision.model = Some("larger_loss_of_laminar_and_turbulent");
+    decision
 }
 
-fn warn(case: &Case, op: &mut Operating) {
+fn warn(case: &Case, op: &mut Operating, regime: Regime) {
+    let laminar = regime == Regime::Laminar;
     let notes = &mut op.notes;
     // Density enters the temperature rise and the restrictor's Reynolds number: every
     // assumption is the pad's.
@@ -511,7 +685,7 @@ fn warn(case: &Case, op: &mut Operating) {
     let r = &op.restrictor;
     match (r.kind, r.reynolds_number) {
         (Kind::Capillary, Some(re)) => {
-            if re > CAPILLARY_REYNOLDS_LIMIT {
+            if laminar && re > CAPILLARY_REYNOLDS_LIMIT {
                 notes.warn(
                     "restrictor_not_laminar",
                     format!("capillary Reynolds number {re:.4e} exceeds {CAPILLARY_REYNOLDS_LIMIT} (Stachowiak & Batchelor; Khonsari & Booser allow 2500): Hagen–Poiseuille overstates its flow"),
@@ -522,7 +696,7 @@ fn warn(case: &Case, op: &mut Operating) {
                 if ld < CAPILLARY_MIN_L_OVER_D {
                     notes.warn(
                         "capillary_short",
-                        format!("capillary l/d = {ld:.4e} is below {CAPILLARY_MIN_L_OVER_D}: entry losses make Hagen–Poiseuille inexact"),
+                        format!("capillary l/d = {ld:.4e} is below {CAPILLARY_MIN_L_OVER_D}: entry losses, which the pipe laws leave out, make its drop inexact"),
                     );
                 }
             }
@@ -537,16 +711,33 @@ fn warn(case: &Case, op: &mut Operating) {
     if r.kind != Kind::ConstantFlow && m > INEFFECTIVE_RESTRICTOR_RATIO {
         notes.warn(
             "restrictor_ineffective",
-            format!("the restrictor drops only {:.4e} of the supply pressure (recess over supply {m:.6}): the pad's stiffness, {:.4e} of 3W/h, vanishes as the ratio reaches 1; a narrower restrictor (or `pressure_ratio` to design one) restores it", 1.0 - m, r.kind.stiffness_factor(m)),
+            format!("the restrictor drops only {:.4e} of the supply pressure (recess over supply {m:.6}): the pad's stiffness, {:.4e} of 3W/h, vanishes as the ratio reaches 1; a narrower restrictor (or `pressure_ratio` to design one) restores it", 1.0 - m, op.stiffness * op.point.film / (3.0 * op.point.load)),
         );
     }
-    if let Some(re) = op
-        .land_reynolds_number
-        .filter(|&re| re > LAND_REYNOLDS_LIMIT)
-    {
+    let pressure_re = op.land_pressure_flow_reynolds_number.unwrap_or(0.0);
+    let shear_re = op.land_shear_reynolds_number.unwrap_or(0.0);
+    if laminar && pressure_re > LAND_PRESSURE_FLOW_REYNOLDS_LIMIT {
         notes.warn(
             "land_flow_not_laminar",
-            format!("land film Reynolds number {re:.4e} exceeds {LAND_REYNOLDS_LIMIT}: the laminar film law overstates the flow and understates the friction"),
+            format!("the lands' pressure flow has Reynolds number {pressure_re:.4e} (hydraulic diameter 2h) at the recess edge, above {LAND_PRESSURE_FLOW_REYNOLDS_LIMIT}: the laminar film law overstates the flow"),
+        );
+    }
+    if laminar && shear_re > LAND_SHEAR_REYNOLDS_LIMIT {
+        notes.warn(
+            "land_shear_not_laminar",
+            format!("the lands' shear flow has film Reynolds number {shear_re:.4e}, above {LAND_SHEAR_REYNOLDS_LIMIT}: the laminar friction is understated"),
+        );
+    }
+    if !laminar && shear_re > LAND_SHEAR_REYNOLDS_LIMIT {
+        notes.warn(
+            "shear_turbulence_on_flow_not_modelled",
+            format!("the lands' shear flow is turbulent (film Reynolds number {shear_re:.4e}): its friction is Ng–Pan's, but the resistance it adds to the pressure flow (Ng–Pan's G_x, G_y) is not modelled, so the flow is overstated"),
+        );
+    }
+    if !laminar && matches!(case.geometry, Geometry::PerformanceFactors { .. }) {
+        notes.warn(
+            "turbulent_lands_not_modelled",
+            "performance factors are laminar charts: turbulence is applied to the capillary only",
         );
     }
     if let Some(land) = case.geometry.narrowest_land() {

@@ -181,12 +181,17 @@ pub struct HydrostaticEffects {
     /// lowers the film viscosity by more than 5 %. Not applicable to a constant viscosity.
     #[serde(default)]
     pub thermal: Mode,
-    /// Turbulence in the capillary (Reynolds number against 2000, Stachowiak & Batchelor §6.4;
-    /// Khonsari & Booser allow 2500) and on the lands (film Reynolds number, the larger of the
-    /// pressure flow's at the recess edge and the shear flow's at the fastest edge, against 580,
-    /// Khonsari & Booser §7.11). The texts give the laminar limits only: reported, with a
-    /// warning above the limit; `on` is refused. (Inertia at the recess edge: the texts give no
-    /// model, so the pad does not offer it.)
+    /// Turbulence in the capillary and on the lands, decided on the laminar point: the
+    /// capillary's Reynolds number against 2000 (Stachowiak & Batchelor §6.4; Khonsari & Booser
+    /// allow 2500), the lands' pressure flow's at the recess edge (hydraulic diameter 2h) against
+    /// 2000 (Khonsari & Booser §16.1) and their shear's (ρUh/μ at the fastest edge) against 580
+    /// (§7.11). Applied, every element takes the larger loss of its laminar and turbulent laws
+    /// (§7.11's rule; model `larger_loss_of_laminar_and_turbulent`): the capillary Khonsari &
+    /// Booser's turbulent line loss (Eq. 2.36, Darcy f = 0.184 Re^−0.2), the lands' pressure flow
+    /// the slit law (Eq. 16.2), their shear Ng–Pan's G_f (Eq. 6.30). Chart-factor pads keep
+    /// laminar lands. `on` applies the laws at any Reynolds number (where laminar flow has the
+    /// larger loss they are the laminar closed forms). (Inertia at the recess edge: the texts
+    /// give no model, so the pad does not offer it.)
     #[serde(default)]
     pub turbulence: Mode,
 }
@@ -726,12 +731,6 @@ impl Validate for HydrostaticPadInput {
                 format!("must be within (0, 1], got {eta}"),
             ));
         }
-        if self.effects.turbulence == Mode::On {
-            errors.push(FieldError::new(
-                "/effects/turbulence",
-                "the texts give no turbulent law for hydrostatic restrictors or lands (only the laminar limits): use auto or off",
-            ));
-        }
         let lubricant = match self.lubricant.parse("/lubricant") {
             Ok(l) => Some(l),
             Err(mut e) => {
@@ -868,10 +867,15 @@ pub struct HydrostaticPadOutput {
     pub film_temperature_c: f64,
     /// The film's viscosity, Pa·s.
     pub viscosity_pa_s: f64,
-    /// The lands' film Reynolds number (the larger of the pressure flow's at the recess edge and
-    /// the shear flow's), dimensionless; absent for performance factors.
+    /// The lands' pressure flow's Reynolds number at the recess edge, 2ρQ/(μ × the edge's
+    /// length) (hydraulic diameter 2h; laminar below 2000), dimensionless; absent for
+    /// performance factors.
     #[serde(skip_serializing_if = "Option::is_none")]
-    pub land_reynolds_number: Option<f64>,
+    pub land_pressure_flow_reynolds_number: Option<f64>,
+    /// The lands' shear flow's film Reynolds number ρUh/μ at the fastest edge (laminar below
+    /// 580), dimensionless; absent for performance factors.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub land_shear_reynolds_number: Option<f64>,
     pub restrictor: HydrostaticRestrictorResult,
     pub performance_factors: HydrostaticPerformanceFactors,
 }
@@ -906,7 +910,8 @@ impl HydrostaticPadOutput {
             temperature_rise_k: op.power.temperature_rise,
             film_temperature_c: op.film_temperature_c,
             viscosity_pa_s: op.film_viscosity_pa_s,
-            land_reynolds_number: op.land_reynolds_number,
+            land_pressure_flow_reynolds_number: op.land_pressure_flow_reynolds_number,
+            land_shear_reynolds_number: op.land_shear_reynolds_number,
             restrictor: HydrostaticRestrictorResult {
                 kind: r.kind.name(),
                 designed: false,
@@ -959,7 +964,8 @@ impl HydrostaticPadOutput {
         ];
         v.extend(
             [
-                self.land_reynolds_number,
+                self.land_pressure_flow_reynolds_number,
+                self.land_shear_reynolds_number,
                 r.radius_m,
                 r.length_m,
                 r.length_to_diameter,
@@ -1029,10 +1035,15 @@ impl Calculation for HydrostaticPad {
             }
         );
         // A closed form, or with the thermal effect a Brent root in the film temperature whose
-        // every evaluation is the whole closed form.
-        ctx.report(match op.thermal_evaluations {
-            0 => SolverReport::closed_form("hydrostatic_closed_form"),
-            n => SolverReport::closed_form_search("hydrostatic_closed_form_thermal_brent", n),
+        // every evaluation is the whole closed form; turbulent, the point is itself a Brent root
+        // of closed-form laws.
+        ctx.report(match (op.thermal_evaluations, op.turbulent) {
+            (0, false) => SolverReport::closed_form("hydrostatic_closed_form"),
+            (0, true) => SolverReport::closed_form("hydrostatic_turbulent_brent"),
+            (n, false) => {
+                SolverReport::closed_form_search("hydrostatic_closed_form_thermal_brent", n)
+            }
+            (n, true) => SolverReport::closed_form_search("hydrostatic_turbulent_thermal_brent", n),
         });
         if out.numbers().iter().any(|v| !v.is_finite()) {
             return Err(CalcError::impossible(
@@ -1047,3 +1058,7 @@ impl Calculation for HydrostaticPad {
 #[cfg(test)]
 #[path = "tests.rs"]
 mod tests;
+
+#[cfg(test)]
+#[path = "turbulent_tests.rs"]
+mod turbulent_tests;

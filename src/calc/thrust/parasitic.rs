@@ -13,13 +13,12 @@ use utoipa::ToSchema;
 
 use crate::calc::lubricant::{validity, Lubricant, LubricantSpec};
 use crate::calc::quantity::{Celsius, Positive};
+use crate::calc::turbulence::surface_drag_friction_factor;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::fidelity::Level;
 
 pub struct ParasiticLosses;
 
-/// Eq. 7.18's coefficient: f = 0.016/Re^0.25, simple hydraulic drag on an exposed surface.
-const DRAG_COEFFICIENT: f64 = 0.016;
 /// Below this Reynolds number the flow in a gap is not the turbulent channel flow Eq. 7.18
 /// describes (the 2000 of channel flow; the texts' laminar thrust films turn turbulent at
 /// 580–1200 on a pad's own scale).
@@ -300,13 +299,8 @@ impl Oil {
 
     /// Drag power per unit area at surface speed V over gap h: f(ρV²/2)V with Eq. 7.18's f.
     fn drag_per_area(self, speed: f64, gap: f64) -> f64 {
-        friction_factor(self.reynolds(speed, gap)) * 0.5 * self.density * speed.powi(3)
+        surface_drag_friction_factor(self.reynolds(speed, gap)) * 0.5 * self.density * speed.powi(3)
     }
-}
-
-/// Eq. 7.18: f = 0.016/Re^0.25.
-fn friction_factor(re: f64) -> f64 {
-    DRAG_COEFFICIENT / re.powf(0.25)
 }
 
 impl Surface {
@@ -321,7 +315,7 @@ impl Surface {
                     kind: "rim",
                     surface_speed_m_s: speed,
                     reynolds_number: re,
-                    friction_factor: friction_factor(re),
+                    friction_factor: surface_drag_friction_factor(re),
                     area_m2: area,
                     power_w: oil.drag_per_area(speed, gap) * area,
                 }
@@ -336,7 +330,7 @@ impl Surface {
                     kind: "face",
                     surface_speed_m_s: speed,
                     reynolds_number: re,
-                    friction_factor: friction_factor(re),
+                    friction_factor: surface_drag_friction_factor(re),
                     area_m2: PI * (outer * outer - inner * inner),
                     power_w: oil.drag_per_area(speed, gap) * 2.0 * PI * integral / outer.powf(2.75),
                 }

@@ -1,0 +1,224 @@
+//! The turbulence effect: where the flow is laminar the turbulent laws are the closed forms;
+//! on turbulent lands every determinate set gives the same point; fully turbulent lands against
+//! their own closed forms (Eq. 16.2 integrated over a radial land) and a stiffness derived from
+//! them; turbulence raises the resistance and the friction, as Khonsari & Booser §7.11 says.
+
+use serde_json::{json, Value};
+
+use super::super::geometry::Geometry;
+use super::super::lands::Slit;
+use super::super::operating::{solve_lands, Known};
+use super::super::restrictor::{Law, Pipe};
+use super::*;
+use crate::calc::testing::{ok, result_field};
+
+const PI: f64 = std::f64::consts::PI;
+
+fn pads() -> [Value; 3] {
+    [
+        json!({"kind": "circular_step", "recess_radius_m": 0.0635, "outer_radius_m": 0.127}),
+        json!({"kind": "annular", "inner_radius_m": 0.03, "recess_inner_radius_m": 0.05, "recess_outer_radius_m": 0.09, "outer_radius_m": 0.12}),
+        json!({"kind": "rectangular", "recess_length_m": 0.1, "recess_width_m": 0.2, "land_width_m": 0.03}),
+    ]
+}
+
+fn turbulence(body: &Value, mode: &str) -> Value {
+    let mut b = body.clone();
+    b["effects"] = json!({"turbulence": mode, "thermal": "off"});
+    ok::<HydrostaticPad>(&b)
+}
+
+/// A viscous oil at a slow speed is laminar in every element: `on` then gives the closed forms
+/// (the roots to 1e-12, the differenced stiffness to 1e-7), for every pad and restrictor.
+#[test]
+fn turbulent_laws_are_the_closed_forms_where_the_flow_is_laminar() {
+    let compensations = [
+        json!({"kind": "constant_flow"}),
+        json!({"kind": "capillary", "radius_m": 5e-4, "length_m": 0.3}),
+        json!({"kind": "capillary", "radius_m": 5e-4, "pressure_ratio": "optimum"}),
+        json!({"kind": "orifice", "radius_m": 2e-4, "discharge_coefficient": 0.6}),
+    ];
+    for pad in pads() {
+        for comp in &compensations {
+            let mut body = json!({
+                "pad": pad, "compensation": comp,
+                "lubricant": {"viscosity_pa_s": 0.05, "density_15c_kg_m3": 870},
+                "film_m": 5e-5,
+            });
+            if pad["kind"] == "rectangular" {
+                body["sliding_speed_m_s"] = json!(0.5);
+            } else {
+                body["speed_rpm"] = json!(60);
+            }
+            if comp["kind"] == "constant_flow" {
+                body["flow_m3_s"] = json!(1e-6);
+            } else {
+                body["supply_pressure_pa"] = json!(2e6);
+            }
+            let (on, off) = (turbulence(&body, "on"), turbulence(&body, "off"));
+            assert!(on["effects"]["turbulence"]["applied"].as_bool().unwrap());
+            for (field, tolerance) in [
+                ("load_n", 1e-12),
+                ("flow_m3_s", 1e-12),
+                ("recess_pressure_pa", 1e-12),
+                ("supply_pressure_pa", 1e-12),
+                ("friction_power_w", 1e-12),
+                ("stiffness_n_m", 1e-7),
+            ] {
+                let (a, b) = (result_field(&on, field), result_field(&off, field));
+                assert!(
+                    (a / b - 1.0).abs() < tolerance,
+                    "{} {}: {field} {a} vs {b}",
+                    pad["kind"],
+                    comp["kind"]
+                );
+            }
+        }
+    }
+}
+
+fn water() -> Slit {
+    Slit {
+        mu: 1e-3,
+        rho: 1000.0,
+    }
+}
+
+/// On turbulent lands (water, Reynolds numbers in the thousands) with a turbulent capillary,
+/// an orifice, constant flow and a ratio: the film-and-supply point solved again from every
+/// other determinate set.
+#[test]
+fn every_determinate_set_gives_the_same_turbulent_point() {
+    let slit = water();
+    let geometries = [
+        Geometry::CircularStep {
+            recess_radius: 0.0635,
+            outer_radius: 0.127,
+        },
+        Geometry::Annular {
+            inner_radius: 0.03,
+            recess_inner_radius: 0.05,
+            recess_outer_radius: 0.09,
+            outer_radius: 0.12,
+        },
+        Geometry::Rectangular {
+            recess_length: 0.1,
+            recess_width: 0.2,
+            land_width: 0.03,
+        },
+    ];
+    let pipe = Law::Pipe(Pipe {
+        radius: 2e-3,
+        length: 0.05,
+        mu: slit.mu,
+        rho: slit.rho,
+    });
+    for g in geometries {
+        let lands = g.turbulent_lands(slit);
+        for law in [Law::Direct, pipe, Law::Root(1e-6), Law::Ratio(0.5)] {
+            let p = solve_lands(&lands, law, Known::FilmSupply(2e-4, 1e6)).unwrap();
+            let re = 2.0 * slit.rho * p.flow / (slit.mu * g.recess_perimeter().unwrap());
+            assert!(re > 2000.0, "{g:?} {law:?}: Re {re}");
+            for known in [
+                Known::FilmLoad(p.film, p.load),
+                Known::FilmFlow(p.film, p.flow),
+                Known::LoadFlow(p.load, p.flow),
+                Known::SupplyFlow(p.supply, p.flow),
+                Known::LoadSupply(p.load, p.supply),
+            ] {
+                if let (Law::Direct | Law::Ratio(_), Known::LoadSupply(..)) = (law, known) {
+                    assert!(solve_lands(&lands, law, known).is_err());
+                    continue;
+                }
+                let q = solve_lands(&lands, law, known).unwrap();
+                for (a, b, what) in [
+                    (q.film, p.film, "film"),
+                    (q.load, p.load, "load"),
+                    (q.supply, p.supply, "supply"),
+                    (q.flow, p.flow, "flow"),
+                    (q.recess, p.recess, "recess"),
+                ] {
+                    assert!(
+                        (a / b - 1.0).abs() < 1e-9,
+                        "{g:?} {law:?} {known:?} {what}: {a} vs {b}"
+                    );
+                }
+            }
+        }
+    }
+}
+
+/// A circular step whose whole land is turbulent (r_t beyond R2) has Eq. 16.2 integrated:
+/// h³p_r = K (Q/2π)^{7/4} (4/3)(R1^{−3/4} − R2^{−3/4}) and
+/// A_eff = π(4/5)(R2^{5/4} − R1^{5/4}) / ((4/3)(R1^{−3/4} − R2^{−3/4})); with Q ∝ (h³p_r)^{4/7}
+/// against an orifice's Q ∝ (p_s − p_r)^{1/2} the stiffness at fixed supply is
+/// (12/7) A_eff / (h (4/(7p_r) + 1/(2(p_s − p_r)))).
+#[test]
+fn fully_turbulent_land_in_closed_form() {
+    let slit = water();
+    let (r1, r2, h) = (0.02_f64, 0.05_f64, 2e-4_f64);
+    let body = json!({
+        "pad": {"kind": "circular_step", "recess_radius_m": r1, "outer_radius_m": r2},
+        "compensation": {"kind": "orifice", "radius_m": 3e-3, "discharge_coefficient": 0.6},
+        "lubricant": {"viscosity_pa_s": slit.mu, "density_15c_kg_m3": slit.rho},
+        "temperature_c": 15,
+        "film_m": h, "supply_pressure_pa": 1e6,
+    });
+    let v = turbulence(&body, "on");
+    let (q, pr, ps) = (
+        result_field(&v, "flow_m3_s"),
+        result_field(&v, "recess_pressure_pa"),
+        result_field(&v, "supply_pressure_pa"),
+    );
+    // Turbulent to the outer edge: q′ = Q/(2πR2) beyond the crossing 1021 μ/ρ.
+    let crossing = (12.0 * SLIT_K.powf(7.0 / 4.0)).powf(4.0 / 3.0) * slit.mu / slit.rho;
+    assert!(q / (2.0 * PI * r2) > crossing, "{q}");
+    let k = slit.rho.powf(0.75) * slit.mu.powf(0.25) / SLIT_K.powf(1.75);
+    let span = 4.0 / 3.0 * (r1.powf(-0.75) - r2.powf(-0.75));
+    let want_pr = k * (q / (2.0 * PI)).powf(1.75) * span / h.powi(3);
+    assert!((pr / want_pr - 1.0).abs() < 1e-10, "{pr} vs {want_pr}");
+    let area = PI * 0.8 * (r2.powf(1.25) - r1.powf(1.25)) / span;
+    assert!((result_field(&v, "effective_area_m2") / area - 1.0).abs() < 1e-10);
+    let stiffness = 12.0 / 7.0 * area / (h * (4.0 / (7.0 * pr) + 1.0 / (2.0 * (ps - pr))));
+    let got = result_field(&v, "stiffness_n_m");
+    assert!((got / stiffness - 1.0).abs() < 1e-6, "{got} vs {stiffness}");
+}
+
+/// Eq. 16.2's 4.71, for the closed form above.
+const SLIT_K: f64 = 4.71;
+
+/// In a turbulent scene (water at a thick film, a fast runner) `auto` applies the laws: at the
+/// same film and flow the recess pressure (so the load) and the friction rise above laminar —
+/// Khonsari & Booser §7.11: "both fluid-film thickness (load capacity) and power loss are
+/// increased" — and the decision names the criterion and the model.
+#[test]
+fn turbulence_raises_load_and_friction() {
+    for pad in pads() {
+        let mut body = json!({
+            "pad": pad, "compensation": {"kind": "constant_flow"},
+            "lubricant": {"viscosity_pa_s": 1e-3, "density_15c_kg_m3": 1000},
+            "temperature_c": 15,
+            "film_m": 2e-4, "flow_m3_s": 2e-3,
+        });
+        if pad["kind"] == "rectangular" {
+            body["sliding_speed_m_s"] = json!(20);
+        } else {
+            body["speed_rpm"] = json!(3000);
+        }
+        let (auto, off) = (turbulence(&body, "auto"), turbulence(&body, "off"));
+        let decision = &auto["effects"]["turbulence"];
+        assert!(decision["applied"].as_bool().unwrap(), "{decision}");
+        assert_eq!(decision["model"], "larger_loss_of_laminar_and_turbulent");
+        assert!(decision["criterion"]["value"].as_f64().unwrap() > 1.0);
+        let ratio = |f: &str| result_field(&auto, f) / result_field(&off, f);
+        assert!(
+            ratio("load_n") > 1.05,
+            "{}: {}",
+            pad["kind"],
+            ratio("load_n")
+        );
+        assert!(ratio("friction_power_w") > 1.05, "{}", pad["kind"]);
+        assert_eq!(ratio("flow_m3_s"), 1.0);
+        assert!(result_field(&auto, "land_pressure_flow_reynolds_number") > 2000.0);
+    }
+}
