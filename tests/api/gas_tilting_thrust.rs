@@ -111,9 +111,13 @@ proptest! {
     #![proptest_config(ProptestConfig::with_cases(8))]
 
     /// Over Λ from 1 to 1000 (by the clearance), crowns to twice the clearance and pivots from
-    /// 0.55 to 0.75 of the angle: a finite pad whose load falls as its clearance opens (the same
-    /// pad: its crown in metres unchanged), or a
-    /// 422 on the pivot (no equilibrium) or the crown (the pad would touch); never a 500.
+    /// 0.55 to 0.75 of the angle: a finite pad, or a 422 on the pivot (no equilibrium) or the
+    /// crown (the pad would touch); never a 500. A crowned pad (δ ≥ 0.2 C) carries less as its
+    /// clearance opens (the same pad: its crown in metres unchanged). A nearly flat one need
+    /// not: near the Λ beyond which it has no equilibrium its tilt and load fall to zero, so a
+    /// lower Λ (a wider clearance) can carry more — crown 0.023 C, pivot 0.569, Λ 37.8 carries
+    /// 33.1 N at C and 37.7 N at 1.05 C, rising smoothly from 0.98 C to 1.1 C (a grid of
+    /// crowns 0–0.5 C, pivots 0.55–0.65 and Λ 3–300 found it only at crowns ≤ 0.05 C).
     #[test]
     fn tilting_pads_are_finite_and_carry_less_on_a_thicker_film(
         log_lambda in 0.0f64..3.0,
@@ -137,7 +141,10 @@ proptest! {
                 assert_all_finite(&thin, "");
                 let w = |v: &Value| v["result"]["load_n"].as_f64().unwrap();
                 prop_assert!(w(&thin) > 0.0);
-                prop_assert!(w(&thick) < w(&thin), "{} vs {}", w(&thick), w(&thin));
+                prop_assert!(w(&thick) > 0.0);
+                if crown >= 0.2 {
+                    prop_assert!(w(&thick) < w(&thin), "{} vs {}", w(&thick), w(&thin));
+                }
             }
             (Err(Failure::Calc(CalcError::Impossible { pointer, .. })), _)
             | (_, Err(Failure::Calc(CalcError::Impossible { pointer, .. }))) => {

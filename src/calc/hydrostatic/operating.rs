@@ -199,6 +199,18 @@ fn recess_at_flow(law: Law, ps: f64, q: f64) -> Result<f64, CalcError> {
 /// The method name of the roots on turbulent lands.
 const TURBULENT_ROOTS: &str = "hydrostatic_turbulent_film";
 
+/// A turbulent root that failed: the cap as not converged; a bracket or an evaluation lost to
+/// the floating-point range (a bore of 1e-100 m) as a 422.
+fn root_failure(e: RootError) -> CalcError {
+    match e {
+        RootError::NotConverged { .. } => CalcError::from_root(TURBULENT_ROOTS, e),
+        RootError::NoSignChange { .. } | RootError::NonFinite { .. } => CalcError::impossible(
+            "",
+            "this combination of inputs takes the turbulent flow balance outside the floating-point range",
+        ),
+    }
+}
+
 /// Brent to round-off relative to the root (a recess pressure of a thousandth of the supply's
 /// still gets all its digits), a root error named for this room.
 fn root_of(f: impl FnMut(f64) -> Result<f64, RootError>, a: f64, b: f64) -> Result<f64, CalcError> {
@@ -208,7 +220,7 @@ fn root_of(f: impl FnMut(f64) -> Result<f64, RootError>, a: f64, b: f64) -> Resu
     };
     brent_fallible(f, a, b, stop)
         .map(|root| root.x)
-        .map_err(|e| CalcError::from_root(TURBULENT_ROOTS, e))
+        .map_err(root_failure)
 }
 
 /// The point where `known` holds on any lands: [`solve`]'s closed forms on laminar lands with a
@@ -218,15 +230,14 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
     if let (Lands::Laminar(film), false) = (lands, matches!(law, Law::Pipe(_))) {
         return solve(*film, law, known);
     }
-    let failed = |e: RootError| CalcError::from_root(TURBULENT_ROOTS, e);
     // (h, p_r, Q, given p_s, A_eff)
     let (h, pr, q, ps, area) = match known {
         Known::FilmFlow(h, q) => {
-            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            let (s, area) = lands.at_flow(q).map_err(root_failure)?;
             (h, s / h.powi(3), q, None, area)
         }
         Known::LoadFlow(w, q) => {
-            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            let (s, area) = lands.at_flow(q).map_err(root_failure)?;
             let pr = w / area;
             ((s / pr).cbrt(), pr, q, None, area)
         }
@@ -234,12 +245,12 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
             let h3 = h.powi(3);
             let excess = |pr: f64| lands.at(pr * h3).map(|(_, area)| area * pr - w);
             // W/A_eff at no flow, doubled until the load is passed (A_eff moves by far less).
-            let mut hi = w / lands.at(0.0).map_err(failed)?.1;
-            while excess(hi).map_err(failed)? <= 0.0 && hi.is_finite() {
+            let mut hi = w / lands.at(0.0).map_err(root_failure)?.1;
+            while excess(hi).map_err(root_failure)? <= 0.0 && hi.is_finite() {
                 hi *= 2.0;
             }
             let pr = root_of(excess, 0.0, hi)?;
-            let (q, area) = lands.at(pr * h3).map_err(failed)?;
+            let (q, area) = lands.at(pr * h3).map_err(root_failure)?;
             (h, pr, q, None, area)
         }
         Known::FilmSupply(h, ps) => {
@@ -256,12 +267,12 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
                     1.0,
                 )?,
             };
-            let (q, area) = lands.at(s_at(t)).map_err(failed)?;
+            let (q, area) = lands.at(s_at(t)).map_err(root_failure)?;
             (h, t * ps, q, Some(ps), area)
         }
         Known::LoadSupply(w, ps) => {
             tied_by_supply(law)?;
-            let still = lands.at(0.0).map_err(failed)?.1;
+            let still = lands.at(0.0).map_err(root_failure)?.1;
             if w / still >= ps {
                 return Err(beyond_supply(w / still, ps));
             }
@@ -274,12 +285,12 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
                 0.0,
                 ps,
             )?;
-            let (q, s, area) = at_recess(pr).map_err(failed)?;
+            let (q, s, area) = at_recess(pr).map_err(root_failure)?;
             ((s / pr).cbrt(), pr, q, Some(ps), area)
         }
         Known::SupplyFlow(ps, q) => {
             let pr = recess_at_flow(law, ps, q)?;
-            let (s, area) = lands.at_flow(q).map_err(failed)?;
+            let (s, area) = lands.at_flow(q).map_err(root_failure)?;
             ((s / pr).cbrt(), pr, q, Some(ps), area)
         }
     };
