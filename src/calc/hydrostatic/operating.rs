@@ -696,10 +696,15 @@ fn warn(case: &Case, op: &mut Operating, regime: Regime) {
     let r = &op.restrictor;
     match (r.kind, r.reynolds_number) {
         (Kind::Capillary, Some(re)) => {
-            if laminar && re > CAPILLARY_REYNOLDS_LIMIT {
+            if re > CAPILLARY_REYNOLDS_LIMIT {
+                let consequence = if laminar {
+                    "Hagen–Poiseuille overstates its flow (the turbulence effect applies the turbulent line loss)"
+                } else {
+                    "the turbulent line loss (Khonsari & Booser Eq. 2.36) was applied; a restrictor is usually kept laminar so that its drop follows the viscosity as the film's does"
+                };
                 notes.warn(
                     "restrictor_not_laminar",
-                    format!("capillary Reynolds number {re:.4e} exceeds {CAPILLARY_REYNOLDS_LIMIT} (Stachowiak & Batchelor; Khonsari & Booser allow 2500): Hagen–Poiseuille overstates its flow"),
+                    format!("capillary Reynolds number {re:.4e} exceeds {CAPILLARY_REYNOLDS_LIMIT} (Stachowiak & Batchelor; Khonsari & Booser allow 2500): {consequence}"),
                 );
             }
             if let (Some(l), Some(radius)) = (r.length, r.radius) {
@@ -727,10 +732,15 @@ fn warn(case: &Case, op: &mut Operating, regime: Regime) {
     }
     let pressure_re = op.land_pressure_flow_reynolds_number.unwrap_or(0.0);
     let shear_re = op.land_shear_reynolds_number.unwrap_or(0.0);
-    if laminar && pressure_re > LAND_PRESSURE_FLOW_REYNOLDS_LIMIT {
+    if pressure_re > LAND_PRESSURE_FLOW_REYNOLDS_LIMIT {
+        let consequence = if laminar {
+            "the laminar film law overstates the flow"
+        } else {
+            "the slit law (Khonsari & Booser Eq. 16.2) was applied where it loses more than the laminar law"
+        };
         notes.warn(
             "land_flow_not_laminar",
-            format!("the lands' pressure flow has Reynolds number {pressure_re:.4e} (hydraulic diameter 2h) at the recess edge, above {LAND_PRESSURE_FLOW_REYNOLDS_LIMIT}: the laminar film law overstates the flow"),
+            format!("the lands' pressure flow has Reynolds number {pressure_re:.4e} (hydraulic diameter 2h) at the recess edge, above {LAND_PRESSURE_FLOW_REYNOLDS_LIMIT}: {consequence}"),
         );
     }
     if laminar && shear_re > LAND_SHEAR_REYNOLDS_LIMIT {
