@@ -1076,7 +1076,7 @@ fn gas_bearings(out: &mut String) {
         let ms = t.elapsed().as_secs_f64() * 1e3;
         (serde_json::from_slice(&done.body).unwrap(), ms)
     };
-    let load = |v: &Value| v["result"]["load_dimensionless"].as_f64().unwrap();
+    let load = |v: &Value, field: &str| v["result"][field].as_f64().unwrap();
     let estimate = |v: &Value| v["solver"]["error_estimate"].as_f64().unwrap();
     let median = |path: &str, body: &str| {
         let mut times: Vec<f64> = (0..9).map(|_| run(path, body).1).collect();
@@ -1085,9 +1085,9 @@ fn gas_bearings(out: &mut String) {
     };
     let (mu, pa): (f64, f64) = (1.85e-5, 101_325.0);
     out.push_str(GAS_HEADING);
-    out.push_str("\n\n`/v1/gas-bearings/journal` and `/v1/gas-bearings/slider` driven with JSON bodies (continuum: slip off).\n");
-    out.push_str("Error: in W̄ (W/(p_a L D), W/(p_a B L)) against the same film on a grid four times finer, Richardson-extrapolated\n");
-    out.push_str("(journal [256, 48], slider [512, 96]; wide slider [1024, –]). `estimate` is the service's `solver.error_estimate`\n");
+    out.push_str("\n\n`/v1/gas-bearings/journal`, `/v1/gas-bearings/slider` and the tilting-pad rooms driven with JSON bodies (continuum: slip off).\n");
+    out.push_str("Error: in W̄ (W/(p_a L D), W/(p_a B L); the tilting pads' load coefficients) against the same film on a grid four times finer, Richardson-extrapolated\n");
+    out.push_str("(journal [256, 48], slider [512, 96]; wide slider [1024, –]; tilting pads twice `high`'s). `estimate` is the service's `solver.error_estimate`\n");
     out.push_str("(a third of the fidelity's two meshes' difference); it brackets the error where estimate ≥ error. Time: median\n");
     out.push_str("of 9 whole requests (parse, validate, both meshes, continuation in Λ, envelope), release build, one thread.\n");
     out.push_str("The values reported are the extrapolated ones while the estimate is the finer mesh's own error, so it is\n");
@@ -1115,40 +1115,93 @@ fn gas_bearings(out: &mut String) {
             2.0 * h2
         )
     };
+    // Ex 11.2's crowned sector pads (δ = C, pivot 0.6) at the clearance that gives Λ =
+    // 6μω r_o²/(p_a C²), balanced in pitch and roll.
+    let thrust_pads = move |lambda: f64, fidelity: &str| {
+        let (ro, omega) = (0.1016f64, 20_000.0 * std::f64::consts::PI / 30.0);
+        let c = ro * (6.0 * mu * omega / (pa * lambda)).sqrt();
+        format!(
+            r#"{{"inner_radius_m": 0.0508, "outer_radius_m": {ro}, "pad_count": 6, "pad_angle_deg": 45, "pivot_angle_fraction": 0.6, "pivot_radius_m": 0.07747, "crown_m": {c}, "clearance_m": {c}, "speed_rpm": 20000, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "fidelity": {fidelity}, "effects": {{"slip_flow": "off"}}}}"#
+        )
+    };
+    // Three pads as Ex 11.6's (preload 0.3, 90° pads pivoted at 0.65) at ε′ = 0.5, on the plain
+    // journal's D = L = 50 mm, C = 5 µm (Λ = 1000 within the speed limit).
+    let journal_pads = move |lambda: f64, fidelity: &str| {
+        let (d, c) = (0.05f64, 5e-6f64);
+        let omega = lambda * pa / (6.0 * mu * (0.5 * d / c).powi(2));
+        format!(
+            r#"{{"geometry": {{"diameter_m": {d}, "length_m": {d}, "radial_clearance_m": {c}}}, "preload_factor": 0.3, "speed_rpm": {}, "gas": {{"viscosity_pa_s": {mu}, "ambient_pressure_pa": {pa}}}, "eccentricity_ratio": 0.5, "fidelity": {fidelity}}}"#,
+            omega * 30.0 / std::f64::consts::PI
+        )
+    };
+    // The ε = 0.6 journal tilted by 5e-5 rad in the load plane (its ends 0.25 C off centre),
+    // solved on the whole length.
+    let misaligned = move |lambda: f64, fidelity: &str| {
+        journal(0.6, lambda, fidelity).replacen(
+            r#""eccentricity_ratio""#,
+            r#""misalignment": {"slope_rad": 5e-5}, "eccentricity_ratio""#,
+            1,
+        )
+    };
     type Body = Box<dyn Fn(f64, &str) -> String>;
-    let cases: [(&str, &str, Body, &str); 4] = [
+    let cases: [(&str, &str, &str, Body, &str); 7] = [
         (
             "journal L/D = 1, ε = 0.6",
             "/v1/gas-bearings/journal",
+            "load_dimensionless",
             Box::new(move |l, f| journal(0.6, l, f)),
             r#"{"grid": [256, 48]}"#,
         ),
         (
             "journal L/D = 1, ε = 0.9",
             "/v1/gas-bearings/journal",
+            "load_dimensionless",
             Box::new(move |l, f| journal(0.9, l, f)),
+            r#"{"grid": [256, 48]}"#,
+        ),
+        (
+            "journal L/D = 1, ε = 0.6, misaligned ε′ = 0.5",
+            "/v1/gas-bearings/journal",
+            "load_dimensionless",
+            Box::new(misaligned),
             r#"{"grid": [256, 48]}"#,
         ),
         (
             "slider h1/h2 = 2, infinitely wide",
             "/v1/gas-bearings/slider",
+            "load_dimensionless",
             Box::new(move |l, f| slider(true, l, f)),
             r#"{"grid": [1024, 2]}"#,
         ),
         (
             "slider h1/h2 = 2, L/B = 1",
             "/v1/gas-bearings/slider",
+            "load_dimensionless",
             Box::new(move |l, f| slider(false, l, f)),
             r#"{"grid": [512, 96]}"#,
         ),
+        (
+            "tilting-pad thrust (Ex 11.2 pads, δ = C)",
+            "/v1/gas-bearings/tilting-pad-thrust",
+            "load_coefficient",
+            Box::new(thrust_pads),
+            r#"{"grid": [256, 48]}"#,
+        ),
+        (
+            "tilting-pad journal L/D = 1 (Ex 11.6 pads), ε′ = 0.5",
+            "/v1/gas-bearings/tilting-pad-journal",
+            "load_coefficient",
+            Box::new(journal_pads),
+            r#"{"grid": [192, 48]}"#,
+        ),
     ];
-    for (name, path, body, fine) in &cases {
+    for (name, path, field, body, fine) in &cases {
         for lambda in [1.0, 10.0, 100.0, 1000.0] {
-            let reference = load(&run(path, &body(lambda, fine)).0);
+            let reference = load(&run(path, &body(lambda, fine)).0, field);
             for fidelity in ["fast", "standard", "high"] {
                 let request = body(lambda, &format!("\"{fidelity}\""));
                 let (v, _) = run(path, &request);
-                let error = (load(&v) - reference).abs() / reference;
+                let error = (load(&v, field) - reference).abs() / reference;
                 let est = estimate(&v);
                 let grid: Vec<String> = v["solver"]["grid"]
                     .as_array()
