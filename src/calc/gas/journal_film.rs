@@ -189,7 +189,7 @@ pub fn coarsen(fine: &GasGrid) -> GasGrid {
 /// quarter (too coarse for the film): the pair's estimate then stands.
 fn quarter_mesh(film: &JournalFilm, half: &JournalSolve, budget: &Budget) -> Option<JournalSolve> {
     let g = &half.grid;
-    if g.nx() % 2 != 0 || g.ny() % 2 != 0 {
+    if !g.nx().is_multiple_of(2) || !g.ny().is_multiple_of(2) {
         return None;
     }
     let grid = coarsen(g);
