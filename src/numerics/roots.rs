@@ -369,4 +369,41 @@ mod tests {
             prop_assert!((r.x - k).abs() < 1e-9);
         }
     }
+
+    /// `brent_fallible` returns a root where every evaluation succeeds, and the first failure
+    /// as it was where one does not (at a bracket's end, or in the middle of the search).
+    #[test]
+    fn fallible_brent_returns_the_first_failure() {
+        let stop = Stopping {
+            x_tolerance: 1e-14,
+            max_iterations: 100,
+        };
+        let root = brent_fallible(|x: f64| Ok::<f64, RootError>(x * x - 2.0), 0.0, 2.0, stop);
+        assert!((root.unwrap().x - 2f64.sqrt()).abs() < 1e-13);
+        let fail = |at: f64| RootError::NonFinite { x: at };
+        let end = brent_fallible(
+            |x: f64| if x > 1.5 { Err(fail(x)) } else { Ok(x - 1.0) },
+            0.0,
+            2.0,
+            stop,
+        );
+        assert_eq!(end.unwrap_err(), fail(2.0));
+        let mut calls = 0;
+        let middle = brent_fallible(
+            |x: f64| {
+                calls += 1;
+                if calls == 3 {
+                    Err(fail(x))
+                } else {
+                    Ok(x - 0.3)
+                }
+            },
+            0.0,
+            2.0,
+            stop,
+        );
+        assert!(matches!(middle, Err(RootError::NonFinite { .. })));
+        let none = brent_fallible(|x: f64| Ok::<f64, RootError>(x + 1.0), 0.0, 2.0, stop);
+        assert!(matches!(none, Err(RootError::NoSignChange { .. })));
+    }
 }

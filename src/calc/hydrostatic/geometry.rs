@@ -228,21 +228,33 @@ impl Geometry {
         }
     }
 
-    /// The length of the recess edge the flow leaves through, m (for the land Reynolds number
-    /// ρ Q/(μ × this), the pressure flow's film Reynolds number at the recess edge).
-    pub fn recess_perimeter(&self) -> Option<f64> {
+    /// The largest flow per unit width Q′ on the lands at a total flow Q, m²/s (for the land
+    /// Reynolds number 2ρQ′/μ; None for chart factors): at the recess edge of an outward land;
+    /// on an annulus, the larger of the outer land's at its recess edge and the inner land's at
+    /// its bore (Q shared by the lands' laminar conductances); across the rectangular pad's
+    /// strips, uniform.
+    pub fn peak_flow_per_width(&self, q: f64) -> Option<f64> {
         match *self {
-            Geometry::CircularStep { recess_radius, .. } => Some(2.0 * PI * recess_radius),
+            Geometry::CircularStep { recess_radius, .. } => Some(q / (2.0 * PI * recess_radius)),
             Geometry::Annular {
+                inner_radius,
                 recess_inner_radius,
                 recess_outer_radius,
-                ..
-            } => Some(2.0 * PI * (recess_inner_radius + recess_outer_radius)),
+                outer_radius,
+            } => {
+                let inner = 1.0 / (recess_inner_radius / inner_radius).ln();
+                let outer = 1.0 / (outer_radius / recess_outer_radius).ln();
+                let share = |g: f64| q * g / (inner + outer);
+                Some(
+                    (share(outer) / (2.0 * PI * recess_outer_radius))
+                        .max(share(inner) / (2.0 * PI * inner_radius)),
+                )
+            }
             Geometry::Rectangular {
-                recess_length,
-                recess_width,
-                ..
-            } => Some(2.0 * (recess_length + recess_width)),
+                recess_length: b,
+                recess_width: w,
+                land_width: l,
+            } => Some(q / (2.0 * ((b + l) + (w + l)))),
             Geometry::PerformanceFactors { .. } => None,
         }
     }

@@ -275,6 +275,60 @@ mod tests {
         assert!((area / eq_10_5 - 1.0).abs() < 1e-14);
     }
 
+    /// The annulus in the mixed regime against its pressure field integrated independently:
+    /// each land's p(r) by a midpoint rule of g(Q_land/2πr) from its exit, the recess at p_r,
+    /// W/p_r = ∫p dA/p_r.
+    #[test]
+    fn annulus_area_integrates_its_pressure_field() {
+        let slit = oil();
+        let (a, b, c, d) = (0.03, 0.05, 0.06, 0.09);
+        let lands = Lands::Radial {
+            slit,
+            outward: RadialLand { inner: c, outer: d },
+            inward: Some(RadialLand { inner: a, outer: b }),
+        };
+        // Each land turbulent where its flow per unit width peaks (c, a) and laminar at its
+        // other edge (d, b): the first such s on a fine scan.
+        let mixed = |s: f64| {
+            let q_out = lands_flow(&RadialLand { inner: c, outer: d }, slit, s);
+            let q_in = lands_flow(&RadialLand { inner: a, outer: b }, slit, s);
+            let between = |q: f64, near: f64, far: f64| {
+                q / (2.0 * PI * near) > slit.crossing() && q / (2.0 * PI * far) < slit.crossing()
+            };
+            between(q_out, c, d) && between(q_in, a, b)
+        };
+        let s = (0..400)
+            .map(|i| 1e-6 * 1.02f64.powi(i))
+            .find(|&s| mixed(s))
+            .expect("a mixed annulus");
+        let (q, area) = lands.at(s).unwrap();
+        let n = 100_000;
+        // One land's load ∫p 2πr dr, p rising from 0 at `exit` towards the recess.
+        let land = |q_land: f64, from: f64, to: f64| {
+            let (mut p, mut load) = (0.0, 0.0);
+            let dr = (to - from) / n as f64;
+            for i in 0..n {
+                let r = from + (i as f64 + 0.5) * dr;
+                let step = slit.gradient(q_land / (2.0 * PI * r)) * dr.abs();
+                p += 0.5 * step;
+                load += p * 2.0 * PI * r * dr.abs();
+                p += 0.5 * step;
+            }
+            (p, load)
+        };
+        let q_out = lands_flow(&RadialLand { inner: c, outer: d }, slit, s);
+        let q_in = q - q_out;
+        let (p_out, w_out) = land(q_out, d, c);
+        let (p_in, w_in) = land(q_in, a, b);
+        assert!((p_out / s - 1.0).abs() < 1e-8 && (p_in / s - 1.0).abs() < 1e-8);
+        let want = (w_out + w_in) / s + PI * (c * c - b * b);
+        assert!((area / want - 1.0).abs() < 1e-8, "{area} vs {want}");
+    }
+
+    fn lands_flow(land: &RadialLand, slit: Slit, s: f64) -> f64 {
+        land.flow(slit, s).unwrap()
+    }
+
     /// Two lands share one s: the annulus's flow splits so that both drop the same pressure, and
     /// `at_flow` inverts `at`.
     #[test]

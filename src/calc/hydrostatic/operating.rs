@@ -1,7 +1,8 @@
 //! A pad at its operating point: the determinate set the request gives (two of film, load,
-//! supply pressure and flow) solved in closed form with the restrictor's law, the stiffness,
-//! the powers and the temperature rise, the effects decided (Khonsari & Booser §10.3–10.6;
-//! Stachowiak & Batchelor §6.2–6.4).
+//! supply pressure and flow) solved with the restrictor's law — in closed form when the flow is
+//! laminar, by bracketed roots of the turbulent laws' closed forms when the turbulence effect
+//! applies ([`solve_lands`]) — the stiffness, the powers and the temperature rise, the effects
+//! decided (Khonsari & Booser §10.3–10.6; Stachowiak & Batchelor §6.2–6.4).
 //!
 //! The film carries W = A_eff p_r and passes Q = c₂ h³ p_r (c₂ = B̄/μ); the restrictor
 //! passes the same Q at p_s − p_r. Two of (h, W, p_s, Q) fix the rest, except W with p_s
@@ -16,7 +17,7 @@ use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
 use crate::calc::lubricant::validity;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::numerics::roots::{brent, brent_fallible, RootError, Stopping};
+use crate::numerics::roots::{brent, brent_fallible, RootError, Stopping, MAX_DOUBLINGS};
 
 /// The two quantities the request fixes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -246,7 +247,10 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
             let excess = |pr: f64| lands.at(pr * h3).map(|(_, area)| area * pr - w);
             // W/A_eff at no flow, doubled until the load is passed (A_eff moves by far less).
             let mut hi = w / lands.at(0.0).map_err(root_failure)?.1;
-            while excess(hi).map_err(root_failure)? <= 0.0 && hi.is_finite() {
+            for _ in 0..MAX_DOUBLINGS {
+                if excess(hi).map_err(root_failure)? > 0.0 {
+                    break;
+                }
                 hi *= 2.0;
             }
             let pr = root_of(excess, 0.0, hi)?;
@@ -377,7 +381,7 @@ pub struct Operating {
     pub stiffness: f64,
     pub power: Power,
     pub restrictor: Restrictor,
-    /// The lands' pressure flow's Reynolds number at the recess edge, 2ρQ/(μ × its length)
+    /// The lands' pressure flow's Reynolds number 2ρQ′/μ where the flow per unit width Q′ peaks
     /// (hydraulic diameter 2h; None for chart factors).
     pub land_pressure_flow_reynolds_number: Option<f64>,
     /// The lands' shear flow's film Reynolds number ρUh/μ at the fastest edge.
@@ -395,9 +399,8 @@ pub struct Operating {
     pub notes: Notes,
 }
 
-/// Capillary laminar limit (Stachowiak & Batchelor §6.4: Re < 2000; Khonsari & Booser §10.4
-/// allow 2500: the stricter is used).
-pub const CAPILLARY_REYNOLDS_LIMIT: f64 = 2000.0;
+/// Capillary laminar limit, where the turbulent law takes over ([`restrictor::Pipe`]).
+pub const CAPILLARY_REYNOLDS_LIMIT: f64 = restrictor::PIPE_TRANSITION_REYNOLDS;
 /// Capillary length-to-bore for Hagen–Poiseuille to hold (entry losses; S&B §6.4: l/d > 100).
 pub const CAPILLARY_MIN_L_OVER_D: f64 = 100.0;
 /// Below this orifice Reynolds number C_D falls from about 0.6–0.7 towards 0.3 (Khonsari &
@@ -416,7 +419,8 @@ pub const LAND_SHEAR_REYNOLDS_LIMIT: f64 = 580.0;
 pub const THERMAL_VISCOSITY_DROP: f64 = 0.05;
 
 /// How the flow is modelled: laminar everywhere, or the turbulent effect applied (the
-/// capillary a [`Pipe`], the lands' pressure flow by the slit law, their shear by Ng–Pan).
+/// capillary a [`Pipe`], the lands' pressure flow by the slit law, their shear by the surface
+/// drag of Eq. 7.17–7.18).
 #[derive(Debug, Clone, Copy, PartialEq, Eq)]
 enum Regime {
     Laminar,
@@ -440,8 +444,12 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
     let law = case.compensation.law(mu_in, rho, turbulent);
     let point = solve_lands(&lands, law, case.known)?;
     let kind = case.compensation.kind();
-    // The restrictor's own law gives its drop without the cancellation of p_s − p_r near m = 1.
-    let drop = law.drop(point.flow).unwrap_or(point.supply - point.recess);
+    // The restrictor's own law gives its drop without the cancellation of p_s − p_r near m = 1;
+    // a pipe in transition holds its flow while its drop varies, so its drop is p_s − p_r.
+    let drop = match law {
+        Law::Pipe(_) => point.supply - point.recess,
+        _ => law.drop(point.flow).unwrap_or(point.supply - point.recess),
+    };
     let (restrictor, built) = match case.compensation {
         Compensation::ConstantFlow => (
             Restrictor {
@@ -533,7 +541,7 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
         (Motion::Sliding { speed }, _) => speed,
         _ => 0.0,
     };
-    let perimeter = case.geometry.recess_perimeter();
+    let peak = case.geometry.peak_flow_per_width(point.flow);
     Ok(Operating {
         stiffness: stiffness_on(&lands, built, kind, &point)?,
         effective_area: point.load / point.recess,
@@ -541,9 +549,8 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
         point,
         power,
         restrictor,
-        land_pressure_flow_reynolds_number: perimeter
-            .map(|perimeter| 2.0 * rho_film * point.flow / (mu * perimeter)),
-        land_shear_reynolds_number: perimeter.map(|_| rho_film * shear_speed * point.film / mu),
+        land_pressure_flow_reynolds_number: peak.map(|q| 2.0 * rho_film * q / mu),
+        land_shear_reynolds_number: peak.map(|_| rho_film * shear_speed * point.film / mu),
         film_temperature_c: t_film,
         film_viscosity_pa_s: mu,
         inlet_viscosity_pa_s: mu_in,
@@ -659,8 +666,8 @@ fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, Cal
 }
 
 /// Turbulence: the largest of the capillary's Reynolds number over 2000, the lands' pressure
-/// flow's (hydraulic diameter 2h, at the recess edge) over 2000 and their shear's (ρUh/μ at the
-/// fastest edge) over 580, on the laminar point, against 1.
+/// flow's (hydraulic diameter 2h, where the flow per unit width peaks) over 2000 and their
+/// shear's (ρUh/μ at the fastest edge) over 580, on the laminar point, against 1.
 fn decide_turbulence(case: &Case, laminar: &Operating) -> Decision {
     let capillary = match (laminar.restrictor.kind, laminar.restrictor.reynolds_number) {
         (Kind::Capillary, Some(re)) => re / CAPILLARY_REYNOLDS_LIMIT,
@@ -740,7 +747,7 @@ fn warn(case: &Case, op: &mut Operating, regime: Regime) {
         };
         notes.warn(
             "land_flow_not_laminar",
-            format!("the lands' pressure flow has Reynolds number {pressure_re:.4e} (hydraulic diameter 2h) at the recess edge, above {LAND_PRESSURE_FLOW_REYNOLDS_LIMIT}: {consequence}"),
+            format!("the lands' pressure flow has Reynolds number {pressure_re:.4e} (hydraulic diameter 2h) where its flow per unit width peaks, above {LAND_PRESSURE_FLOW_REYNOLDS_LIMIT}: {consequence}"),
         );
     }
     if laminar && shear_re > LAND_SHEAR_REYNOLDS_LIMIT {
@@ -752,7 +759,7 @@ fn warn(case: &Case, op: &mut Operating, regime: Regime) {
     if !laminar && shear_re > LAND_SHEAR_REYNOLDS_LIMIT {
         notes.warn(
             "shear_turbulence_on_flow_not_modelled",
-            format!("the lands' shear flow is turbulent (film Reynolds number {shear_re:.4e}): its friction is Ng–Pan's, but the resistance it adds to the pressure flow (Ng–Pan's G_x, G_y) is not modelled, so the flow is overstated"),
+            format!("the lands' shear flow is turbulent (film Reynolds number {shear_re:.4e}): its friction is the surface drag's (Khonsari & Booser Eq. 7.17–7.18), but the resistance it adds to the pressure flow (Ng–Pan's G_x, G_y, Eq. 6.27) is not modelled, so the flow is overstated"),
         );
     }
     if !laminar && matches!(case.geometry, Geometry::PerformanceFactors { .. }) {

@@ -183,15 +183,16 @@ pub struct HydrostaticEffects {
     pub thermal: Mode,
     /// Turbulence in the capillary and on the lands, decided on the laminar point: the
     /// capillary's Reynolds number against 2000 (Stachowiak & Batchelor §6.4; Khonsari & Booser
-    /// allow 2500), the lands' pressure flow's at the recess edge (hydraulic diameter 2h) against
-    /// 2000 (Khonsari & Booser §16.1) and their shear's (ρUh/μ at the fastest edge) against 580
-    /// (§7.11). Applied, every element takes the larger loss of its laminar and turbulent laws
-    /// (§7.11's rule; model `larger_loss_of_laminar_and_turbulent`): the capillary Khonsari &
-    /// Booser's turbulent line loss (Eq. 2.36, Darcy f = 0.184 Re^−0.2), the lands' pressure flow
-    /// the slit law (Eq. 16.2), their shear Ng–Pan's G_f (Eq. 6.30). Chart-factor pads keep
-    /// laminar lands. `on` applies the laws at any Reynolds number (where laminar flow has the
-    /// larger loss they are the laminar closed forms). (Inertia at the recess edge: the texts
-    /// give no model, so the pad does not offer it.)
+    /// allow 2500), the lands' pressure flow's where its flow per unit width peaks (hydraulic
+    /// diameter 2h) against 2000 (Khonsari & Booser §16.1) and their shear's (ρUh/μ at the
+    /// fastest edge) against 580 (§7.11). Applied (model `larger_loss_of_laminar_and_turbulent`):
+    /// the capillary is laminar to Re 2000 and follows Khonsari & Booser's turbulent line loss
+    /// beyond (Eq. 2.36, Darcy f = 0.184 Re^−0.2); the lands' pressure flow and their shear take
+    /// the larger loss of the laminar law and the slit law (Eq. 16.2) or the surface drag
+    /// (Eq. 7.17–7.18) at every point (§7.11's rule). Chart-factor pads keep laminar lands. `on`
+    /// applies the laws at any Reynolds number (where the flow is laminar they are the laminar
+    /// closed forms). (Inertia at the recess edge: the texts give no model, so the pad does not
+    /// offer it.)
     #[serde(default)]
     pub turbulence: Mode,
 }
@@ -867,9 +868,9 @@ pub struct HydrostaticPadOutput {
     pub film_temperature_c: f64,
     /// The film's viscosity, Pa·s.
     pub viscosity_pa_s: f64,
-    /// The lands' pressure flow's Reynolds number at the recess edge, 2ρQ/(μ × the edge's
-    /// length) (hydraulic diameter 2h; laminar below 2000), dimensionless; absent for
-    /// performance factors.
+    /// The lands' pressure flow's Reynolds number 2ρQ′/μ where the flow per unit width Q′ peaks
+    /// (the recess edge of an outward land, an annulus's bore; hydraulic diameter 2h; laminar
+    /// below 2000), dimensionless; absent for performance factors.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub land_pressure_flow_reynolds_number: Option<f64>,
     /// The lands' shear flow's film Reynolds number ρUh/μ at the fastest edge (laminar below

@@ -1,8 +1,8 @@
 //! Compensation: what feeds the recess. Constant flow (a pump per pad), a capillary
 //! (Hagen–Poiseuille, Q = K_c Δp) or an orifice (Q = k_o √Δp), each given by its size or
 //! designed from the recess-to-supply pressure ratio m = p_r/p_s (Khonsari & Booser §10.4–10.6;
-//! Stachowiak & Batchelor §6.4). With turbulence applied the capillary is a [`Pipe`]: the
-//! larger of Hagen–Poiseuille's drop and Khonsari & Booser's turbulent line loss (Eq. 2.36).
+//! Stachowiak & Batchelor §6.4). With turbulence applied the capillary is a [`Pipe`]:
+//! Hagen–Poiseuille to Re 2000, Khonsari & Booser's turbulent line loss (Eq. 2.36) beyond.
 
 use std::f64::consts::PI;
 
@@ -91,10 +91,16 @@ pub const TURBULENT_PIPE_FACTOR: f64 = 0.184;
 /// The Darcy factor's Reynolds exponent in Eq. 2.36.
 const TURBULENT_PIPE_EXPONENT: f64 = 0.2;
 
-/// A capillary of radius R and length l carrying oil of viscosity μ and density ρ, laminar or
-/// turbulent: the Darcy factor is the larger of 64/Re and 0.184 Re^−0.2 (Khonsari & Booser
-/// §7.11's rule, the regime with the higher loss is the one to expect; they cross at Re = 1502,
-/// below the texts' laminar limits of 2000–2500). Entry losses are neglected.
+/// The capillary's laminar limit, Reynolds number ρU·2R/μ (Stachowiak & Batchelor §6.4: 2000;
+/// Khonsari & Booser allow 2500: the stricter is used).
+pub const PIPE_TRANSITION_REYNOLDS: f64 = 2000.0;
+
+/// A capillary of radius R and length l carrying oil of viscosity μ and density ρ: laminar
+/// (Hagen–Poiseuille) up to Re 2000, Khonsari & Booser's turbulent line loss beyond (its Darcy
+/// factor 0.184 Re^−0.2 is above 64/Re there: they cross at Re 1502). Between the two drops at
+/// Re 2000 the flow stays at Re 2000 while the drop rises (the transition), so the flow is a
+/// continuous, non-decreasing function of the drop, and a pad whose laminar capillary reaches
+/// Re 2000 meets the same point under either law. Entry losses are neglected.
 #[derive(Debug, Clone, Copy, PartialEq)]
 pub struct Pipe {
     pub radius: f64,
@@ -104,26 +110,51 @@ pub struct Pipe {
 }
 
 impl Pipe {
-    /// Δp at flow Q: f (l/d) ρU²/2.
-    pub fn drop(self, q: f64) -> f64 {
-        let laminar = q / capillary_conductance(self.radius, self.length, self.mu);
-        laminar.max(self.length * turbulent_gradient(q, self.radius, self.rho, self.mu))
+    /// Q at Re 2000.
+    fn transition_flow(self) -> f64 {
+        PIPE_TRANSITION_REYNOLDS * self.mu * PI * self.radius / (2.0 * self.rho)
     }
 
-    /// Q at Δp: the smaller of the two laws' flows (the inverse of the larger drop).
+    /// Δp/l at flow Q: Hagen–Poiseuille to the transition, the turbulent line loss beyond.
+    fn gradient(self, q: f64) -> f64 {
+        if q <= self.transition_flow() {
+            q / capillary_conductance(self.radius, 1.0, self.mu)
+        } else {
+            turbulent_gradient(q, self.radius, self.rho, self.mu)
+        }
+    }
+
+    /// Δp at flow Q.
+    pub fn drop(self, q: f64) -> f64 {
+        self.length * self.gradient(q)
+    }
+
+    /// Q at Δp: laminar below the transition's laminar drop, turbulent above its turbulent
+    /// drop, the transition's flow between.
     pub fn flow(self, drop: f64) -> f64 {
-        let laminar = capillary_conductance(self.radius, self.length, self.mu) * drop;
-        // Turbulent: Δp/l = c Q^1.8 with c the gradient at unit flow (Δp ∝ Q^(2 − 0.2)).
-        let c = turbulent_gradient(1.0, self.radius, self.rho, self.mu);
-        let turbulent = (drop / (self.length * c)).powf(1.0 / (2.0 - TURBULENT_PIPE_EXPONENT));
-        laminar.min(turbulent)
+        let g = drop / self.length;
+        let qt = self.transition_flow();
+        if g <= self.gradient(qt) {
+            capillary_conductance(self.radius, 1.0, self.mu) * g
+        } else if g < turbulent_gradient(qt, self.radius, self.rho, self.mu) {
+            qt
+        } else {
+            // Δp/l = c Q^1.8 with c the gradient at unit flow (Δp ∝ Q^(2 − 0.2)).
+            let c = turbulent_gradient(1.0, self.radius, self.rho, self.mu);
+            (g / c).powf(1.0 / (2.0 - TURBULENT_PIPE_EXPONENT))
+        }
     }
 }
 
-/// The pipe length that drops Δp at flow Q with the larger of the two Darcy factors.
+/// The pipe length that drops Δp at flow Q (laminar to Re 2000, turbulent beyond).
 pub fn pipe_length(q: f64, drop: f64, radius: f64, rho: f64, mu: f64) -> f64 {
-    let laminar = 8.0 * mu * q / (PI * radius.powi(4));
-    drop / laminar.max(turbulent_gradient(q, radius, rho, mu))
+    let unit = Pipe {
+        radius,
+        length: 1.0,
+        mu,
+        rho,
+    };
+    drop / unit.gradient(q)
 }
 
 /// The turbulent pressure gradient f ρU²/(2d), f = 0.184 Re^−0.2 (Eq. 2.36), at flow Q.
@@ -209,11 +240,11 @@ mod tests {
         assert!((got - 5.12).abs() < 0.005, "{got}");
     }
 
-    /// The pipe's drop is Hagen–Poiseuille's up to Re 1502, where 64/Re = 0.184 Re^−0.2, and
-    /// the turbulent law's beyond; its flow inverts its drop in both regimes; its length
-    /// inverts both.
+    /// The pipe's drop is Hagen–Poiseuille's up to Re 2000 and the turbulent line loss's beyond
+    /// (the two Darcy factors cross at Re 1502, so the drop rises at the transition); between
+    /// the two drops at Re 2000 the flow stays at Re 2000; flow and length invert the drop.
     #[test]
-    fn pipe_switches_at_the_crossing() {
+    fn pipe_is_laminar_to_re_2000() {
         let (radius, length, mu, rho) = (5e-4, 0.2, 0.01, 850.0);
         let pipe = Pipe {
             radius,
@@ -225,23 +256,35 @@ mod tests {
         let crossing = (64.0 / TURBULENT_PIPE_FACTOR).powf(1.0 / 0.8);
         assert!((crossing - 1502.1).abs() < 0.1, "{crossing}");
         let laminar = |q: f64| q / capillary_conductance(radius, length, mu);
-        for re in [10.0, 1000.0, 0.999 * crossing] {
+        let darcy = |re: f64| {
+            let u = q_at(re) / (PI * radius * radius);
+            TURBULENT_PIPE_FACTOR * re.powf(-0.2) * length / (2.0 * radius) * rho * u * u / 2.0
+        };
+        for re in [10.0, 1000.0, 1999.0, 2000.0] {
             let q = q_at(re);
-            assert!((pipe.drop(q) / laminar(q) - 1.0).abs() < 1e-14, "{re}");
+            assert!((pipe.drop(q) / laminar(q) - 1.0).abs() < 1e-12, "{re}");
         }
-        for re in [1.001 * crossing, 3000.0, 5e4] {
-            let q = q_at(re);
-            let f = TURBULENT_PIPE_FACTOR * re.powf(-0.2);
-            let u = q / (PI * radius * radius);
-            let darcy = f * length / (2.0 * radius) * rho * u * u / 2.0;
-            assert!((pipe.drop(q) / darcy - 1.0).abs() < 1e-12, "{re}");
-            assert!(pipe.drop(q) > laminar(q));
+        for re in [2001.0, 3000.0, 5e4] {
+            assert!(
+                (pipe.drop(q_at(re)) / darcy(re) - 1.0).abs() < 1e-12,
+                "{re}"
+            );
         }
-        for re in [10.0, 1501.0, 1503.0, 5e4] {
+        let (low, high) = (laminar(q_at(2000.0)), darcy(2000.0));
+        assert!((high / low - 0.184 * 2000f64.powf(0.8) / 64.0).abs() < 1e-12);
+        for drop in [0.999 * low, 1.001 * high] {
+            let q = pipe.flow(drop);
+            assert!((pipe.drop(q) / drop - 1.0).abs() < 1e-12, "{drop}");
+        }
+        for drop in [1.001 * low, 0.5 * (low + high), 0.999 * high] {
+            assert!(
+                (pipe.flow(drop) / q_at(2000.0) - 1.0).abs() < 1e-12,
+                "{drop}"
+            );
+        }
+        for re in [10.0, 1999.0, 2001.0, 5e4] {
             let q = q_at(re);
-            let drop = pipe.drop(q);
-            assert!((pipe.flow(drop) / q - 1.0).abs() < 1e-12, "{re}");
-            let l = pipe_length(q, drop, radius, rho, mu);
+            let l = pipe_length(q, pipe.drop(q), radius, rho, mu);
             assert!((l / length - 1.0).abs() < 1e-12, "{re}");
         }
     }

@@ -117,7 +117,7 @@ fn every_determinate_set_gives_the_same_turbulent_point() {
         let lands = g.turbulent_lands(slit);
         for law in [Law::Direct, pipe, Law::Root(1e-6), Law::Ratio(0.5)] {
             let p = solve_lands(&lands, law, Known::FilmSupply(2e-4, 1e6)).unwrap();
-            let re = 2.0 * slit.rho * p.flow / (slit.mu * g.recess_perimeter().unwrap());
+            let re = 2.0 * slit.rho * g.peak_flow_per_width(p.flow).unwrap() / slit.mu;
             assert!(re > 2000.0, "{g:?} {law:?}: Re {re}");
             for known in [
                 Known::FilmLoad(p.film, p.load),
@@ -218,7 +218,90 @@ fn turbulence_raises_load_and_friction() {
             ratio("load_n")
         );
         assert!(ratio("friction_power_w") > 1.05, "{}", pad["kind"]);
-        assert_eq!(ratio("flow_m3_s"), 1.0);
         assert!(result_field(&auto, "land_pressure_flow_reynolds_number") > 2000.0);
     }
+}
+
+/// `auto` is continuous where it switches. A capillary whose laminar Reynolds number reaches
+/// 2000 (water, its length scanned): the turbulent pipe holds Re 2000 between its two drops,
+/// so just either side of the switch the pad has the same load, flow and recess pressure. An annulus whose
+/// lands' peak Reynolds number reaches 2000 (constant flow): the slit law is still laminar
+/// there (it takes over at 2043), so the load is the same.
+#[test]
+fn auto_is_continuous_where_it_switches() {
+    let pad = |length: f64, mode: &str| {
+        turbulence(
+            &json!({
+                "pad": {"kind": "circular_step", "recess_radius_m": 0.025, "outer_radius_m": 0.05},
+                "compensation": {"kind": "capillary", "radius_m": 1e-3, "length_m": length},
+                "lubricant": {"viscosity_pa_s": 1e-3, "density_15c_kg_m3": 1000},
+                "temperature_c": 15, "film_m": 7.5e-5, "supply_pressure_pa": 2e4,
+            }),
+            mode,
+        )
+    };
+    let re = |v: &Value| {
+        v["result"]["restrictor"]["reynolds_number"]
+            .as_f64()
+            .unwrap()
+    };
+    // Laminar Re falls as the capillary lengthens: bisect ln l for Re 2000.
+    let (mut short, mut long) = (1e-3f64, 10.0f64);
+    assert!(re(&pad(short, "off")) > 2000.0 && re(&pad(long, "off")) < 2000.0);
+    for _ in 0..60 {
+        let mid = (short * long).sqrt();
+        if re(&pad(mid, "off")) > 2000.0 {
+            short = mid;
+        } else {
+            long = mid;
+        }
+    }
+    let (turbulent, laminar) = (pad(short, "auto"), pad(long, "auto"));
+    assert!(turbulent["effects"]["turbulence"]["applied"]
+        .as_bool()
+        .unwrap());
+    assert!(!laminar["effects"]["turbulence"]["applied"]
+        .as_bool()
+        .unwrap());
+    for field in ["load_n", "flow_m3_s", "recess_pressure_pa"] {
+        let (a, b) = (
+            result_field(&turbulent, field),
+            result_field(&laminar, field),
+        );
+        assert!((a / b - 1.0).abs() < 1e-6, "{field}: {a} vs {b}");
+    }
+    // The stiffness has a kink there, not a jump in load: in transition the capillary passes a
+    // fixed flow whatever its drop, so it stiffens the pad as constant flow would (3W/h at most).
+    let w_over_h = result_field(&turbulent, "load_n") / 7.5e-5;
+    for v in [&turbulent, &laminar] {
+        let k = result_field(v, "stiffness_n_m");
+        assert!(k > 0.0 && k <= 3.0 * w_over_h * (1.0 + 1e-6), "{k}");
+    }
+
+    let annulus = json!({"kind": "annular", "inner_radius_m": 0.03, "recess_inner_radius_m": 0.05, "recess_outer_radius_m": 0.09, "outer_radius_m": 0.12});
+    let geometry = Geometry::Annular {
+        inner_radius: 0.03,
+        recess_inner_radius: 0.05,
+        recess_outer_radius: 0.09,
+        outer_radius: 0.12,
+    };
+    let q_switch = 2000.0 * 1e-3 / (2.0 * 1000.0) / geometry.peak_flow_per_width(1.0).unwrap();
+    let at = |q: f64| {
+        turbulence(
+            &json!({
+                "pad": annulus, "compensation": {"kind": "constant_flow"},
+                "lubricant": {"viscosity_pa_s": 1e-3, "density_15c_kg_m3": 1000},
+                "temperature_c": 15, "film_m": 2e-4, "flow_m3_s": q,
+            }),
+            "auto",
+        )
+    };
+    let (below, above) = (at(q_switch * (1.0 - 1e-9)), at(q_switch * (1.0 + 1e-9)));
+    assert!(!below["effects"]["turbulence"]["applied"].as_bool().unwrap());
+    assert!(above["effects"]["turbulence"]["applied"].as_bool().unwrap());
+    let (a, b) = (
+        result_field(&above, "load_n"),
+        result_field(&below, "load_n"),
+    );
+    assert!((a / b - 1.0).abs() < 1e-8, "{a} vs {b}");
 }
