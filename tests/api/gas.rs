@@ -165,10 +165,11 @@ async fn the_examples_and_fields_answer_over_http() {
     assert!((e - 0.5).abs() < 1e-6, "{e}");
     let a = reply.body["result"]["attitude_angle_deg"].as_f64().unwrap();
     assert!((a - attitude).abs() < 1e-3);
-    // A few film solves: the secant in stretched ε takes 30 here where Brent took 52 (each film
-    // and its half mesh, searched twice: `auto` slip applies at Kn = 0.013).
+    // A few film solves: the secant in stretched ε takes 44 here (each film on its mesh, its half
+    // and its quarter — the three-mesh error estimate — searched twice: `auto` slip applies at
+    // Kn = 0.013); with two meshes it took 30 where Brent took 52.
     let solves = reply.body["solver"]["film_solves"].as_u64().unwrap();
-    assert!(solves <= 32, "{solves} film solves");
+    assert!(solves <= 48, "{solves} film solves");
     let reply = app
         .post_json(
             SLIDER,
