@@ -142,17 +142,23 @@ pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
             (film_for(q, pr), pr, q, Some(ps))
         }
     };
+    Ok(point(law, h, pr, q, ps, area))
+}
+
+/// The point of film h, recess pressure p_r and flow Q on area A_eff, its supply pressure given
+/// or found behind the restrictor.
+fn point(law: Law, h: f64, pr: f64, q: f64, ps: Option<f64>, area: f64) -> Point {
     let supply = ps.unwrap_or_else(|| match law {
         Law::Ratio(m) => pr / m,
         other => pr + other.drop(q).unwrap_or(0.0),
     });
-    Ok(Point {
+    Point {
         film: h,
         load: area * pr,
         supply,
         recess: pr,
         flow: q,
-    })
+    }
 }
 
 /// Load with supply pressure fixes nothing when p_r is tied to p_s (constant flow, or a
@@ -298,17 +304,7 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
             ((s / pr).cbrt(), pr, q, Some(ps), area)
         }
     };
-    let supply = ps.unwrap_or_else(|| match law {
-        Law::Ratio(m) => pr / m,
-        other => pr + other.drop(q).unwrap_or(0.0),
-    });
-    Ok(Point {
-        film: h,
-        load: area * pr,
-        supply,
-        recess: pr,
-        flow: q,
-    })
+    Ok(point(law, h, pr, q, ps, area))
 }
 
 /// −dW/dh at fixed supply pressure through the restrictor as built, on any lands: the closed

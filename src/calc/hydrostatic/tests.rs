@@ -8,6 +8,7 @@ use serde_json::{json, Value};
 use super::super::geometry::Geometry;
 use super::super::lands::Film;
 use super::super::operating::{solve, stiffness, Known};
+use super::super::point::Point;
 use super::super::restrictor::{Kind, Law};
 use super::*;
 use crate::calc::testing::{invalid_pointers, ok, post, result_field, warning_codes};
@@ -88,31 +89,42 @@ fn every_determinate_set_gives_the_same_point() {
         Law::Ratio(0.5),
     ] {
         let p = solve(film, law, Known::FilmSupply(7.62e-5, 1.3e7)).unwrap();
-        let sets = [
-            Known::FilmLoad(p.film, p.load),
-            Known::FilmFlow(p.film, p.flow),
-            Known::LoadFlow(p.load, p.flow),
-            Known::SupplyFlow(p.supply, p.flow),
-            Known::LoadSupply(p.load, p.supply),
-        ];
-        for known in sets {
-            if let (Law::Direct | Law::Ratio(_), Known::LoadSupply(..)) = (law, known) {
-                assert!(solve(film, law, known).is_err());
-                continue;
-            }
-            let q = solve(film, law, known).unwrap();
-            for (a, b, what) in [
-                (q.film, p.film, "film"),
-                (q.load, p.load, "load"),
-                (q.supply, p.supply, "supply"),
-                (q.flow, p.flow, "flow"),
-                (q.recess, p.recess, "recess"),
-            ] {
-                assert!(
-                    (a / b - 1.0).abs() < 1e-12,
-                    "{law:?} {known:?} {what}: {a} vs {b}"
-                );
-            }
+        assert_every_set_gives(&p, law, 1e-12, |known| solve(film, law, known), "");
+    }
+}
+
+/// Every other determinate set at point `p` (solved by `solve`) gives `p` back to `tolerance`;
+/// load with supply pressure is refused where they are tied (constant flow, a ratio).
+pub(super) fn assert_every_set_gives(
+    p: &Point,
+    law: Law,
+    tolerance: f64,
+    solve: impl Fn(Known) -> Result<Point, CalcError>,
+    context: &str,
+) {
+    for known in [
+        Known::FilmLoad(p.film, p.load),
+        Known::FilmFlow(p.film, p.flow),
+        Known::LoadFlow(p.load, p.flow),
+        Known::SupplyFlow(p.supply, p.flow),
+        Known::LoadSupply(p.load, p.supply),
+    ] {
+        if let (Law::Direct | Law::Ratio(_), Known::LoadSupply(..)) = (law, known) {
+            assert!(solve(known).is_err());
+            continue;
+        }
+        let q = solve(known).unwrap();
+        for (a, b, what) in [
+            (q.film, p.film, "film"),
+            (q.load, p.load, "load"),
+            (q.supply, p.supply, "supply"),
+            (q.flow, p.flow, "flow"),
+            (q.recess, p.recess, "recess"),
+        ] {
+            assert!(
+                (a / b - 1.0).abs() < tolerance,
+                "{context} {law:?} {known:?} {what}: {a} vs {b}"
+            );
         }
     }
 }
