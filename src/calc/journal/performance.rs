@@ -184,18 +184,7 @@ pub fn positioned_film(
         let (f, p) = film::solve(base, mesh, stop, start.field, budget)?;
         return Ok((base, f, p));
     }
-    // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
-    // misalignment's direction is measured from it. A full film fed opposite the load starts
-    // at θ = −φ.
-    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
-    let place = |phi: f64| Film {
-        span: match model.arc {
-            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
-            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
-        },
-        tilt: model.misalignment.map(|m| (m.tilt, m.film_direction(phi))),
-        ..base
-    };
+    let place = |phi: f64| placed_at(base, phi);
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
     // equilibrium lies between (an arc wholly in the diverging film carries nothing).
     // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°. A tilted
@@ -216,10 +205,9 @@ pub fn positioned_film(
         }
         let (f, p) = film::solve(film, mesh, stop, warm.take(), budget)?;
         warm = Some(p.clone());
-        let (wa, wb) = (-f.load_radial, f.load_tangential);
-        let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+        let angle = attitude_mismatch(&f, phi);
         last = Some((phi, f, p));
-        Ok((wa * db - wb * da).atan2(wa * da + wb * db))
+        Ok(angle)
     };
     let x_tolerance = 1e-9;
     let secant = start.attitude.map(|guess| {
@@ -262,6 +250,29 @@ pub fn positioned_film(
         return Err(no_attitude(&model));
     }
     Ok((film, f, p))
+}
+
+/// `base` (a steady film of the model) placed at attitude φ: in the film frame the load line
+/// sits at θ = π − φ; the arc is centred on it and the misalignment's direction is measured from
+/// it. A full film fed opposite the load starts at θ = −φ.
+fn placed_at(base: Film, phi: f64) -> Film {
+    let model = base.physics;
+    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
+    Film {
+        span: match model.arc {
+            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
+        },
+        tilt: model.misalignment.map(|m| (m.tilt, m.film_direction(phi))),
+        ..base
+    }
+}
+
+/// The signed angle from the load line's direction to the load −F of a film placed at φ.
+fn attitude_mismatch(f: &FilmSolution, phi: f64) -> f64 {
+    let (wa, wb) = (-f.load_radial, f.load_tangential);
+    let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+    (wa * db - wb * da).atan2(wa * da + wb * db)
 }
 
 /// The widest interval of [0, `end`] where `clear` holds, its ends found to 1e-9 by bisection
@@ -989,6 +1000,11 @@ impl Searcher<'_> {
         tolerance: f64,
         budget: &Budget,
     ) -> Result<Start, CalcError> {
+        if placed(&self.physics) {
+            if let Some(found) = self.placed_polish(method, start, bracket, tolerance, budget)? {
+                return Ok(found);
+            }
+        }
         let u0 = start.u;
         let (mut ua, mut fa) = (u0, self.residual(method, u0, budget)?);
         if fa.abs() < 1e-10 {
@@ -1065,6 +1081,98 @@ impl Searcher<'_> {
         }
         self.bracketed(method, bracket, tolerance, budget)
             .map(|u| Start { u, slope: None })
+    }
+}
+
+impl Searcher<'_> {
+    /// A placed film's equilibrium as one root in (u, φ) of the balance's residual and the
+    /// attitude mismatch, each evaluation one film solve, instead of an attitude search inside
+    /// every step in u: Broyden's method ([`roots::broyden2`]) from `start`, at the attitude the
+    /// last film settled at (from rest, the attitude search at `start` gives it, from the
+    /// aligned short bearing's φ). Its first Jacobian is the balance's slope in u (the closed
+    /// form's, else the secant's first) and −1 in φ (the force turns with the line of centres);
+    /// the film solves update it. Steps are limited as the searches' (2 in u, 0.3 rad) and the
+    /// attitude kept in [0, 135°]; a touching trial is infeasible. Converged when the next step
+    /// is below `tolerance` in u and in φ (the last film evaluated is the root). None where it
+    /// does not settle, at a refusal, or for a method that extrapolates every evaluation: the
+    /// nested search then runs as before.
+    fn placed_polish(
+        &mut self,
+        method: Method,
+        start: Start,
+        bracket: (f64, f64),
+        tolerance: f64,
+        budget: &Budget,
+    ) -> Result<Option<Start>, CalcError> {
+        let Method::Numerical {
+            mesh,
+            stop,
+            richardson: false,
+            ..
+        } = method
+        else {
+            return Ok(None);
+        };
+        let (l_over_d, physics) = (self.l_over_d, self.physics);
+        let phi_start = match self.fields.attitude {
+            Some(phi) => phi,
+            None => {
+                let eps = to_eps(start.u)?;
+                let aligned = closed(eps, l_over_d, Approximation::Short, FilmModel::REYNOLDS);
+                let from = FilmStart {
+                    field: self.fields.take(mesh).field,
+                    attitude: Some(aligned.attitude_angle),
+                };
+                *self.evaluations += 1;
+                match positioned_film(eps, l_over_d, physics, mesh, stop, from, budget) {
+                    Ok((_, f, p)) => {
+                        let phi = f.attitude_angle();
+                        self.fields.keep(mesh, p, Some(phi));
+                        phi
+                    }
+                    Err(CalcError::Impossible { .. }) => return Ok(None),
+                    Err(e) => return Err(e),
+                }
+            }
+        };
+        let mut evaluate = |[u, phi]: [f64; 2]| -> Result<Option<[f64; 2]>, CalcError> {
+            let eps = to_eps(u)?;
+            let film = placed_at(
+                Film {
+                    physics,
+                    ..Film::steady(eps.get(), l_over_d)
+                },
+                phi,
+            );
+            if film.min_thickness() <= TOUCHING {
+                return Ok(None);
+            }
+            *self.evaluations += 1;
+            let (f, p) = film::solve(film, mesh, stop, self.fields.take(mesh).field, budget)?;
+            self.fields.keep(mesh, p, Some(phi));
+            let residual = match self.target.residual(&from_film(eps, &f, physics)) {
+                Ok(r) => r,
+                Err(CalcError::Impossible { .. }) => return Ok(None),
+                Err(e) => return Err(e),
+            };
+            Ok(Some([residual, attitude_mismatch(&f, phi)]))
+        };
+        let x0 = [start.u, phi_start];
+        let Some(f0) = evaluate(x0)? else {
+            return Ok(None);
+        };
+        let slope = start.slope.unwrap_or(-1.0);
+        let steps = roots::Steps {
+            max_step: [2.0, ATTITUDE_STEP],
+            bounds: [bracket, (0.0, 0.75 * PI)],
+            tolerance: [tolerance, tolerance],
+            max_evaluations: 16,
+        };
+        let found = roots::broyden2(evaluate, x0, f0, [[slope, 0.0], [0.0, -1.0]], steps)?;
+        Ok(found.map(|root| Start {
+            u: root.x[0],
+            slope: Some(root.jacobian[0][0]).filter(|s| s.is_finite() && *s < 0.0),
+        }))
     }
 }
 
