@@ -359,6 +359,11 @@ fn attitude_secant(
 ) -> Result<Option<f64>, CalcError> {
     let step_to = |from: f64, step: f64| from + step.clamp(-ATTITUDE_STEP, ATTITUDE_STEP);
     let (mut x0, mut f0) = (guess, mismatch(guess)?);
+    // A guess already on the root (a converged film solved again): the first step, with the
+    // slope −1, would be shorter than the tolerance.
+    if f0.abs() < x_tolerance {
+        return Ok(Some(guess));
+    }
     let mut x1 = step_to(x0, f0).clamp(lowest, highest);
     for _ in 1..ATTITUDE_SECANT_SOLVES {
         if x1 == x0 {
@@ -533,27 +538,40 @@ pub fn at_eccentricity(
 /// settled at on any mesh (where the next one's search starts).
 #[derive(Debug, Default)]
 struct Fields {
-    fields: Vec<(Mesh, Vec<f64>)>,
+    /// Per mesh: the field, and the attitude its placed film settled at.
+    fields: Vec<(Mesh, Vec<f64>, Option<f64>)>,
     attitude: Option<f64>,
 }
 
 impl Fields {
+    /// The field kept for `mesh`, and the attitude of that mesh's last placed film (else the
+    /// last placed film's on any mesh).
     fn take(&mut self, mesh: Mesh) -> FilmStart {
-        let field = self
-            .fields
-            .iter()
-            .position(|(m, _)| *m == mesh)
-            .map(|k| self.fields.swap_remove(k).1);
+        let (field, own) = match self.fields.iter().position(|(m, ..)| *m == mesh) {
+            Some(k) => {
+                let (_, field, own) = self.fields.swap_remove(k);
+                (Some(field), own)
+            }
+            None => (None, None),
+        };
         FilmStart {
             field,
-            attitude: self.attitude,
+            attitude: own.or(self.attitude),
         }
+    }
+
+    /// The attitude of `mesh`'s last placed film.
+    fn own_attitude(&self, mesh: Mesh) -> Option<f64> {
+        self.fields
+            .iter()
+            .find(|(m, ..)| *m == mesh)
+            .and_then(|(.., own)| *own)
     }
 
     /// The field solved on `mesh`, and its film's attitude when it was placed.
     fn keep(&mut self, mesh: Mesh, field: Vec<f64>, placed_at: Option<f64>) {
-        self.fields.retain(|(m, _)| *m != mesh);
-        self.fields.push((mesh, field));
+        self.fields.retain(|(m, ..)| *m != mesh);
+        self.fields.push((mesh, field, placed_at));
         if placed_at.is_some() {
             self.attitude = placed_at;
         }
@@ -607,11 +625,14 @@ fn at_eccentricity_from(
                 f64::INFINITY,
                 |m| (m == half).then_some(mesh),
                 |m, (coarse, coarse_field): &(FilmSolution, Vec<f64>)| {
+                    // This mesh's own last attitude (a search's, at a nearby ε) before the
+                    // coarse mesh's at this ε.
+                    let own = fields.own_attitude(m);
                     let mut start = fields.take(m);
                     if start.field.is_none() && !load_fixed {
                         start.field = Some(film::prolonged(&film, half, coarse_field, m));
                     }
-                    start.attitude = placed_at(coarse).or(start.attitude);
+                    start.attitude = own.or(placed_at(coarse)).or(start.attitude);
                     solve_on(m, start)
                 },
                 |(coarse, _), (fine, _)| {
@@ -1114,25 +1135,12 @@ impl Searcher<'_> {
             return Ok(None);
         };
         let (l_over_d, physics) = (self.l_over_d, self.physics);
+        // From rest, the aligned short bearing's attitude.
         let phi_start = match self.fields.attitude {
             Some(phi) => phi,
             None => {
                 let eps = to_eps(start.u)?;
-                let aligned = closed(eps, l_over_d, Approximation::Short, FilmModel::REYNOLDS);
-                let from = FilmStart {
-                    field: self.fields.take(mesh).field,
-                    attitude: Some(aligned.attitude_angle),
-                };
-                *self.evaluations += 1;
-                match positioned_film(eps, l_over_d, physics, mesh, stop, from, budget) {
-                    Ok((_, f, p)) => {
-                        let phi = f.attitude_angle();
-                        self.fields.keep(mesh, p, Some(phi));
-                        phi
-                    }
-                    Err(CalcError::Impossible { .. }) => return Ok(None),
-                    Err(e) => return Err(e),
-                }
+                closed(eps, l_over_d, Approximation::Short, FilmModel::REYNOLDS).attitude_angle
             }
         };
         let mut evaluate = |[u, phi]: [f64; 2]| -> Result<Option<[f64; 2]>, CalcError> {
