@@ -913,6 +913,22 @@ pub fn shifted_eccentricity(eps: f64, du: f64) -> f64 {
     1.0 / (1.0 + (-(to_u(eps) + du)).exp())
 }
 
+/// A placed film's attitude at ε guessed from its attitude φ0 at ε0: φ0 moved by the aligned
+/// short bearing's change of attitude between the two (the line of centres swings towards the
+/// load as ε grows, for arcs and tilts much as for the aligned journal).
+pub fn shifted_attitude(phi0: f64, eps0: f64, eps: f64, l_over_d: f64) -> f64 {
+    let short = |e: f64| match EccentricityRatio::new(e) {
+        Some(e) => closed(e, l_over_d, Approximation::Short, FilmModel::REYNOLDS).attitude_angle,
+        None => f64::NAN,
+    };
+    let moved = phi0 + short(eps) - short(eps0);
+    if moved.is_finite() {
+        moved
+    } else {
+        phi0
+    }
+}
+
 /// The balance's residual at ε(u) and the roots of it.
 struct Searcher<'a> {
     target: &'a dyn Balance,
