@@ -137,36 +137,22 @@ mod tests {
         for level in [Level::Fast, Level::Standard, Level::High] {
             assert!(at(Method::numerical(level, None, None)) < 0.005);
         }
-        // A tilted journal has the whole length: twice the rows, eight times the work.
+        // A tilted journal has the whole length: twice the rows, eight times the work; a 90°
+        // arc half the circle's columns.
+        let mesh = Mesh {
+            circumferential: 64,
+            axial_half: 8,
+        };
         let tilted = FilmModel {
             misalignment: Some(Misalignment::default()),
             ..film
         };
-        assert_eq!(
-            factorisation_size(
-                Mesh {
-                    circumferential: 64,
-                    axial_half: 8
-                },
-                &tilted
-            ),
-            (1024, 16)
-        );
-        // A 90° arc: half the circle's columns.
         let arc = FilmModel {
             arc: Some(0.5 * PI),
             ..film
         };
-        assert_eq!(
-            factorisation_size(
-                Mesh {
-                    circumferential: 64,
-                    axial_half: 8
-                },
-                &arc
-            ),
-            (256, 8)
-        );
+        assert_eq!(factorisation_size(mesh, &tilted), (1024, 16));
+        assert_eq!(factorisation_size(mesh, &arc), (256, 8));
     }
 
     #[test]
