@@ -1244,6 +1244,62 @@ mod tests {
         }
     }
 
+    /// A placed film's equilibrium (a misaligned journal, a 120° arc, both) is one search in
+    /// (u, φ): the load carried to 1e-6, in 17–34 film solves at S 0.05–1 (printed by
+    /// `--nocapture`); the nested searches, an attitude search inside every step in u, took
+    /// 32–69.
+    #[test]
+    fn a_placed_films_equilibrium_is_one_search() {
+        use crate::calc::journal::film::Misalignment;
+        let m = Method::numerical(Level::Standard, None, None);
+        let tilt = Some(Misalignment {
+            tilt: 0.5,
+            direction: 0.0,
+            from_line_of_centres: false,
+        });
+        let arc = Some(120f64.to_radians());
+        for (name, physics, most) in [
+            (
+                "misaligned",
+                FilmModel {
+                    misalignment: tilt,
+                    ..FilmModel::REYNOLDS
+                },
+                25,
+            ),
+            (
+                "120° arc",
+                FilmModel {
+                    arc,
+                    ..FilmModel::REYNOLDS
+                },
+                34,
+            ),
+            (
+                "both",
+                FilmModel {
+                    arc,
+                    misalignment: tilt,
+                    ..FilmModel::REYNOLDS
+                },
+                36,
+            ),
+        ] {
+            for s in [0.05, 0.2, 1.0] {
+                let budget = Budget::unlimited();
+                let (p, _) = equilibrium(s, 1.0, m, physics, &budget).unwrap();
+                let solves = budget.field_solves();
+                println!("{name} S {s}: {solves} film solves");
+                assert!(
+                    (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
+                    "{name} S {s}: {}",
+                    p.sommerfeld_number
+                );
+                assert!(solves <= most, "{name} S {s}: {solves} film solves");
+            }
+        }
+    }
+
     /// The error estimates bound the error: each level and an extrapolated explicit mesh
     /// against a Richardson-extrapolated 384 × 48 reference (whose own estimate is allowed
     /// for), over ε 0.1–0.99 and L/D 0.25–2.
