@@ -58,20 +58,6 @@ pub fn factorisation_size(mesh: Mesh, physics: &FilmModel) -> (usize, usize) {
     (columns * rows, rows)
 }
 
-/// The time the request's film solves take at least on `method`'s mesh (None for a closed form
-/// or a mass-conserving film).
-pub fn least_time(method: Method, physics: &FilmModel, load_given: bool) -> Option<Duration> {
-    let mesh = method.mesh()?;
-    if physics.mass_conserving.is_some() {
-        return None;
-    }
-    let (unknowns, band) = factorisation_size(mesh, physics);
-    let work = unknowns as f64 * (band * band) as f64;
-    Some(Duration::from_secs_f64(
-        factorisations(physics, load_given) * SECONDS_PER_BAND_WORK * work,
-    ))
-}
-
 /// A 422 naming the grid (or the fidelity, for a level's own mesh) when the film solves would
 /// take longer than the request's deadline leaves.
 pub fn check_affordable(
@@ -80,29 +66,54 @@ pub fn check_affordable(
     load_given: bool,
     budget: &Budget,
 ) -> Result<(), CalcError> {
-    let (Some(least), Some(mesh)) = (least_time(method, physics, load_given), method.mesh()) else {
+    let (Method::Numerical { level, mesh, .. }, None) = (method, physics.mass_conserving) else {
         return Ok(());
     };
+    let explicit = Method::numerical(level, None, None).mesh() != Some(mesh);
+    let size = factorisation_size(mesh, physics);
+    within_deadline(
+        mesh,
+        explicit,
+        size,
+        factorisations(physics, load_given),
+        budget,
+    )
+}
+
+/// As [`check_affordable`], for a room that tabulates the aligned film on `mesh` in `solves`
+/// film solves (each one factorisation at least): the `/dynamic` room's impedance table.
+pub fn check_table(
+    mesh: Mesh,
+    explicit: bool,
+    solves: usize,
+    budget: &Budget,
+) -> Result<(), CalcError> {
+    let size = factorisation_size(mesh, &FilmModel::REYNOLDS);
+    within_deadline(mesh, explicit, size, solves as f64, budget)
+}
+
+/// The refusal of `factorisations` of (unknowns, band) on `mesh` when they outlast the
+/// deadline.
+fn within_deadline(
+    mesh: Mesh,
+    explicit: bool,
+    (unknowns, band): (usize, usize),
+    factorisations: f64,
+    budget: &Budget,
+) -> Result<(), CalcError> {
+    let each = SECONDS_PER_BAND_WORK * unknowns as f64 * (band * band) as f64;
+    let least = Duration::from_secs_f64(factorisations * each);
     if budget.allows(least) {
         return Ok(());
     }
-    let explicit = match method {
-        Method::Numerical { level, .. } => {
-            Method::numerical(level, None, None).mesh() != Some(mesh)
-        }
-        Method::ClosedForm(_) => false,
-    };
-    let (unknowns, band) = factorisation_size(mesh, physics);
     let left = budget.remaining().unwrap_or_default().as_secs_f64();
     Err(CalcError::impossible(
         if explicit { "/fidelity/grid" } else { "/fidelity" },
         format!(
-            "the grid [{}, {}] would take about {:.1} s at least ({:.1} banded factorisations' worth of {unknowns} unknowns with a band of {band}, {:.2} s each), more than the {left:.1} s the request's deadline leaves: use a coarser grid (`high` is [192, 24])",
+            "the grid [{}, {}] would take about {:.1} s at least ({factorisations:.1} banded factorisations' worth of {unknowns} unknowns with a band of {band}, {each:.2} s each), more than the {left:.1} s the request's deadline leaves: use a coarser grid (`high` is [192, 24])",
             mesh.circumferential,
             mesh.axial_half,
             least.as_secs_f64(),
-            factorisations(physics, load_given),
-            SECONDS_PER_BAND_WORK * unknowns as f64 * (band * band) as f64,
         ),
     ))
 }
@@ -130,7 +141,10 @@ mod tests {
     #[test]
     fn the_estimate_stays_below_the_measured_time_and_parts_the_deadline() {
         let film = FilmModel::REYNOLDS;
-        let at = |m: Method| least_time(m, &film, true).unwrap().as_secs_f64();
+        let at = |m: Method| {
+            let (unknowns, band) = factorisation_size(m.mesh().unwrap(), &film);
+            factorisations(&film, true) * SECONDS_PER_BAND_WORK * (unknowns * band * band) as f64
+        };
         let (fits, late) = (at(grid(512, 256)), at(grid(1024, 256)));
         assert!(fits < 6.6, "{fits}");
         assert!(late < 12.2 && late > 10.0, "{late}");
