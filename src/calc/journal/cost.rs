@@ -80,16 +80,20 @@ pub fn check_affordable(
     )
 }
 
-/// As [`check_affordable`], for a room that tabulates the aligned film on `mesh` in `solves`
-/// film solves (each one factorisation at least): the `/dynamic` room's impedance table.
-pub fn check_table(
+/// As [`check_affordable`], for a room that solves the aligned film on `mesh` `solves` times,
+/// each one factorisation at least (the `/dynamic` room's impedance table, the squeezed
+/// journal's quadrature); a `periodic` film (a still film without rupture) numbers its
+/// columns round the seam, with twice the band.
+pub fn check_solves(
     mesh: Mesh,
+    periodic: bool,
     explicit: bool,
     solves: usize,
     budget: &Budget,
 ) -> Result<(), CalcError> {
-    let size = factorisation_size(mesh, &FilmModel::REYNOLDS);
-    within_deadline(mesh, explicit, size, solves as f64, budget)
+    let (unknowns, rows) = factorisation_size(mesh, &FilmModel::REYNOLDS);
+    let band = if periodic { 2 * rows } else { rows };
+    within_deadline(mesh, explicit, (unknowns, band), solves as f64, budget)
 }
 
 /// The refusal of `factorisations` of (unknowns, band) on `mesh` when they outlast the

@@ -793,7 +793,7 @@ impl Calculation for DynamicJournal {
             FilmChoice::Finite { mesh, density } => {
                 // A grid whose table the deadline cannot pay for is refused before any solve.
                 let explicit = Method::numerical(case.level, None, None).mesh() != Some(mesh);
-                cost::check_table(mesh, explicit, density.solves(), &budget)?;
+                cost::check_solves(mesh, false, explicit, density.solves(), &budget)?;
                 let film = FiniteSqueezeFilm { l_over_d, mesh };
                 let table = ImpedanceTable::build(film, density, &budget)?;
                 if table.cut_pressure > 1e-3 {
