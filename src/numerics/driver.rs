@@ -65,6 +65,12 @@ impl Budget {
         self.deadline.is_none_or(|d| Instant::now() + duration < d)
     }
 
+    /// The time left before the deadline (None without one).
+    pub fn remaining(&self) -> Option<std::time::Duration> {
+        self.deadline
+            .map(|d| d.saturating_duration_since(Instant::now()))
+    }
+
     /// True while the request is neither late nor cancelled.
     pub fn alive(&self) -> bool {
         let cancelled = self
@@ -278,6 +284,9 @@ mod tests {
         );
         assert!(budget.allows(Duration::from_secs(1)));
         assert!(!budget.allows(Duration::from_secs(120)));
+        let left = budget.remaining().unwrap();
+        assert!(left <= Duration::from_secs(60) && left > Duration::from_secs(59));
+        assert_eq!(Budget::unlimited().remaining(), None);
     }
 
     #[test]

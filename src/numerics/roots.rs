@@ -281,6 +281,103 @@ pub fn grow_bracket(mut f: impl FnMut(f64) -> f64, mut hi: f64) -> Result<f64, N
     Ok(hi)
 }
 
+/// Where [`broyden2`] ended: the root (the last point it evaluated and accepted), the Jacobian
+/// estimate there, and the evaluations it made.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Broyden2 {
+    pub x: [f64; 2],
+    pub jacobian: [[f64; 2]; 2],
+    pub evaluations: u32,
+}
+
+/// How far [`broyden2`] may go.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub struct Steps {
+    /// The longest step per component.
+    pub max_step: [f64; 2],
+    /// The box each component stays in.
+    pub bounds: [(f64, f64); 2],
+    /// Converged when the next quasi-Newton step is shorter than this in every component.
+    pub tolerance: [f64; 2],
+    pub max_evaluations: u32,
+}
+
+/// A root of two equations f(x) = 0 by Broyden's method (Broyden 1965, the rank-one update
+/// J ← J + (Δf − J Δx) Δxᵀ/|Δx|²), from x0 where f = f0 and a Jacobian estimate j0: each step is
+/// the quasi-Newton step −J⁻¹f, limited per component, kept in the bounds and halved (at most
+/// four times) while the trial point is infeasible (`f` gives None) or does not lower the
+/// residual scaled by j0's diagonal (|f₁/j0₁₁| + |f₂/j0₂₂|: each equation in its own variable's
+/// units). The root is the last accepted point once the next step is below the tolerance.
+/// `Ok(None)` when it does not settle (capped, a singular estimate, or halving fails): the
+/// caller's safer search takes over; an error of `f` ends it.
+pub fn broyden2<E>(
+    mut f: impl FnMut([f64; 2]) -> Result<Option<[f64; 2]>, E>,
+    x0: [f64; 2],
+    f0: [f64; 2],
+    j0: [[f64; 2]; 2],
+    steps: Steps,
+) -> Result<Option<Broyden2>, E> {
+    let scale = [j0[0][0].abs(), j0[1][1].abs()];
+    if !(scale[0] > 0.0 && scale[1] > 0.0) {
+        return Ok(None);
+    }
+    let merit = |v: [f64; 2]| (v[0] / scale[0]).abs() + (v[1] / scale[1]).abs();
+    let (mut x, mut fx, mut j) = (x0, f0, j0);
+    let mut evaluations = 0;
+    while evaluations < steps.max_evaluations {
+        let det = j[0][0] * j[1][1] - j[0][1] * j[1][0];
+        if !(det.is_finite() && det != 0.0) {
+            return Ok(None);
+        }
+        let newton = [
+            -(j[1][1] * fx[0] - j[0][1] * fx[1]) / det,
+            -(j[0][0] * fx[1] - j[1][0] * fx[0]) / det,
+        ];
+        if newton[0].abs() < steps.tolerance[0] && newton[1].abs() < steps.tolerance[1] {
+            return Ok(Some(Broyden2 {
+                x,
+                jacobian: j,
+                evaluations,
+            }));
+        }
+        let step: [f64; 2] =
+            std::array::from_fn(|k| newton[k].clamp(-steps.max_step[k], steps.max_step[k]));
+        let mut accepted = None;
+        let mut lambda = 1.0;
+        for _ in 0..5 {
+            let trial: [f64; 2] = std::array::from_fn(|k| {
+                (x[k] + lambda * step[k]).clamp(steps.bounds[k].0, steps.bounds[k].1)
+            });
+            evaluations += 1;
+            match f(trial)? {
+                Some(ft) if ft.iter().all(|v| v.is_finite()) && merit(ft) < merit(fx) => {
+                    accepted = Some((trial, ft));
+                    break;
+                }
+                _ if evaluations >= steps.max_evaluations => break,
+                _ => lambda *= 0.5,
+            }
+        }
+        let Some((xn, fn_)) = accepted else {
+            return Ok(None);
+        };
+        let dx = [xn[0] - x[0], xn[1] - x[1]];
+        let norm = dx[0] * dx[0] + dx[1] * dx[1];
+        if norm == 0.0 {
+            return Ok(None);
+        }
+        for r in 0..2 {
+            let predicted = j[r][0] * dx[0] + j[r][1] * dx[1];
+            let miss = fn_[r] - fx[r] - predicted;
+            for c in 0..2 {
+                j[r][c] += miss * dx[c] / norm;
+            }
+        }
+        (x, fx) = (xn, fn_);
+    }
+    Ok(None)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -405,5 +502,38 @@ mod tests {
         assert!(matches!(middle, Err(RootError::NonFinite { .. })));
         let none = brent_fallible(|x: f64| Ok::<f64, RootError>(x + 1.0), 0.0, 2.0, stop);
         assert!(matches!(none, Err(RootError::NoSignChange { .. })));
+    }
+
+    #[test]
+    fn broyden2_finds_a_coupled_root_and_hands_over_where_it_cannot() {
+        // x² + y − 3 = 0, x − y³ + 7 = 0: the root (1, 2), from a diagonal estimate.
+        let f = |[x, y]: [f64; 2]| -> Result<Option<[f64; 2]>, ()> {
+            Ok(Some([x * x + y - 3.0, x - y * y * y + 7.0]))
+        };
+        let steps = Steps {
+            max_step: [1.0, 1.0],
+            bounds: [(-10.0, 10.0), (-10.0, 10.0)],
+            tolerance: [1e-12, 1e-12],
+            max_evaluations: 40,
+        };
+        let x0 = [1.3, 1.8];
+        let j0 = [[2.6, 0.0], [0.0, -9.7]];
+        let found = broyden2(f, x0, f(x0).unwrap().unwrap(), j0, steps)
+            .unwrap()
+            .expect("a root");
+        assert!(
+            (found.x[0] - 1.0).abs() < 1e-10 && (found.x[1] - 2.0).abs() < 1e-10,
+            "{found:?}"
+        );
+        assert!(found.evaluations < 15, "{found:?}");
+        // Infeasible everywhere but the start: it hands over (None), it does not fail.
+        let walled = |_: [f64; 2]| -> Result<Option<[f64; 2]>, ()> { Ok(None) };
+        assert_eq!(broyden2(walled, x0, [1.0, 1.0], j0, steps), Ok(None));
+        // An error of the function ends the search with it.
+        let failing = |_: [f64; 2]| -> Result<Option<[f64; 2]>, &str> { Err("deadline") };
+        assert_eq!(
+            broyden2(failing, x0, [1.0, 1.0], j0, steps),
+            Err("deadline")
+        );
     }
 }

@@ -252,6 +252,46 @@ fn eccentricity_0_99_converges_on_the_clustered_mesh() {
 }
 
 /// Invalid plain-bearing requests answer 422 with a pointer.
+/// An explicit grid whose film solves the server's deadline cannot pay for is refused before
+/// any solve (a 422 naming the grid, with the estimate), where it used to run into a 504 after
+/// the whole wait (the README's request on [1024, 256] took 12.2 s in release); a fine grid
+/// within the estimate is solved as before.
+#[test]
+fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
+    let entry = find(PATH).expect("registered");
+    let deadline = stribeck::config::Config::default().deadline;
+    let readme = |grid: [u32; 2]| {
+        json!({
+            "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "speed_rpm": 3000, "lubricant": {"iso_vg": 32}, "load_n": 10000,
+            "inlet_temperature_c": 40, "fidelity": {"grid": grid}
+        })
+    };
+    let within = |body: &Value| {
+        (entry.execute)(
+            &serde_json::to_vec(body).unwrap(),
+            std::time::Instant::now() + deadline,
+            Default::default(),
+        )
+    };
+    match within(&readme([1024, 256])) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/fidelity/grid");
+            assert!(
+                message.contains("would take about 10.7 s at least")
+                    && message.contains("262144 unknowns with a band of 256"),
+                "{message}"
+            );
+        }
+        Err(e) => panic!("expected a 422 naming the grid, got {e:?}"),
+        Ok(_) => panic!("expected a 422 naming the grid, got a result"),
+    }
+    let fine = within(&readme([384, 48])).unwrap_or_else(|e| panic!("{e:?}"));
+    let v: Value = serde_json::from_slice(&fine.body).unwrap();
+    assert_eq!(v["solver"]["grid"], json!([384, 48]));
+    assert!((num(&v["result"], "load_n") - 10000.0).abs() < 1e-6);
+}
+
 #[test]
 fn invalid_requests_name_their_field() {
     let base = at_eccentricity(1.0, 0.5, json!({}));

@@ -25,6 +25,33 @@ fn readme() -> Value {
            "speed_rpm": 6000, "journal_mass_kg": 150, "film_model": "finite", "fidelity": "fast"})
 }
 
+/// A finite film's grid whose solves the server's deadline cannot pay for is refused before
+/// any solve, naming the grid with the estimate ([1024, 256] ran into a 504 after 10 s); the
+/// README's grid is solved.
+#[test]
+fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
+    let entry = find(PATH).expect("registered");
+    let deadline = stribeck::config::Config::default().deadline;
+    let within = |grid: [u32; 2]| {
+        let mut body = readme();
+        body["fidelity"] = json!({ "grid": grid });
+        (entry.execute)(
+            &serde_json::to_vec(&body).unwrap(),
+            std::time::Instant::now() + deadline,
+            Default::default(),
+        )
+    };
+    match within([1024, 256]) {
+        Err(Failure::Calc(stribeck::calc::CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/fidelity/grid");
+            assert!(message.contains("s at least"), "{message}");
+        }
+        Err(e) => panic!("expected a 422 naming the grid, got {e:?}"),
+        Ok(_) => panic!("expected a 422 naming the grid, got a result"),
+    }
+    assert!(within([48, 6]).is_ok());
+}
+
 /// Invalid requests, one row each: (patch, the pointer the 422 names, why).
 #[tokio::test]
 async fn invalid_requests_are_422s_naming_the_field() {

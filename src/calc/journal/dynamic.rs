@@ -9,6 +9,7 @@ use utoipa::ToSchema;
 
 use std::sync::Arc;
 
+use super::cost;
 use super::film::Mesh;
 use super::finite_moving_film::{
     FiniteSqueezeFilm, ImpedanceTable, TableDensity, TOP as FINITE_TOP,
@@ -790,6 +791,9 @@ impl Calculation for DynamicJournal {
                 speed_sum: 1.0,
             }),
             FilmChoice::Finite { mesh, density } => {
+                // A grid whose table the deadline cannot pay for is refused before any solve.
+                let explicit = Method::numerical(case.level, None, None).mesh() != Some(mesh);
+                cost::check_solves(mesh, false, explicit, density.solves(), &budget)?;
                 let film = FiniteSqueezeFilm { l_over_d, mesh };
                 let table = ImpedanceTable::build(film, density, &budget)?;
                 if table.cut_pressure > 1e-3 {
@@ -1283,6 +1287,34 @@ mod tests {
         let v = ok::<DynamicJournal>(&body);
         assert!(result_field(&v, "min_film_m") < 1e-7);
         assert!(warning_codes(&v).contains(&"film_thinner_than_1_percent_of_clearance".to_owned()));
+    }
+
+    /// A finite film's grid whose impedance table the deadline cannot pay for is refused before
+    /// any solve, naming the grid with the estimate ([1024, 256] ran into a 504); the table's
+    /// count is the one `ImpedanceTable::build` solves.
+    #[test]
+    fn a_grid_whose_table_outlasts_the_deadline_is_refused() {
+        let density = TableDensity::at(Level::Standard);
+        let film = FiniteSqueezeFilm {
+            l_over_d: 0.4,
+            mesh: Mesh {
+                circumferential: 16,
+                axial_half: 2,
+            },
+        };
+        let budget = crate::calc::Budget::unlimited();
+        let table = ImpedanceTable::build(film, density, &budget).unwrap();
+        assert_eq!(table.solves as usize, density.solves());
+        let mut body = example();
+        body["film_model"] = json!("finite");
+        body["fidelity"] = json!({"grid": [1024, 256]});
+        match post::<DynamicJournal>(&body) {
+            Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+                assert_eq!(pointer, "/fidelity/grid");
+                assert!(message.contains("s at least"), "{message}");
+            }
+            other => panic!("{other:?}"),
+        }
     }
 
     #[test]

@@ -137,6 +137,15 @@ impl TableDensity {
     }
 }
 
+impl TableDensity {
+    /// The film solves a table of this density takes ([`ImpedanceTable::build`]): the centred
+    /// journal once, then half the columns and one on each row up to the top.
+    pub fn solves(&self) -> usize {
+        let rows = (self.top.atanh() / self.step).ceil() as usize + 2;
+        1 + (rows - 1) * (self.columns / 2 + 1)
+    }
+}
+
 /// G(ε, α) and the peak pressure on a grid in (s = atanh ε, α), interpolated bicubically (see
 /// the module doc). Rows i = 0, 1, …, n + 1 at s = i·step (row n + 1 only feeds the last
 /// cell's stencil); columns j at α = 2πj/M, the lower half mirrored from the upper

@@ -6,6 +6,7 @@
 //! - `performance`: dimensionless performance at ε by closed form or numerics, equilibrium;
 //! - `film`: the numerical film (finite-volume Reynolds with cavitation);
 //! - `closed_form`: infinitely short and long bearings;
+//! - `cost`: what a film grid costs, so that one the deadline cannot pay for is refused first;
 //! - `eccentricity`: the eccentricity ratio ε, checked once;
 //! - `dynamics`: stiffness, damping and the whirl threshold;
 //! - `moving_film`: the short film's force on a moving journal; `finite_moving_film`: the finite
@@ -17,6 +18,7 @@
 //! - `feed`: Martin's feed flows (model); `feed_spec`: the request's `feed` object (wire).
 
 pub mod closed_form;
+pub mod cost;
 pub mod dynamic;
 pub mod dynamics;
 pub mod eccentricity;

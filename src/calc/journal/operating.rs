@@ -13,6 +13,7 @@ pub use solution::{
     BushTemperatures, CoefficientsMethod, Dynamics, Moment, ProfileNode, RotorStability, Solution,
 };
 
+use super::cost;
 use super::dynamics::Coefficients;
 use super::eccentricity::EccentricityRatio;
 use super::feed::{self, Feed, Flows};
@@ -389,6 +390,9 @@ pub fn solve(case: &Case, budget: &Budget) -> Result<Solution, CalcError> {
     let mut case = case.clone();
     case.turbulent = decisions::decide_turbulence(notes, &case, case.film_reynolds(inlet.t_in));
     let case = &case;
+    // A grid the deadline cannot pay for is refused before any solve.
+    let load_given = matches!(case.given, Given::Load(_));
+    cost::check_affordable(case.method, &case.physics(inlet.t_in), load_given, budget)?;
     let (isothermal, op) = equilibrium_at_effective_temperature(case, &inlet, budget, notes)?;
     let thd = if inlet.temperature_dependent {
         thermal::thd_temperatures(notes, case, inlet.t_in, isothermal.point.eccentricity_ratio)

@@ -184,18 +184,7 @@ pub fn positioned_film(
         let (f, p) = film::solve(base, mesh, stop, start.field, budget)?;
         return Ok((base, f, p));
     }
-    // In the film frame the load line sits at θ = π − φ; the arc is centred on it and the
-    // misalignment's direction is measured from it. A full film fed opposite the load starts
-    // at θ = −φ.
-    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
-    let place = |phi: f64| Film {
-        span: match model.arc {
-            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
-            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
-        },
-        tilt: model.misalignment.map(|m| (m.tilt, m.film_direction(phi))),
-        ..base
-    };
+    let place = |phi: f64| placed_at(base, phi);
     // φ = 0 centres the arc on h_min; φ → 90° puts it all in the converging film. The
     // equilibrium lies between (an arc wholly in the diverging film carries nothing).
     // Light loads on near-full arcs put φ close to (or past) 90°: search up to 135°. A tilted
@@ -216,10 +205,9 @@ pub fn positioned_film(
         }
         let (f, p) = film::solve(film, mesh, stop, warm.take(), budget)?;
         warm = Some(p.clone());
-        let (wa, wb) = (-f.load_radial, f.load_tangential);
-        let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+        let angle = attitude_mismatch(&f, phi);
         last = Some((phi, f, p));
-        Ok((wa * db - wb * da).atan2(wa * da + wb * db))
+        Ok(angle)
     };
     let x_tolerance = 1e-9;
     let secant = start.attitude.map(|guess| {
@@ -262,6 +250,29 @@ pub fn positioned_film(
         return Err(no_attitude(&model));
     }
     Ok((film, f, p))
+}
+
+/// `base` (a steady film of the model) placed at attitude φ: in the film frame the load line
+/// sits at θ = π − φ; the arc is centred on it and the misalignment's direction is measured from
+/// it. A full film fed opposite the load starts at θ = −φ.
+fn placed_at(base: Film, phi: f64) -> Film {
+    let model = base.physics;
+    let feed_at = model.arc.is_none().then(|| fed_at(&model)).flatten();
+    Film {
+        span: match model.arc {
+            Some(arc) => Some((PI - phi - 0.5 * arc, PI - phi + 0.5 * arc)),
+            None => feed_at.map(|offset| (offset - phi, offset + 2.0 * PI - phi)),
+        },
+        tilt: model.misalignment.map(|m| (m.tilt, m.film_direction(phi))),
+        ..base
+    }
+}
+
+/// The signed angle from the load line's direction to the load −F of a film placed at φ.
+fn attitude_mismatch(f: &FilmSolution, phi: f64) -> f64 {
+    let (wa, wb) = (-f.load_radial, f.load_tangential);
+    let (da, db) = ((PI - phi).cos(), (PI - phi).sin());
+    (wa * db - wb * da).atan2(wa * da + wb * db)
 }
 
 /// The widest interval of [0, `end`] where `clear` holds, its ends found to 1e-9 by bisection
@@ -348,6 +359,11 @@ fn attitude_secant(
 ) -> Result<Option<f64>, CalcError> {
     let step_to = |from: f64, step: f64| from + step.clamp(-ATTITUDE_STEP, ATTITUDE_STEP);
     let (mut x0, mut f0) = (guess, mismatch(guess)?);
+    // A guess already on the root (a converged film solved again): the first step, with the
+    // slope −1, would be shorter than the tolerance.
+    if f0.abs() < x_tolerance {
+        return Ok(Some(guess));
+    }
     let mut x1 = step_to(x0, f0).clamp(lowest, highest);
     for _ in 1..ATTITUDE_SECANT_SOLVES {
         if x1 == x0 {
@@ -522,27 +538,40 @@ pub fn at_eccentricity(
 /// settled at on any mesh (where the next one's search starts).
 #[derive(Debug, Default)]
 struct Fields {
-    fields: Vec<(Mesh, Vec<f64>)>,
+    /// Per mesh: the field, and the attitude its placed film settled at.
+    fields: Vec<(Mesh, Vec<f64>, Option<f64>)>,
     attitude: Option<f64>,
 }
 
 impl Fields {
+    /// The field kept for `mesh`, and the attitude of that mesh's last placed film (else the
+    /// last placed film's on any mesh).
     fn take(&mut self, mesh: Mesh) -> FilmStart {
-        let field = self
-            .fields
-            .iter()
-            .position(|(m, _)| *m == mesh)
-            .map(|k| self.fields.swap_remove(k).1);
+        let (field, own) = match self.fields.iter().position(|(m, ..)| *m == mesh) {
+            Some(k) => {
+                let (_, field, own) = self.fields.swap_remove(k);
+                (Some(field), own)
+            }
+            None => (None, None),
+        };
         FilmStart {
             field,
-            attitude: self.attitude,
+            attitude: own.or(self.attitude),
         }
+    }
+
+    /// The attitude of `mesh`'s last placed film.
+    fn own_attitude(&self, mesh: Mesh) -> Option<f64> {
+        self.fields
+            .iter()
+            .find(|(m, ..)| *m == mesh)
+            .and_then(|(.., own)| *own)
     }
 
     /// The field solved on `mesh`, and its film's attitude when it was placed.
     fn keep(&mut self, mesh: Mesh, field: Vec<f64>, placed_at: Option<f64>) {
-        self.fields.retain(|(m, _)| *m != mesh);
-        self.fields.push((mesh, field));
+        self.fields.retain(|(m, ..)| *m != mesh);
+        self.fields.push((mesh, field, placed_at));
         if placed_at.is_some() {
             self.attitude = placed_at;
         }
@@ -596,11 +625,14 @@ fn at_eccentricity_from(
                 f64::INFINITY,
                 |m| (m == half).then_some(mesh),
                 |m, (coarse, coarse_field): &(FilmSolution, Vec<f64>)| {
+                    // This mesh's own last attitude (a search's, at a nearby ε) before the
+                    // coarse mesh's at this ε.
+                    let own = fields.own_attitude(m);
                     let mut start = fields.take(m);
                     if start.field.is_none() && !load_fixed {
                         start.field = Some(film::prolonged(&film, half, coarse_field, m));
                     }
-                    start.attitude = placed_at(coarse).or(start.attitude);
+                    start.attitude = own.or(placed_at(coarse)).or(start.attitude);
                     solve_on(m, start)
                 },
                 |(coarse, _), (fine, _)| {
@@ -881,6 +913,22 @@ pub fn shifted_eccentricity(eps: f64, du: f64) -> f64 {
     1.0 / (1.0 + (-(to_u(eps) + du)).exp())
 }
 
+/// A placed film's attitude at ε guessed from its attitude φ0 at ε0: φ0 moved by the aligned
+/// short bearing's change of attitude between the two (the line of centres swings towards the
+/// load as ε grows, for arcs and tilts much as for the aligned journal).
+pub fn shifted_attitude(phi0: f64, eps0: f64, eps: f64, l_over_d: f64) -> f64 {
+    let short = |e: f64| match EccentricityRatio::new(e) {
+        Some(e) => closed(e, l_over_d, Approximation::Short, FilmModel::REYNOLDS).attitude_angle,
+        None => f64::NAN,
+    };
+    let moved = phi0 + short(eps) - short(eps0);
+    if moved.is_finite() {
+        moved
+    } else {
+        phi0
+    }
+}
+
 /// The balance's residual at ε(u) and the roots of it.
 struct Searcher<'a> {
     target: &'a dyn Balance,
@@ -989,6 +1037,11 @@ impl Searcher<'_> {
         tolerance: f64,
         budget: &Budget,
     ) -> Result<Start, CalcError> {
+        if placed(&self.physics) {
+            if let Some(found) = self.placed_polish(method, start, bracket, tolerance, budget)? {
+                return Ok(found);
+            }
+        }
         let u0 = start.u;
         let (mut ua, mut fa) = (u0, self.residual(method, u0, budget)?);
         if fa.abs() < 1e-10 {
@@ -1068,6 +1121,85 @@ impl Searcher<'_> {
     }
 }
 
+impl Searcher<'_> {
+    /// A placed film's equilibrium as one root in (u, φ) of the balance's residual and the
+    /// attitude mismatch, each evaluation one film solve, instead of an attitude search inside
+    /// every step in u: Broyden's method ([`roots::broyden2`]) from `start`, at the attitude the
+    /// last film settled at (from rest, the attitude search at `start` gives it, from the
+    /// aligned short bearing's φ). Its first Jacobian is the balance's slope in u (the closed
+    /// form's, else the secant's first) and −1 in φ (the force turns with the line of centres);
+    /// the film solves update it. Steps are limited as the searches' (2 in u, 0.3 rad) and the
+    /// attitude kept in [0, 135°]; a touching trial is infeasible. Converged when the next step
+    /// is below `tolerance` in u and in φ (the last film evaluated is the root). None where it
+    /// does not settle, at a refusal, or for a method that extrapolates every evaluation: the
+    /// nested search then runs as before.
+    fn placed_polish(
+        &mut self,
+        method: Method,
+        start: Start,
+        bracket: (f64, f64),
+        tolerance: f64,
+        budget: &Budget,
+    ) -> Result<Option<Start>, CalcError> {
+        let Method::Numerical {
+            mesh,
+            stop,
+            richardson: false,
+            ..
+        } = method
+        else {
+            return Ok(None);
+        };
+        let (l_over_d, physics) = (self.l_over_d, self.physics);
+        // From rest, the aligned short bearing's attitude.
+        let phi_start = match self.fields.attitude {
+            Some(phi) => phi,
+            None => {
+                let eps = to_eps(start.u)?;
+                closed(eps, l_over_d, Approximation::Short, FilmModel::REYNOLDS).attitude_angle
+            }
+        };
+        let mut evaluate = |[u, phi]: [f64; 2]| -> Result<Option<[f64; 2]>, CalcError> {
+            let eps = to_eps(u)?;
+            let film = placed_at(
+                Film {
+                    physics,
+                    ..Film::steady(eps.get(), l_over_d)
+                },
+                phi,
+            );
+            if film.min_thickness() <= TOUCHING {
+                return Ok(None);
+            }
+            *self.evaluations += 1;
+            let (f, p) = film::solve(film, mesh, stop, self.fields.take(mesh).field, budget)?;
+            self.fields.keep(mesh, p, Some(phi));
+            let residual = match self.target.residual(&from_film(eps, &f, physics)) {
+                Ok(r) => r,
+                Err(CalcError::Impossible { .. }) => return Ok(None),
+                Err(e) => return Err(e),
+            };
+            Ok(Some([residual, attitude_mismatch(&f, phi)]))
+        };
+        let x0 = [start.u, phi_start];
+        let Some(f0) = evaluate(x0)? else {
+            return Ok(None);
+        };
+        let slope = start.slope.unwrap_or(-1.0);
+        let steps = roots::Steps {
+            max_step: [2.0, ATTITUDE_STEP],
+            bounds: [bracket, (0.0, 0.75 * PI)],
+            tolerance: [tolerance, tolerance],
+            max_evaluations: 16,
+        };
+        let found = roots::broyden2(evaluate, x0, f0, [[slope, 0.0], [0.0, -1.0]], steps)?;
+        Ok(found.map(|root| Start {
+            u: root.x[0],
+            slope: Some(root.jacobian[0][0]).filter(|s| s.is_finite() && *s < 0.0),
+        }))
+    }
+}
+
 /// Where a search starts: u, and the residual's slope there when known.
 #[derive(Debug, Clone, Copy)]
 struct Start {
@@ -1109,6 +1241,62 @@ mod tests {
                 p.sommerfeld_number
             );
             assert!(n < 20, "S {s}: {n} film solves");
+        }
+    }
+
+    /// A placed film's equilibrium (a misaligned journal, a 120° arc, both) is one search in
+    /// (u, φ): the load carried to 1e-6, in 17–34 film solves at S 0.05–1 (printed by
+    /// `--nocapture`); the nested searches, an attitude search inside every step in u, took
+    /// 32–69.
+    #[test]
+    fn a_placed_films_equilibrium_is_one_search() {
+        use crate::calc::journal::film::Misalignment;
+        let m = Method::numerical(Level::Standard, None, None);
+        let tilt = Some(Misalignment {
+            tilt: 0.5,
+            direction: 0.0,
+            from_line_of_centres: false,
+        });
+        let arc = Some(120f64.to_radians());
+        for (name, physics, most) in [
+            (
+                "misaligned",
+                FilmModel {
+                    misalignment: tilt,
+                    ..FilmModel::REYNOLDS
+                },
+                25,
+            ),
+            (
+                "120° arc",
+                FilmModel {
+                    arc,
+                    ..FilmModel::REYNOLDS
+                },
+                34,
+            ),
+            (
+                "both",
+                FilmModel {
+                    arc,
+                    misalignment: tilt,
+                    ..FilmModel::REYNOLDS
+                },
+                36,
+            ),
+        ] {
+            for s in [0.05, 0.2, 1.0] {
+                let budget = Budget::unlimited();
+                let (p, _) = equilibrium(s, 1.0, m, physics, &budget).unwrap();
+                let solves = budget.field_solves();
+                println!("{name} S {s}: {solves} film solves");
+                assert!(
+                    (p.sommerfeld_number / s - 1.0).abs() < 1e-6,
+                    "{name} S {s}: {}",
+                    p.sommerfeld_number
+                );
+                assert!(solves <= most, "{name} S {s}: {solves} film solves");
+            }
         }
     }
 

@@ -231,7 +231,9 @@ pub struct PlainInput {
     /// `closed_form`, `fast`, `standard` (default), `high`, or `{"grid": [circumferential 16…1024,
     /// half-length axial 2…256], "tolerance": 1e-14…1e-3}` (the tolerance stops the
     /// mass-conserving film's sweeps; the Reynolds-condition film is solved exactly). An explicit
-    /// grid of at least 96 × 12 that halves exactly is Richardson-extrapolated like `high`.
+    /// grid of at least 96 × 12 that halves exactly is Richardson-extrapolated like `high`; a
+    /// grid whose banded solves would outlast the request's deadline is refused at once (422
+    /// at `/fidelity/grid`, with the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
     /// Which closed form `fidelity: closed_form` uses (default `auto`).

@@ -200,14 +200,14 @@ pub enum WhirlFilm {
 }
 
 impl WhirlFilm {
-    fn method(self) -> Method {
+    pub fn method(self) -> Method {
         match self {
             WhirlFilm::Finite(m) => m,
             _ => Method::ClosedForm(Approximation::Short),
         }
     }
 
-    fn physics(self) -> FilmModel {
+    pub fn physics(self) -> FilmModel {
         FilmModel {
             cavitation: self != WhirlFilm::ShortFull,
             ..FilmModel::REYNOLDS

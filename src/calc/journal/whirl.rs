@@ -7,6 +7,7 @@ use std::sync::Arc;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::cost;
 use super::dynamics::Coefficients;
 use super::film::Mesh;
 use super::finite_moving_film::{FiniteSqueezeFilm, ImpedanceTable, TableDensity};
@@ -367,6 +368,9 @@ impl Calculation for Whirl {
         let budget = ctx.budget();
         let solves_before = budget.field_solves();
         let rotor = case.rotor;
+        // A finite film's grid the deadline cannot pay for is refused before any solve (every
+        // question here starts with an equilibrium search).
+        cost::check_affordable(rotor.film.method(), &rotor.film.physics(), true, &budget)?;
         let mut evaluations = 0;
         let at_speed = match case.speed_rpm {
             Some(n) => {

@@ -20,6 +20,7 @@
 use std::cell::Cell;
 
 use super::long_journal::FilmExtent;
+use crate::calc::journal::cost;
 use crate::calc::journal::film::{self, Film, FilmModel, Mesh};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::{Level, SolverReport};
@@ -70,6 +71,9 @@ impl Numerical {
         }
     }
 }
+
+/// Film solves a squeeze takes at least: one Gauss–Kronrod panel's 15 nodes and the two ends.
+const LEAST_SOLVES: usize = 17;
 
 /// Sweep stopping the film solve takes; both squeeze films are direct solves that do not use it.
 const FILM_STOP: Stopping = Stopping {
@@ -133,6 +137,11 @@ pub fn squeeze(
     budget: &Budget,
 ) -> Result<FiniteSqueeze, CalcError> {
     let mesh = numerical.mesh;
+    // A grid the deadline cannot pay for is refused before any solve: the quadrature's first
+    // Gauss–Kronrod panel and the two ends take 17 solves on the mesh at least.
+    let explicit = Numerical::at(numerical.level, None, None, l_over_d).mesh != mesh;
+    let periodic = extent != FilmExtent::Cavitated;
+    cost::check_solves(mesh, periodic, explicit, LEAST_SOLVES, budget)?;
     let worst_residual = Cell::new(0.0f64);
     let load = |eps: f64, m: Mesh| {
         load_coefficient(eps, l_over_d, extent, m, budget).map(|(w, r)| {

@@ -6,12 +6,33 @@ use super::*;
 use crate::calc::journal::film::Mesh;
 use crate::calc::squeeze::finite_journal::load_coefficient;
 use crate::calc::testing::{assert_rel, invalid_pointers, ok, post, result_field};
-use crate::calc::Budget;
+use crate::calc::{Budget, Failure};
 use serde_json::{json, Value};
 
 const INCH: f64 = 0.0254;
 const LBF: f64 = 4.448_221_615_260_5;
 const REYN: f64 = 6_894.757_293_168;
+
+/// A grid whose film solves the deadline cannot pay for is refused before any solve, naming
+/// the grid with the estimate ([1024, 256] ran into a 504 after 10 s; the cavitated film 17
+/// solves at least, the full film's periodic band twice as wide); the examples' grids are
+/// solved.
+#[test]
+fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
+    let deadline = crate::config::Config::default().deadline;
+    for film in ["cavitated", "full"] {
+        let body = serde_json::to_vec(&piston_pin(film, json!({"grid": [1024, 256]}))).unwrap();
+        let at_the_server = std::time::Instant::now() + deadline;
+        match crate::calc::execute::<SqueezeJournal>(&body, at_the_server, Default::default()) {
+            Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+                assert_eq!(pointer, "/fidelity/grid");
+                assert!(message.contains("s at least"), "{message}");
+            }
+            other => panic!("{film}: {other:?}"),
+        }
+        ok::<SqueezeJournal>(&piston_pin(film, json!({"grid": [64, 8]})));
+    }
+}
 
 /// Ex 9.2 / 9.4: piston pin D = L = 1.5 in, C = 0.001 in, μ = 2.1e-6 reyn, W = 100 psi on a 4 in
 /// piston = 1256.64 lbf, h_min 0.0005 → 0.0001 in (ε 0.5 → 0.9).

@@ -188,11 +188,22 @@ pub(super) fn dynamic_coefficients(
         })
     };
     let failure = std::cell::RefCell::new(None);
-    // Each point of the locus starts from the field of the last.
-    let mut locus_field = FilmStart::default();
+    // Each point of the locus starts from the field of the last, and a placed film from the
+    // last attitude moved as the short bearing's moves between the two ε (the first from the
+    // operating point's).
+    let mut locus_field = FilmStart {
+        field: None,
+        attitude: Some(op.point.attitude_angle),
+    };
+    let mut last_eps = eps;
     // S at each ε the margin was taken at: the threshold's speed is read from the last.
     let mut locus: Vec<(f64, f64)> = Vec::new();
     let mut margin = |e: f64| -> f64 {
+        let ld = case.geometry.l_over_d();
+        locus_field.attitude = locus_field
+            .attitude
+            .map(|phi| performance::shifted_attitude(phi, last_eps, e, ld));
+        last_eps = e;
         match locus_physics(e)
             .and_then(|ph| coefficients_at(case, search, ratio(e)?, ph, &mut locus_field, budget))
         {
