@@ -7,38 +7,23 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, refused, spawn_app};
+use crate::helpers::{assert_all_finite, example_patched, patched, refused, spawn_app};
 
 const SPLIT: &str = "/v1/composite-bearings/speed-split";
 const START: &str = "/v1/composite-bearings/start-up";
 const ORBIT: &str = "/v1/composite-bearings/orbit";
 
 fn start(extra: Value) -> Value {
-    let mut body: Value = serde_json::from_str(find(START).unwrap().example).unwrap();
-    for (k, v) in extra.as_object().unwrap() {
-        if v.is_null() {
-            body.as_object_mut().unwrap().remove(k);
-        } else {
-            body[k] = v.clone();
-        }
-    }
-    body
+    example_patched(START, &extra)
 }
 
 fn split(extra: Value) -> Value {
-    let mut body = json!({
+    let body = json!({
         "journal_radius_m": 0.05, "sleeve_length_m": 0.05, "radial_clearance_m": 5e-5,
         "lubricant": {"viscosity_pa_s": 0.03}, "journal_speed_rpm": 3000,
         "load_n": 5000, "restraint_coefficient_kg_m2": 0.01
     });
-    for (k, v) in extra.as_object().unwrap() {
-        if v.is_null() {
-            body.as_object_mut().unwrap().remove(k);
-        } else {
-            body[k] = v.clone();
-        }
-    }
-    body
+    patched(body, &extra)
 }
 
 #[tokio::test]

@@ -5,19 +5,15 @@
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use stribeck::calc::{find, Failure};
+use stribeck::calc::Failure;
 
 use crate::gas::run;
-use crate::helpers::{assert_all_finite, refused, spawn_app};
+use crate::helpers::{assert_all_finite, example_patched, refused, spawn_app};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-journal";
 
 fn example(extra: Value) -> Value {
-    let mut body: Value = serde_json::from_str(find(PATH).unwrap().example).unwrap();
-    for (k, v) in extra.as_object().unwrap() {
-        body[k] = v.clone();
-    }
-    body
+    example_patched(PATH, &extra)
 }
 
 #[tokio::test]

@@ -4,23 +4,15 @@
 
 use proptest::prelude::*;
 use serde_json::{json, Value};
-use stribeck::calc::{find, CalcError, Failure};
+use stribeck::calc::{CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, refused, spawn_app};
+use crate::helpers::{assert_all_finite, example_patched, refused, spawn_app};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-thrust";
 
 /// The registered example with `extra`'s fields set (null removes one).
 fn body(extra: Value) -> Value {
-    let mut body: Value = serde_json::from_str(find(PATH).unwrap().example).unwrap();
-    for (k, v) in extra.as_object().unwrap() {
-        if v.is_null() {
-            body.as_object_mut().unwrap().remove(k);
-        } else {
-            body[k] = v.clone();
-        }
-    }
-    body
+    example_patched(PATH, &extra)
 }
 
 #[tokio::test]

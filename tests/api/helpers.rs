@@ -169,3 +169,21 @@ pub async fn refused<const N: usize>(app: &TestApp, path: &str, rows: [(Value, &
         );
     }
 }
+
+/// `body` with `patch`'s top-level fields set, a null removing the field.
+pub fn patched(mut body: Value, patch: &Value) -> Value {
+    for (k, v) in patch.as_object().unwrap() {
+        if v.is_null() {
+            body.as_object_mut().unwrap().remove(k);
+        } else {
+            body[k] = v.clone();
+        }
+    }
+    body
+}
+
+/// A room's OpenAPI example, [`patched`].
+pub fn example_patched(path: &str, patch: &Value) -> Value {
+    let example = serde_json::from_str(stribeck::calc::find(path).unwrap().example).unwrap();
+    patched(example, patch)
+}

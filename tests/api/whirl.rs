@@ -6,7 +6,7 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, Failure};
 
-use crate::helpers::{assert_all_finite, spawn_app};
+use crate::helpers::{assert_all_finite, patched, spawn_app};
 
 const PATH: &str = "/v1/journal-bearings/whirl";
 
@@ -118,14 +118,7 @@ async fn invalid_requests_are_422s_naming_the_field() {
         ),
     ];
     for (patch, pointer, why) in rows {
-        let mut body = readme();
-        for (k, v) in patch.as_object().unwrap() {
-            if v.is_null() {
-                body.as_object_mut().unwrap().remove(k);
-            } else {
-                body[k] = v.clone();
-            }
-        }
+        let body = patched(readme(), &patch);
         let reply = app.post_json(PATH, &body).await;
         assert_eq!(reply.status, 422, "{why}: {}", reply.text);
         assert!(

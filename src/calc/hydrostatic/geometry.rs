@@ -1,7 +1,7 @@
 //! A hydrostatic pad's geometry as the film sees it: the effective area A_eff (W = A_eff·p_r),
-//! the flow coefficient B̄ (Q = B̄ h³ p_r/μ), the land friction per unit μω/h or μU/h, and the
-//! lengths the validity checks need, and the lands as the turbulent film law sees them (`lands`).
-//! Parallel film, laminar, isoviscous, deep recess
+//! the flow coefficient B̄ (Q = B̄ h³ p_r/μ), the land friction per unit μω/h or μU/h, the
+//! lengths the validity checks need, and the lands as the turbulent film law sees them
+//! (`lands`). Parallel film, isoviscous, deep recess, laminar unless turbulence applies
 //! (Khonsari & Booser §10.3, §10.7, Prob. 10.4; Stachowiak & Batchelor §6.2–6.3).
 
 use std::f64::consts::PI;
