@@ -58,31 +58,44 @@ pub fn brent(
     brent_bracketed(f, (a, fa), (b, fb), stop)
 }
 
-/// [`brent`] over an f whose evaluations can fail (a nested solve): the first failure ends the
-/// search and is returned as it was, else the search's own outcome (as `E`).
-pub fn brent_fallible<E: From<RootError>>(
+/// Runs `search` over f's values, the first failed evaluation of f (a nested solve) standing
+/// for the search's outcome: `Err` with it, else `Ok` with what the search found.
+fn with_failures<E>(
     mut f: impl FnMut(f64) -> Result<f64, E>,
+    search: impl FnOnce(&mut dyn FnMut(f64) -> f64) -> Result<Root, RootError>,
+) -> Result<Result<Root, RootError>, E> {
+    let mut failure = None;
+    let root = search(&mut |x| match f(x) {
+        Ok(v) => v,
+        Err(e) => {
+            failure.get_or_insert(e);
+            f64::NAN
+        }
+    });
+    failure.map_or(Ok(root), Err)
+}
+
+/// [`brent`] over an f whose evaluations can fail: the first failure ends the search and is
+/// returned as it was, else the search's own outcome (as `E`).
+pub fn brent_fallible<E: From<RootError>>(
+    f: impl FnMut(f64) -> Result<f64, E>,
     a: f64,
     b: f64,
     stop: Stopping,
 ) -> Result<Root, E> {
-    let mut failure = None;
-    let root = brent(
-        |x| match f(x) {
-            Ok(v) => v,
-            Err(e) => {
-                failure.get_or_insert(e);
-                f64::NAN
-            }
-        },
-        a,
-        b,
-        stop,
-    );
-    match failure {
-        Some(e) => Err(e),
-        None => root.map_err(E::from),
-    }
+    with_failures(f, |g| brent(g, a, b, stop))?.map_err(E::from)
+}
+
+/// [`secant_bracketed`] over an f whose evaluations can fail: `Err` with the first failure,
+/// else `Ok` with the search's outcome, for the caller to read (a bracket without a sign change
+/// is often a refusal of its own).
+pub fn secant_fallible<E>(
+    f: impl FnMut(f64) -> Result<f64, E>,
+    lo: (f64, f64),
+    hi: (f64, f64),
+    stop: Stopping,
+) -> Result<Result<Root, RootError>, E> {
+    with_failures(f, |g| secant_bracketed(g, lo, hi, stop))
 }
 
 /// [`brent`] from a bracket whose ends the caller has already evaluated (f(a), f(b)), for a
@@ -502,6 +515,22 @@ mod tests {
         assert!(matches!(middle, Err(RootError::NonFinite { .. })));
         let none = brent_fallible(|x: f64| Ok::<f64, RootError>(x + 1.0), 0.0, 2.0, stop);
         assert!(matches!(none, Err(RootError::NoSignChange { .. })));
+        // The secant's form keeps the search's own outcome apart from the failure.
+        let f = |x: f64| if x > 1.5 { Err("failed") } else { Ok(x - 1.0) };
+        let inner = secant_fallible(f, (0.0, -1.0), (1.2, 0.2), stop).unwrap();
+        assert!((inner.unwrap().x - 1.0).abs() < 1e-12);
+        // Its first step from (0, −1) and (2, 1) lands on 1, where this f fails.
+        let near_one = |x: f64| {
+            if (x - 1.0).abs() < 0.1 {
+                Err("failed")
+            } else {
+                Ok(x - 1.0)
+            }
+        };
+        let outer = secant_fallible(near_one, (0.0, -1.0), (2.0, 1.0), stop);
+        assert_eq!(outer.unwrap_err(), "failed");
+        let apart = secant_fallible(f, (0.0, -1.0), (0.5, -0.5), stop).unwrap();
+        assert!(matches!(apart, Err(RootError::NoSignChange { .. })));
     }
 
     #[test]

@@ -19,7 +19,7 @@ use crate::calc::range_schemas;
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level, SolverReport};
-use crate::numerics::roots::{secant_bracketed, RootError, Stopping};
+use crate::numerics::roots::{secant_fallible, RootError, Stopping};
 
 pub struct GasJournal;
 
@@ -421,24 +421,16 @@ fn at_load(
     budget: &crate::calc::Budget,
 ) -> Result<(JournalEvaluated, SolverReport), CalcError> {
     let last: RefCell<Option<JournalEvaluated>> = RefCell::new(None);
-    let failed: RefCell<Option<CalcError>> = RefCell::new(None);
-    let residual_at = |s: f64| -> f64 {
+    let residual_at = |s: f64| -> Result<f64, CalcError> {
         let f = JournalFilm {
             eccentricity: unstretch(s),
             ..film
         };
         let warm = last.borrow().clone();
-        match evaluate(&f, tilt, method, warm.as_ref(), budget) {
-            Ok(done) => {
-                let w = done.performance.load();
-                *last.borrow_mut() = Some(done);
-                (w / target).ln()
-            }
-            Err(e) => {
-                *failed.borrow_mut() = Some(e);
-                f64::NAN
-            }
-        }
+        let done = evaluate(&f, tilt, method, warm.as_ref(), budget)?;
+        let w = done.performance.load();
+        *last.borrow_mut() = Some(done);
+        Ok((w / target).ln())
     };
     let largest = match tilt {
         None => MAX_ECCENTRICITY,
@@ -453,10 +445,7 @@ fn at_load(
         ));
     }
     let (s_lo, s_hi) = (stretch(MIN_ECCENTRICITY), stretch(largest));
-    let hi = residual_at(s_hi);
-    if let Some(e) = failed.borrow_mut().take() {
-        return Err(e);
-    }
+    let hi = residual_at(s_hi)?;
     if hi < 0.0 {
         return Err(CalcError::impossible(
             "/load_n",
@@ -467,8 +456,8 @@ fn at_load(
             ),
         ));
     }
-    let lo = residual_at(s_lo);
-    let root = secant_bracketed(
+    let lo = residual_at(s_lo)?;
+    let root = secant_fallible(
         residual_at,
         (s_lo, lo),
         (s_hi, hi),
@@ -477,10 +466,7 @@ fn at_load(
             x_tolerance: 4e-9,
             max_iterations: 60,
         },
-    );
-    if let Some(e) = failed.borrow_mut().take() {
-        return Err(e);
-    }
+    )?;
     let root = match root {
         Ok(r) => r,
         Err(RootError::NoSignChange { .. }) => {

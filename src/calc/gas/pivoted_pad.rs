@@ -18,7 +18,7 @@ use crate::calc::{Budget, CalcError};
 use crate::fidelity::SolverReport;
 use crate::numerics::reynolds_gas::{self, FarEdge, GasGrid, GasProblem, GasStopping, Metric};
 use crate::numerics::richardson::{extrapolate, fine_error};
-use crate::numerics::roots::{secant_bracketed, Stopping};
+use crate::numerics::roots::{secant_fallible, Stopping};
 
 /// A pad solved at one tilt.
 #[derive(Debug, Clone)]
@@ -102,30 +102,18 @@ impl<'a> Solver<'a> {
     /// The pitch that zeroes the pitch moment with the roll held at 0, from rest.
     fn pitch_from_rest(&self, film: &PadFilm) -> Result<f64, CalcError> {
         let (back, front) = film.pitches_to_film(MARCH_FILM_FLOOR);
-        let failed: RefCell<Option<CalcError>> = RefCell::new(None);
-        let moment = |m: f64| -> f64 {
-            match self.solve(
-                film,
-                Tilt {
-                    pitch: m,
-                    roll: 0.0,
-                },
-            ) {
-                Ok(Some(s)) => s.performance.pitch_moment,
-                Ok(None) => f64::NAN,
-                Err(e) => {
-                    *failed.borrow_mut() = Some(e);
-                    f64::NAN
-                }
-            }
-        };
-        let check = |failed: &RefCell<Option<CalcError>>| match failed.borrow_mut().take() {
-            Some(e) => Err(e),
-            None => Ok(()),
+        // NaN where the film would touch: the march steps past it, the secant refuses it.
+        let moment = |m: f64| -> Result<f64, CalcError> {
+            let tilt = Tilt {
+                pitch: m,
+                roll: 0.0,
+            };
+            Ok(self
+                .solve(film, tilt)?
+                .map_or(f64::NAN, |s| s.performance.pitch_moment))
         };
         let m0 = START_SHARE * front;
-        let g0 = moment(m0);
-        check(&failed)?;
+        let g0 = moment(m0)?;
         // March toward touching on the side the moment asks (a positive moment, the pressure
         // behind the pivot, asks for less pitch) until it changes sign.
         let end = if g0 > 0.0 { back } else { front };
@@ -133,8 +121,7 @@ impl<'a> Solver<'a> {
         let mut bracket = None;
         for share in [0.3, 0.6, 0.85, 0.95, 1.0] {
             let m = m0 + share * (end - m0);
-            let g = moment(m);
-            check(&failed)?;
+            let g = moment(m)?;
             if g * g0 <= 0.0 {
                 bracket = Some(((a, ga), (m, g)));
                 break;
@@ -144,7 +131,7 @@ impl<'a> Solver<'a> {
         let Some((lo, hi)) = bracket else {
             return Err(no_equilibrium(film, g0));
         };
-        let root = secant_bracketed(
+        let root = secant_fallible(
             moment,
             lo,
             hi,
@@ -152,8 +139,7 @@ impl<'a> Solver<'a> {
                 x_tolerance: 1e-6 * (front - back),
                 max_iterations: 60,
             },
-        );
-        check(&failed)?;
+        )?;
         root.map(|r| r.x)
             .map_err(|e| CalcError::from_root("pivoted_pad_pitch", e))
     }
@@ -450,27 +436,15 @@ fn balanced_at_load(
     budget: &Budget,
 ) -> Result<Balanced, CalcError> {
     let last: RefCell<Option<Balanced>> = RefCell::new(near.cloned());
-    let failed: RefCell<Option<CalcError>> = RefCell::new(None);
     let steps = RefCell::new(0u32);
     // ln(C_L/C_L,target) at u = ln C: falls as u grows.
-    let residual = |u: f64| -> f64 {
+    let residual = |u: f64| -> Result<f64, CalcError> {
         let previous = last.borrow().clone();
-        match balanced_at_clearance(scales, u.exp(), mesh, previous.as_ref(), budget) {
-            Ok(b) => {
-                *steps.borrow_mut() += b.newton_steps;
-                let w = b.solve.performance.load;
-                *last.borrow_mut() = Some(b);
-                w.ln() - target.ln()
-            }
-            Err(e) => {
-                *failed.borrow_mut() = Some(e);
-                f64::NAN
-            }
-        }
-    };
-    let check = || match failed.borrow_mut().take() {
-        Some(e) => Err(e),
-        None => Ok(()),
+        let b = balanced_at_clearance(scales, u.exp(), mesh, previous.as_ref(), budget)?;
+        *steps.borrow_mut() += b.newton_steps;
+        let w = b.solve.performance.load;
+        *last.borrow_mut() = Some(b);
+        Ok(w.ln() - target.ln())
     };
     let (u_min, u_max) = scales.load_search_range().ok_or_else(|| {
         CalcError::impossible(
@@ -478,25 +452,23 @@ fn balanced_at_load(
             "no clearance within the model's range gives a bearing number the film can be solved at",
         )
     })?;
-    let mut u0 = near
+    let start = near
         .map_or_else(
             || scales.clearance_at(LOAD_SEARCH_START).ln(),
             |b| b.clearance_m.ln(),
         )
         .clamp(u_min, u_max);
-    let mut r0 = residual(u0);
     // A pad without an equilibrium at the start may have one on a thicker film (a flat pad's
     // centre of pressure moves aft as Λ grows): from rest, start again at Λ = 1.
-    let unbalanced = matches!(
-        &*failed.borrow(),
-        Some(CalcError::Impossible { pointer, .. }) if pointer == "/pivot_angle_fraction"
-    );
-    if unbalanced && near.is_none() {
-        failed.borrow_mut().take();
-        u0 = scales.clearance_at(1.0).ln().clamp(u_min, u_max);
-        r0 = residual(u0);
-    }
-    check()?;
+    let (u0, r0) = match residual(start) {
+        Err(CalcError::Impossible { pointer, .. })
+            if pointer == "/pivot_angle_fraction" && near.is_none() =>
+        {
+            let u0 = scales.clearance_at(1.0).ln().clamp(u_min, u_max);
+            (u0, residual(u0)?)
+        }
+        first => (start, first?),
+    };
     // Step ln C (by 2 % near a guess, by ln 2 from rest) toward the target until the residual
     // changes sign, doubling the step.
     let mut step = if near.is_some() {
@@ -510,8 +482,7 @@ fn balanced_at_load(
         if u == a {
             break None;
         }
-        let r = residual(u);
-        check()?;
+        let r = residual(u)?;
         if r * ra <= 0.0 {
             break Some(((a, ra), (u, r)));
         }
@@ -537,7 +508,7 @@ fn balanced_at_load(
             },
         ));
     };
-    let root = secant_bracketed(
+    let root = secant_fallible(
         residual,
         lo,
         hi,
@@ -545,9 +516,8 @@ fn balanced_at_load(
             x_tolerance: 1e-9,
             max_iterations: 60,
         },
-    );
-    check()?;
-    let root = root.map_err(|e| CalcError::from_root("pivoted_pad_clearance", e))?;
+    )?
+    .map_err(|e| CalcError::from_root("pivoted_pad_clearance", e))?;
     // The secant's last evaluation is its answer, unless the search ended on a bracket end it
     // had evaluated earlier: balance there again.
     let mut done = last.into_inner().expect("the search balanced pads");

@@ -57,7 +57,7 @@ use crate::fidelity::{Level, SolverReport};
 use crate::numerics::driver::Stopped;
 use crate::numerics::reynolds_gas::{self, graded, GasGrid, GasProblem, GasStopping};
 use crate::numerics::richardson::{extrapolate, fine_error};
-use crate::numerics::roots::{secant_bracketed, RootError, Stopping};
+use crate::numerics::roots::{secant_bracketed, secant_fallible, RootError, Stopping};
 
 /// The largest bearing eccentricity ratio ε′ = e′/C′ solved: pad 3's pivot film is
 /// (C′/C)(1 − ε′), which a grid resolves down to about a twentieth of C′ (ε′ ≥ 1: contact).
@@ -613,35 +613,24 @@ pub fn at_load(
     budget: &Budget,
 ) -> Result<(BearingEquilibrium, SolverReport), CalcError> {
     let last: RefCell<Option<BearingEquilibrium>> = RefCell::new(None);
-    let failed: RefCell<Option<CalcError>> = RefCell::new(None);
-    let residual_at = |s: f64| -> f64 {
+    let residual_at = |s: f64| -> Result<f64, CalcError> {
         let warm = last.borrow().clone();
-        match at_eccentricity(
+        let done = at_eccentricity(
             bearing,
             unstretch(s),
             method,
             warm.as_ref(),
             budget,
             "/pads/pivot_offset",
-        ) {
-            Ok(done) => {
-                let w = done.load();
-                *last.borrow_mut() = Some(done);
-                // Apart: a target near the smallest double overflows w/target.
-                w.ln() - target.ln()
-            }
-            Err(err) => {
-                *failed.borrow_mut() = Some(err);
-                f64::NAN
-            }
-        }
+        )?;
+        let w = done.load();
+        *last.borrow_mut() = Some(done);
+        // Apart: a target near the smallest double overflows w/target.
+        Ok(w.ln() - target.ln())
     };
     // The light end first: a load near it need not wait on the heavy end's thin pad-3 film.
     let s_lo = stretch(MIN_ECCENTRICITY);
-    let lo = residual_at(s_lo);
-    if let Some(err) = failed.borrow_mut().take() {
-        return Err(err);
-    }
+    let lo = residual_at(s_lo)?;
     let below = || {
         CalcError::impossible(
             "/load_n",
@@ -655,15 +644,14 @@ pub fn at_load(
     // converge, the largest of 0.9 and 0.8 that solves.
     let mut upper = None;
     for e in [MAX_ECCENTRICITY, 0.9, 0.8] {
-        let hi = residual_at(stretch(e));
-        match failed.borrow_mut().take() {
-            None => {
+        match residual_at(stretch(e)) {
+            Ok(hi) => {
                 upper = Some((e, hi));
                 break;
             }
-            Some(CalcError::DeadlineExceeded) => return Err(CalcError::DeadlineExceeded),
-            Some(err) if e == 0.8 => return Err(err),
-            Some(_) => {}
+            Err(CalcError::DeadlineExceeded) => return Err(CalcError::DeadlineExceeded),
+            Err(err) if e == 0.8 => return Err(err),
+            Err(_) => {}
         }
     }
     let (e_hi, hi) = upper.expect("the loop returns unless an end solved");
@@ -677,7 +665,7 @@ pub fn at_load(
             ),
         ));
     }
-    let root = secant_bracketed(
+    let root = secant_fallible(
         residual_at,
         (s_lo, lo),
         (s_hi, hi),
@@ -686,10 +674,7 @@ pub fn at_load(
             x_tolerance: 4e-9,
             max_iterations: 60,
         },
-    );
-    if let Some(err) = failed.borrow_mut().take() {
-        return Err(err);
-    }
+    )?;
     let root = match root {
         Ok(r) => r,
         Err(RootError::NoSignChange { .. }) => return Err(below()),
@@ -698,10 +683,7 @@ pub fn at_load(
     // The secant's last evaluated point is the answer's film, unless it stopped at once on the
     // bracket's other end: solve that one again.
     if last.borrow().as_ref().map(|l| l.eccentricity) != Some(unstretch(root.x)) {
-        residual_at(root.x);
-        if let Some(err) = failed.borrow_mut().take() {
-            return Err(err);
-        }
+        residual_at(root.x)?;
     }
     let done = last
         .into_inner()
