@@ -156,7 +156,7 @@ fn grids_beyond_the_deadline_are_refused_with_their_estimate() {
                 json!({"eccentricity_ratio": null, "load_n": 20.0, "fidelity": {"grid": [512, 128]}}),
             ),
         ),
-        "would take about 73.6 s at least",
+        "would take about 18.5 s at least",
         "65536 unknowns with a band of 256",
     );
     refused_by_cost(

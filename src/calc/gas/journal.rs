@@ -617,7 +617,7 @@ impl Calculation for GasJournal {
         // again with slip if that decides so.
         let budget = ctx.budget();
         let least = match case.given {
-            Given::Eccentricity(_) => Least::ONE_FILM,
+            Given::Eccentricity(_) => Least::one_film(film.bearing_number),
             Given::Load(_) => Least::JOURNAL_BY_LOAD,
         };
         // The whirl threshold's scan, the synchronous ratio and the asked ones, at least.

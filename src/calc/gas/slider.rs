@@ -282,7 +282,7 @@ impl Calculation for GasSlider {
                 &slider_film::grid(&film, case.method.mesh),
                 FarEdge::Symmetry,
             ),
-            Least::ONE_FILM,
+            Least::one_film(film.bearing_number),
             &budget,
         )?;
         let evaluated = slider_film::evaluate(&film, case.method, &budget)?;
