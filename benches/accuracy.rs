@@ -168,7 +168,7 @@ fn ehl_line_growth(out: &mut String) {
         .iter()
         .map(|(m, slope)| format!("cells^{slope:.2} at M = {m}"))
         .collect();
-    let _ = writeln!(out, "\nFitted: time ∝ {}. Each Newton step solves with the exact Jacobian by GMRES, matrix-free, preconditioned by its banded part (a band LU, O(n)); what still grows as n² is the product with the influence matrix (once per GMRES iteration and per line-search trial) and its assembly, so the exponent lies between 1 and 2 at these grids (the dense LU it replaced grew as n^2.4–2.8). An FFT product would need a uniform grid: at the levels' cell counts a uniform grid does not even solve (the 32-cell start stalls at a scaled residual of 0.38 at M = 20), so the grid stays clustered at the inlet and the outlet.", fitted.join(", "));
+    let _ = writeln!(out, "\nFitted: time ∝ {}. Each Newton step solves with the exact Jacobian by GMRES, matrix-free, preconditioned by its banded part (a band LU, O(n)). The product with the influence matrix (once per GMRES iteration and per line-search trial) is a fast multipole product on the clustered grid (`numerics::log_fmm`: Chebyshev interpolation between well-separated clusters, exact entries nearby, 2e-13 of the dense product), O(n) to build and to apply, so the whole solve grows about linearly; the dense product it replaced (n² entries built and read per product) grew as n^1.7, and the dense LU before that as n^2.4–2.8. An FFT product would have needed a uniform grid, and at the levels' cell counts a uniform grid does not even solve (the 32-cell start stalls at a scaled residual of 0.38 at M = 20): so the grid stays clustered at the inlet and the outlet.", fitted.join(", "));
 }
 
 /// The least-squares slope of `ys` over `xs`.
