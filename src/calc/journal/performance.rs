@@ -740,7 +740,7 @@ fn three_mesh_estimate([fine, middle, coarse]: [f64; 3], r: f64) -> f64 {
 /// [`three_mesh_estimate`]'s observed order misleads: on [64, 8] at L/D 0.25, ε 0.9 it reported
 /// a 3.6th of the error. Against a converged reference over ε 0.1–0.99 and L/D 0.25–2 this
 /// bounds the error of every explicit mesh tried from [16, 4] to [200, 10], at most 0.68 of it
-/// ([`tests::error_estimates_bound_the_error`]).
+/// (the test `error_estimates_bound_the_error`; docs/accuracy.md).
 fn order_free_estimate([fine, middle, coarse]: [f64; 3]) -> f64 {
     ESTIMATE_SAFETY * (2.0 * (fine - middle).abs()).max((middle - coarse).abs()) / middle.abs()
 }
