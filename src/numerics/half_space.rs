@@ -8,14 +8,27 @@
 /// cell j ([`super::log_fmm`] applies the whole matrix).
 #[must_use]
 pub fn line_log_cell(x: f64, a: f64, b: f64) -> f64 {
-    let antiderivative = |t: f64| {
-        if t == 0.0 {
-            0.0
-        } else {
-            t * t.abs().ln() - t
-        }
-    };
-    antiderivative(x - a) - antiderivative(x - b)
+    log_antiderivative(x - a) - log_antiderivative(x - b)
+}
+
+/// [`line_log_cell`] at `x` for each cell between consecutive `faces`: one logarithm per face.
+pub fn line_log_cells(x: f64, faces: &[f64]) -> impl Iterator<Item = f64> + '_ {
+    let mut upper = log_antiderivative(x - faces[0]);
+    faces[1..].iter().map(move |&face| {
+        let lower = log_antiderivative(x - face);
+        let k = upper - lower;
+        upper = lower;
+        k
+    })
+}
+
+/// F(t) = t ln|t| − t, F(0) = 0.
+fn log_antiderivative(t: f64) -> f64 {
+    if t == 0.0 {
+        0.0
+    } else {
+        t * t.abs().ln() - t
+    }
 }
 
 /// Point contact. The integral of 1/r over the rectangle [x − hx/2, x + hx/2] × [y − hy/2,
@@ -62,6 +75,12 @@ mod tests {
                     })
                     .sum();
                 let got = line_log_cell(x, faces[j], faces[j + 1]);
+                let row: Vec<f64> = line_log_cells(x, &faces).collect();
+                assert!(
+                    (row[j] - got).abs() < 1e-15,
+                    "row {i}: {} against {got}",
+                    row[j]
+                );
                 // The midpoint rule converges slowly across the logarithm's singularity.
                 let inside = faces[j] < x && x < faces[j + 1];
                 let tol = if inside { 1e-5 } else { 1e-8 };

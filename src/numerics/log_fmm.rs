@@ -22,7 +22,7 @@
 
 use std::f64::consts::PI;
 
-use super::half_space::line_log_cell;
+use super::half_space::{line_log_cell, line_log_cells};
 use super::quadrature::gauss_legendre;
 
 /// Most cells in a leaf cluster. Near work per point grows as 3·LEAF, far work as 1/LEAF.
@@ -190,13 +190,14 @@ impl LineLogInfluence {
             let split = (lo + 1..hi)
                 .find(|&j| 0.5 * (self.faces[j] + self.faces[j + 1]) > middle)
                 .unwrap_or(hi - 1);
-            let nodes = chebyshev(left, right);
+            let own = Chebyshev::on(left, right);
             let children = [(lo, split), (split, hi)].map(|(a, b)| {
                 let child = self.cluster(a, b);
                 let c = &self.clusters[child];
-                let transfer = chebyshev(c.left, c.right)
+                let transfer = Chebyshev::on(c.left, c.right)
+                    .nodes
                     .iter()
-                    .flat_map(|&x| lagrange(&nodes, x))
+                    .flat_map(|&x| own.lagrange(x))
                     .collect();
                 (child, transfer)
             });
@@ -208,7 +209,7 @@ impl LineLogInfluence {
 
     /// A leaf's moments (Gauss–Legendre, exact for the polynomials) and point values.
     fn leaf(&self, lo: usize, hi: usize, left: f64, right: f64) -> Shape {
-        let nodes = chebyshev(left, right);
+        let own = Chebyshev::on(left, right);
         let rule = gauss_legendre(ORDER.div_ceil(2));
         let mut moments = Vec::with_capacity((hi - lo) * ORDER);
         let mut values = Vec::with_capacity((hi - lo) * ORDER);
@@ -217,12 +218,12 @@ impl LineLogInfluence {
             let mut integral = [0.0; ORDER];
             for &(t, w) in &rule {
                 let s = 0.5 * (a + b) + 0.5 * (b - a) * t;
-                for (m, l) in integral.iter_mut().zip(lagrange(&nodes, s)) {
+                for (m, l) in integral.iter_mut().zip(own.lagrange(s)) {
                     *m += 0.5 * (b - a) * w * l;
                 }
             }
             moments.extend_from_slice(&integral);
-            values.extend(lagrange(&nodes, self.points[j]));
+            values.extend(own.lagrange(self.points[j]));
         }
         Shape::Leaf { moments, values }
     }
@@ -238,20 +239,24 @@ impl LineLogInfluence {
             Shape::Leaf { .. } => None,
         };
         if gap >= t_width.max(s_width) {
-            let (xi, zeta) = (chebyshev(t.left, t.right), chebyshev(s.left, s.right));
+            let (xi, zeta) = (
+                Chebyshev::on(t.left, t.right),
+                Chebyshev::on(s.left, s.right),
+            );
             let m2l = xi
+                .nodes
                 .iter()
-                .flat_map(|x| zeta.iter().map(move |z| (x - z).abs().ln()))
+                .flat_map(|x| zeta.nodes.iter().map(move |z| (x - z).abs().ln()))
                 .collect();
             self.far.push((target, source, m2l));
             return;
         }
         match (children(t), children(s)) {
             (None, None) => {
-                let (t, s) = (t.lo..t.hi, s.lo..s.hi);
-                let block = t
-                    .flat_map(|i| s.clone().map(move |j| (i, j)))
-                    .map(|(i, j)| self.entry(i, j))
+                let faces = &self.faces[s.lo..=s.hi];
+                let block = self.points[t.lo..t.hi]
+                    .iter()
+                    .flat_map(|&x| line_log_cells(x, faces))
                     .collect();
                 self.near.push((target, source, block));
             }
@@ -264,25 +269,39 @@ impl LineLogInfluence {
     }
 }
 
-/// The ORDER Chebyshev points (first kind) of [left, right].
-fn chebyshev(left: f64, right: f64) -> [f64; ORDER] {
-    let (centre, half) = (0.5 * (left + right), 0.5 * (right - left));
-    std::array::from_fn(|l| centre + half * ((2 * l + 1) as f64 * PI / (2 * ORDER) as f64).cos())
+/// The ORDER Chebyshev points (first kind) of [left, right], with their barycentric weights
+/// (−1)^l sin((2l + 1)π/2n) (Berrut & Trefethen 2004).
+#[derive(Debug, Clone, Copy)]
+struct Chebyshev {
+    nodes: [f64; ORDER],
+    weights: [f64; ORDER],
 }
 
-/// The Lagrange polynomials of the Chebyshev `nodes` at x, by the barycentric formula (the
-/// first kind's weights (−1)^l sin((2l + 1)π/2n); Berrut & Trefethen 2004).
-fn lagrange(nodes: &[f64; ORDER], x: f64) -> [f64; ORDER] {
-    if let Some(hit) = nodes.iter().position(|&n| n == x) {
-        return std::array::from_fn(|l| if l == hit { 1.0 } else { 0.0 });
+impl Chebyshev {
+    fn on(left: f64, right: f64) -> Self {
+        let (centre, half) = (0.5 * (left + right), 0.5 * (right - left));
+        let angle = |l: usize| (2 * l + 1) as f64 * PI / (2 * ORDER) as f64;
+        Chebyshev {
+            nodes: std::array::from_fn(|l| centre + half * angle(l).cos()),
+            weights: std::array::from_fn(|l| {
+                if l % 2 == 0 {
+                    angle(l).sin()
+                } else {
+                    -angle(l).sin()
+                }
+            }),
+        }
     }
-    let terms: [f64; ORDER] = std::array::from_fn(|l| {
-        let weight = ((2 * l + 1) as f64 * PI / (2 * ORDER) as f64).sin();
-        let sign = if l % 2 == 0 { 1.0 } else { -1.0 };
-        sign * weight / (x - nodes[l])
-    });
-    let sum: f64 = terms.iter().sum();
-    terms.map(|t| t / sum)
+
+    /// The Lagrange polynomials of the nodes at x, by the barycentric formula.
+    fn lagrange(&self, x: f64) -> [f64; ORDER] {
+        if let Some(hit) = self.nodes.iter().position(|&n| n == x) {
+            return std::array::from_fn(|l| if l == hit { 1.0 } else { 0.0 });
+        }
+        let terms: [f64; ORDER] = std::array::from_fn(|l| self.weights[l] / (x - self.nodes[l]));
+        let sum: f64 = terms.iter().sum();
+        terms.map(|t| t / sum)
+    }
 }
 
 #[cfg(test)]
@@ -367,12 +386,14 @@ mod tests {
 
     #[test]
     fn lagrange_polynomials_interpolate_a_polynomial_exactly() {
-        let nodes = chebyshev(-0.3, 2.0);
-        let p = |x: f64| 1.0 - 2.0 * x + 0.5 * x.powi(7) - 0.01 * x.powi(15);
-        for x in [-0.3, 0.1, 1.234, 2.0] {
-            let value: f64 = lagrange(&nodes, x)
+        let points = Chebyshev::on(-0.3, 2.0);
+        // Degree ORDER − 1 = 13.
+        let p = |x: f64| 1.0 - 2.0 * x + 0.5 * x.powi(7) - 0.01 * x.powi(13);
+        for x in [-0.3, 0.1, 1.234, 2.0, points.nodes[3]] {
+            let value: f64 = points
+                .lagrange(x)
                 .iter()
-                .zip(&nodes)
+                .zip(&points.nodes)
                 .map(|(l, &n)| l * p(n))
                 .sum();
             assert!((value - p(x)).abs() < 1e-11 * p(x).abs().max(1.0), "{x}");

@@ -33,6 +33,7 @@ use crate::numerics::band_lu::{Band, BandLu};
 use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::gmres;
+use crate::numerics::half_space::line_log_cells;
 use crate::numerics::interpolate::linear;
 use crate::numerics::log_fmm::LineLogInfluence;
 use crate::numerics::newton::{self, LineSearch, NewtonSystem};
@@ -132,13 +133,16 @@ impl Grid {
         faces.push(x[n - 1]);
         let volume: Vec<f64> = faces.windows(2).map(|f| f[1] - f[0]).collect();
         let kernel = LineLogInfluence::new(&x, &faces);
-        let near = (0..n)
-            .flat_map(|i| (0..=2 * KERNEL_BAND).map(move |s| (i, (i + s).checked_sub(KERNEL_BAND))))
-            .map(|(i, j)| match j {
-                Some(j) if j < n => kernel.entry(i, j),
-                _ => 0.0,
-            })
-            .collect();
+        // Row i holds cells i − KERNEL_BAND ..= i + KERNEL_BAND, zero beyond the ends.
+        let mut near = vec![0.0; n * (2 * KERNEL_BAND + 1)];
+        for (i, row) in near.chunks_exact_mut(2 * KERNEL_BAND + 1).enumerate() {
+            let (lo, hi) = (i.saturating_sub(KERNEL_BAND), (i + KERNEL_BAND).min(n - 1));
+            let cells = line_log_cells(x[i], &faces[lo..=hi + 1]);
+            row[lo + KERNEL_BAND - i..]
+                .iter_mut()
+                .zip(cells)
+                .for_each(|(k, c)| *k = c);
+        }
         let hertz: Vec<f64> = x.iter().map(|&x| hertz_pressure(x)).collect();
         let base = kernel
             .apply(&hertz)
