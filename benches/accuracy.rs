@@ -414,6 +414,19 @@ fn journal_request(out: &mut String) {
             r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}}, "speed_rpm": 3000, "lubricant": {{"iso_vg": 32}}, "load_n": 10000, "inlet_temperature_c": 40, "fidelity": "{fidelity}"}}"#
         )
     };
+    // The request's median time and its film solves.
+    let timed = |body: &str| {
+        let run = || {
+            let far = Instant::now() + std::time::Duration::from_secs(60);
+            (entry.execute)(body.as_bytes(), far, Default::default()).unwrap()
+        };
+        let response: Value = serde_json::from_slice(&run().body).unwrap();
+        let solves = response["solver"]["film_solves"].as_u64().unwrap_or(0);
+        let whole = median_ms(|| {
+            std::hint::black_box(run());
+        });
+        (whole, solves)
+    };
     out.push_str(JOURNAL_REQUEST_HEADING);
     out.push_str("\n\n");
     out.push_str("The README's request (10 kN, ISO VG 32 at 40 °C inlet: the thermal balance, the equilibrium, stiffness and\n");
@@ -427,16 +440,7 @@ fn journal_request(out: &mut String) {
             Level::High => "high",
             _ => "standard",
         };
-        let body = request(name);
-        let run = || {
-            let far = Instant::now() + std::time::Duration::from_secs(60);
-            (entry.execute)(body.as_bytes(), far, Default::default()).unwrap()
-        };
-        let response: Value = serde_json::from_slice(&run().body).unwrap();
-        let solves = response["solver"]["film_solves"].as_u64().unwrap_or(0);
-        let whole = median_ms(|| {
-            std::hint::black_box(run());
-        });
+        let (whole, solves) = timed(&request(name));
         let one = median_ms(|| {
             std::hint::black_box(
                 performance::at_eccentricity(
@@ -464,16 +468,7 @@ fn journal_request(out: &mut String) {
         ("misaligned", r#""misalignment": {"slope_rad": 0.0005}"#),
     ] {
         for name in ["fast", "standard", "high"] {
-            let body = request(name).replacen('{', &format!("{{{extra}, "), 1);
-            let run = || {
-                let far = Instant::now() + std::time::Duration::from_secs(60);
-                (entry.execute)(body.as_bytes(), far, Default::default()).unwrap()
-            };
-            let response: Value = serde_json::from_slice(&run().body).unwrap();
-            let solves = response["solver"]["film_solves"].as_u64().unwrap_or(0);
-            let whole = median_ms(|| {
-                std::hint::black_box(run());
-            });
+            let (whole, solves) = timed(&request(name).replacen('{', &format!("{{{extra}, "), 1));
             let _ = writeln!(out, "| {variant} | {name} | {whole:.2} ms | {solves} |");
         }
     }
