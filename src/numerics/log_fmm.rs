@@ -13,7 +13,8 @@
 //!   one and s in the other, ln|x − s| ≈ Σ_l Σ_m L_l(x) ln|ξ_l − ζ_m| L_m(s), with ξ and ζ the
 //!   [`ORDER`] Chebyshev points of the two extents and L their Lagrange polynomials. The
 //!   interpolation error falls as ρ^−ORDER with ρ = 3 + √8 (the Bernstein ellipse that just
-//!   avoids the other cluster): about 1e−13 of the entries (tested against the dense product).
+//!   avoids the other cluster), 2e−11 at worst; against the dense product the error is 2e−13
+//!   of Σ|K_ij v_j| (tested).
 //! - **A product** y = K v: the moments q_σ,m = Σ_j v_j ∫_{cell j} L_m(s) ds, up the tree
 //!   (a parent's polynomial is exactly its children's interpolant of it); the interactions
 //!   g_τ += ln|ξ − ζ| q_σ of every well-separated pair; the local expansions down the tree to
@@ -238,7 +239,8 @@ impl LineLogInfluence {
             Shape::Parent([(a, _), (b, _)]) => Some([*a, *b]),
             Shape::Leaf { .. } => None,
         };
-        if gap >= t_width.max(s_width) {
+        // A positive gap: clusters of zero width (repeated faces) stay near and exact.
+        if gap > 0.0 && gap >= t_width.max(s_width) {
             let (xi, zeta) = (
                 Chebyshev::on(t.left, t.right),
                 Chebyshev::on(s.left, s.right),

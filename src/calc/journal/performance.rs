@@ -115,6 +115,26 @@ impl Method {
         }
     }
 
+    /// This numerical method without the third mesh of its error estimate.
+    pub fn without_estimate(self) -> Method {
+        match self {
+            Method::Numerical {
+                level,
+                mesh,
+                stop,
+                richardson,
+                ..
+            } => Method::Numerical {
+                level,
+                mesh,
+                stop,
+                richardson,
+                estimate: false,
+            },
+            m => m,
+        }
+    }
+
     /// This numerical method with another stopping rule, reported under `level`.
     pub fn with_stop(self, stop: Stopping, level: Level) -> Method {
         match self {
@@ -656,31 +676,23 @@ fn at_eccentricity_from(
                 attitude: placed_at(&fine),
             };
             // A third mesh guards the pair's estimate against an accidental agreement of the
-            // two: for the levels' meshes the next coarser (an eighth of the coarse mesh's
-            // cost); for an explicit mesh no finer than `high`'s, whose pair may be far from
-            // the asymptotic range, the next finer (cheap at that size).
-            let quarter = half.coarse();
+            // two ([`third_mesh`]).
             let (sf, sc) = (fine.sommerfeld_number(), coarse.sommerfeld_number());
-            let [fast, standard, high] = [Level::Fast, Level::Standard, Level::High]
-                .map(|level| Method::numerical(level, None, None).mesh());
-            let explicit = ![fast, standard, high].contains(&Some(mesh));
-            let refine_up = explicit && high.is_some_and(|high| mesh.cells() <= high.cells());
-            let error = if !estimate {
-                pair_error
-            } else if quarter.circumferential >= 12 && !refine_up {
-                let (third, _) = solve_on(quarter, near)?;
-                three_mesh_estimate([sf, sc, third.sommerfeld_number()], r)
-            } else {
-                let double = Mesh {
-                    circumferential: 2 * mesh.circumferential,
-                    axial_half: 2 * mesh.axial_half,
-                };
-                let start = FilmStart {
-                    field: (!load_fixed).then(|| film::prolonged(&film, mesh, &fine_field, double)),
-                    ..near
-                };
-                let (third, _) = solve_on(double, start)?;
-                order_free_estimate([third.sommerfeld_number(), sf, sc])
+            let error = match (estimate, third_mesh(mesh)) {
+                (false, _) => pair_error,
+                (true, ThirdMesh::Quarter(quarter)) => {
+                    let (third, _) = solve_on(quarter, near)?;
+                    three_mesh_estimate([sf, sc, third.sommerfeld_number()], r)
+                }
+                (true, ThirdMesh::Double(double)) => {
+                    let start = FilmStart {
+                        field: (!load_fixed)
+                            .then(|| film::prolonged(&film, mesh, &fine_field, double)),
+                        ..near
+                    };
+                    let (third, _) = solve_on(double, start)?;
+                    order_free_estimate([third.sommerfeld_number(), sf, sc])
+                }
             };
             let mut point = from_film(eps, &fine, physics);
             point.error_estimate = Some(error);
@@ -715,6 +727,37 @@ fn at_eccentricity_from(
     }
 }
 
+/// The third mesh of a point's error estimate, beside its pair (the mesh and its half).
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum ThirdMesh {
+    /// The next coarser, with the observed order ([`three_mesh_estimate`]): an eighth of the
+    /// half mesh's cost.
+    Quarter(Mesh),
+    /// The next finer, trusting no order ([`order_free_estimate`]): sixteen times the mesh's
+    /// band work.
+    Double(Mesh),
+}
+
+/// The quarter mesh for the levels' meshes and for explicit meshes with more cells than
+/// `high`'s; the doubled mesh for other explicit meshes, whose pair may be far from the
+/// asymptotic range, and for any mesh too coarse to halve twice (fewer than 48 cells round).
+pub fn third_mesh(mesh: Mesh) -> ThirdMesh {
+    let [fast, standard, high] = [Level::Fast, Level::Standard, Level::High]
+        .map(|level| Method::numerical(level, None, None).mesh());
+    let explicit = ![fast, standard, high].contains(&Some(mesh));
+    let quarter = mesh.coarse().coarse();
+    if quarter.circumferential < 12
+        || explicit && high.is_some_and(|high| mesh.cells() <= high.cells())
+    {
+        ThirdMesh::Double(Mesh {
+            circumferential: 2 * mesh.circumferential,
+            axial_half: 2 * mesh.axial_half,
+        })
+    } else {
+        ThirdMesh::Quarter(quarter)
+    }
+}
+
 /// Safety factor on a three-mesh estimate (Roache's grid convergence index with an observed
 /// order uses 1.25).
 const ESTIMATE_SAFETY: f64 = 1.25;
@@ -739,8 +782,8 @@ fn three_mesh_estimate([fine, middle, coarse]: [f64; 3], r: f64) -> f64 {
 /// factor. Explicit meshes coarser than the levels' can be far from the asymptotic range, where
 /// [`three_mesh_estimate`]'s observed order misleads: on [64, 8] at L/D 0.25, ε 0.9 it reported
 /// a 3.6th of the error. Against a converged reference over ε 0.1–0.99 and L/D 0.25–2 this
-/// bounds the error of every explicit mesh tried from [16, 4] to [200, 10], at most 0.68 of it
-/// (the test `error_estimates_bound_the_error`; docs/accuracy.md).
+/// bounds the error of every explicit mesh checked ([24, 6], [64, 8], [60, 20], [96, 16] and
+/// [200, 10]), at most 0.68 of it (the test `error_estimates_bound_the_error`; docs/accuracy.md).
 fn order_free_estimate([fine, middle, coarse]: [f64; 3]) -> f64 {
     ESTIMATE_SAFETY * (2.0 * (fine - middle).abs()).max((middle - coarse).abs()) / middle.abs()
 }
@@ -958,12 +1001,14 @@ impl Searcher<'_> {
         let eps = to_eps(u)?;
         let point = match method {
             Method::ClosedForm(approx) => closed(eps, self.l_over_d, approx, self.physics),
+            // A probe needs the extrapolated value, not its error estimate: the search's answer
+            // is solved again with it.
             Method::Numerical {
                 richardson: true, ..
             } => at_eccentricity_from(
                 eps,
                 self.l_over_d,
-                method,
+                method.without_estimate(),
                 self.physics,
                 &mut self.fields,
                 budget,

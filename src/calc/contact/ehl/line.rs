@@ -500,8 +500,10 @@ struct Jacobian {
 impl Jacobian {
     /// The dense-part entry of row `i` (a node) in the column of node `k`: −(1/π)Σ_m film_m K_{mk}.
     fn deformation(&self, grid: &Grid, i: usize, k: usize) -> f64 {
+        // A cavitated row's coefficients are all zero: no entry need be computed.
         -self.film[i]
             .iter()
+            .filter(|&&(_, c)| c != 0.0)
             .map(|&(m, c)| c * grid.influence(m, k))
             .sum::<f64>()
             / PI
