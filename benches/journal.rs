@@ -92,7 +92,8 @@ fn journal(c: &mut Criterion) {
         );
     }
     // Placed films (an attitude search per film): misaligned, a partial arc, both.
-    for (name, placed) in [
+    // The placed films, and mass-conserving cavitation with its thermal iteration.
+    for (name, variant) in [
         (
             "misaligned 0.5 mrad",
             r#""misalignment": {"slope_rad": 0.0005}"#,
@@ -102,9 +103,10 @@ fn journal(c: &mut Criterion) {
             "120° arc, misaligned 0.5 mrad",
             r#""arc_deg": 120, "misalignment": {"slope_rad": 0.0005}"#,
         ),
+        ("JFO cavitation", r#""effects": {"cavitation": "jfo"}"#),
     ] {
         let request = format!(
-            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}}, "speed_rpm": 3000, "lubricant": {{"iso_vg": 32}}, "load_n": 10000, "inlet_temperature_c": 40, "fidelity": "standard", {placed}}}"#
+            r#"{{"geometry": {{"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001}}, "speed_rpm": 3000, "lubricant": {{"iso_vg": 32}}, "load_n": 10000, "inlet_temperature_c": 40, "fidelity": "standard", {variant}}}"#
         );
         c.bench_function(&format!("README request, {name}, at standard"), |b| {
             b.iter(|| {

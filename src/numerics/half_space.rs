@@ -2,29 +2,33 @@
 //! influence coefficients of the discretised deformation integrals (Venner & Lubrecht 2000,
 //! ch. 3 and 8; Johnson 1985, §2.8 and §3.9).
 
-/// Line contact (plane strain). For pressure constant over the cells [faces[j], faces[j+1]],
-/// the deformation integral ∫ ln|X − X′| P(X′) dX′ at `points[i]` is Σⱼ K_{ij} Pⱼ with
-/// K_{ij} = F(Xᵢ − aⱼ) − F(Xᵢ − bⱼ), F(t) = t ln|t| − t, the exact integral of ln|t| over the
-/// cell [aⱼ, bⱼ]. Returns K row-major, `points.len()` × (`faces.len()` − 1).
+/// Line contact (plane strain). For pressure constant over the cell [a, b], the deformation
+/// integral ∫ ln|X − X′| P(X′) dX′ at X takes P times F(X − a) − F(X − b), F(t) = t ln|t| − t,
+/// the exact integral of ln|t| over the cell: the influence coefficient K_{ij} of point i and
+/// cell j ([`super::log_fmm`] applies the whole matrix).
 #[must_use]
-pub fn line_log_influence(points: &[f64], faces: &[f64]) -> Vec<f64> {
-    let antiderivative = |t: f64| {
-        if t == 0.0 {
-            0.0
-        } else {
-            t * t.abs().ln() - t
-        }
-    };
-    let mut k = Vec::with_capacity(points.len() * (faces.len() - 1));
-    for &x in points {
-        let mut upper = antiderivative(x - faces[0]);
-        for &face in &faces[1..] {
-            let lower = antiderivative(x - face);
-            k.push(upper - lower);
-            upper = lower;
-        }
+pub fn line_log_cell(x: f64, a: f64, b: f64) -> f64 {
+    log_antiderivative(x - a) - log_antiderivative(x - b)
+}
+
+/// [`line_log_cell`] at `x` for each cell between consecutive `faces`: one logarithm per face.
+pub fn line_log_cells(x: f64, faces: &[f64]) -> impl Iterator<Item = f64> + '_ {
+    let mut upper = log_antiderivative(x - faces[0]);
+    faces[1..].iter().map(move |&face| {
+        let lower = log_antiderivative(x - face);
+        let k = upper - lower;
+        upper = lower;
+        k
+    })
+}
+
+/// F(t) = t ln|t| − t, F(0) = 0.
+fn log_antiderivative(t: f64) -> f64 {
+    if t == 0.0 {
+        0.0
+    } else {
+        t * t.abs().ln() - t
     }
-    k
 }
 
 /// Point contact. The integral of 1/r over the rectangle [x − hx/2, x + hx/2] × [y − hy/2,
@@ -59,7 +63,6 @@ mod tests {
     fn line_influence_integrates_the_logarithm_over_each_cell() {
         let faces = [-1.0, -0.3, -0.25, 0.1, 0.6, 2.0];
         let points = [-0.7, -0.27, 0.0, 0.35, 1.9];
-        let k = line_log_influence(&points, &faces);
         for (i, &x) in points.iter().enumerate() {
             for j in 0..faces.len() - 1 {
                 // Midpoint rule on 200 000 sub-cells (the log singularity is integrable).
@@ -71,7 +74,13 @@ mod tests {
                         (x - t).abs().ln() * width / n as f64
                     })
                     .sum();
-                let got = k[i * (faces.len() - 1) + j];
+                let got = line_log_cell(x, faces[j], faces[j + 1]);
+                let row: Vec<f64> = line_log_cells(x, &faces).collect();
+                assert!(
+                    (row[j] - got).abs() < 1e-15,
+                    "row {i}: {} against {got}",
+                    row[j]
+                );
                 // The midpoint rule converges slowly across the logarithm's singularity.
                 let inside = faces[j] < x && x < faces[j + 1];
                 let tol = if inside { 1e-5 } else { 1e-8 };

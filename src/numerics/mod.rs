@@ -9,6 +9,7 @@ pub mod fft;
 pub mod gmres;
 pub mod half_space;
 pub mod interpolate;
+pub mod log_fmm;
 pub mod multigrid;
 pub mod newton;
 pub mod ode;

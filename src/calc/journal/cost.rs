@@ -11,7 +11,7 @@
 use std::f64::consts::PI;
 
 use super::film::{FilmModel, Mesh};
-use super::performance::Method;
+use super::performance::{placed, third_mesh, Method, ThirdMesh};
 use crate::calc::grid_cost::{self, Factorisations};
 use crate::calc::{Budget, CalcError};
 use crate::fidelity::Level;
@@ -72,11 +72,20 @@ pub fn check_affordable(
     };
     let explicit = Method::numerical(level, None, None).mesh() != Some(mesh);
     let size = factorisation_size(mesh, physics);
+    // The error estimate's solve on the doubled mesh: sixteen times the band work, one point's
+    // factorisations (a placed film's search takes five solves at least).
+    let third = match third_mesh(mesh) {
+        ThirdMesh::Double(_) => {
+            let steps = if physics.cavitation { 3.0 } else { 1.0 };
+            16.0 * steps * if placed(physics) { 5.0 } else { 1.0 }
+        }
+        ThirdMesh::Quarter(_) => 0.0,
+    };
     within_deadline(
         mesh,
         explicit,
         size,
-        factorisations(physics, load_given),
+        factorisations(physics, load_given) + third,
         budget,
     )
 }

@@ -44,6 +44,11 @@ pub struct Mesh {
 }
 
 impl Mesh {
+    /// Cells in all: around the circumference times across the half-length.
+    pub fn cells(self) -> usize {
+        self.circumferential * self.axial_half
+    }
+
     /// The mesh a nested solve starts from and the error estimate compares with: half the cells
     /// each way (circumferential counts are even, by validation), at least 2 across the
     /// half-length.

@@ -16,10 +16,11 @@
 //! where the film is formed, and at the outlet constriction and pressure spike (X ≈ 1); ε at the
 //! faces as the mean of the nodes; the Couette flux ρ̄H at a face by second-order upwind
 //! extrapolation (first-order at the first face); the deformation integral exact for pressure
-//! constant over each cell ([`line_log_influence`]), with the Hertz pressure's part taken
-//! analytically. The Jacobian is exact (the deformation makes it dense) and is factorised by LU
-//! with partial pivoting; each step is damped until the residual falls ([`newton::solve`] under
-//! the solver driver).
+//! constant over each cell ([`line_log_cell`](crate::numerics::half_space::line_log_cell)), with the Hertz pressure's part taken
+//! analytically; its product with a field by the fast multipole method of [`LineLogInfluence`]
+//! (O(n) work and storage where the dense matrix is n²). The Newton direction solves the exact
+//! Jacobian by GMRES, matrix-free ([`Jacobian`]); each step is damped until the residual falls
+//! ([`newton::solve`] under the solver driver).
 
 use std::f64::consts::{FRAC_PI_2, PI};
 
@@ -32,8 +33,9 @@ use crate::numerics::band_lu::{Band, BandLu};
 use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::gmres;
-use crate::numerics::half_space::line_log_influence;
+use crate::numerics::half_space::line_log_cells;
 use crate::numerics::interpolate::linear;
+use crate::numerics::log_fmm::LineLogInfluence;
 use crate::numerics::newton::{self, LineSearch, NewtonSystem};
 
 /// Films below this (dimensionless) are treated as this in ε, so that a Newton iterate that
@@ -57,6 +59,9 @@ const FORCING_MIN: f64 = 1e-12;
 /// took about 8–28 iterations per Newton step at 2048 cells with 8, 3–14 with 64; 32 was the
 /// fastest overall (the band LU costs n·b² and each of its solves n·b).
 const PRECONDITIONER_BAND: usize = 32;
+/// Half-width of the influence entries kept exact beside the operator: the preconditioner's band
+/// widened by the reach of a row's film coefficients (nodes i − 2 … i + 1).
+const KERNEL_BAND: usize = PRECONDITIONER_BAND + 3;
 /// GMRES: Krylov vectors per cycle, and iterations before the dense fallback.
 const GMRES_RESTART: usize = 60;
 const GMRES_MAX_ITERATIONS: usize = 240;
@@ -106,8 +111,10 @@ struct Grid {
     x: Vec<f64>,
     /// Cell widths (the control volumes; half cells at the two ends).
     volume: Vec<f64>,
-    /// Influence coefficients K_{ij}, row-major.
-    kernel: Vec<f64>,
+    /// Influence coefficients K_{ij}: the operator, and the entries |i − j| ≤ [`KERNEL_BAND`]
+    /// row by row (the preconditioner's and the diagonal's).
+    kernel: LineLogInfluence,
+    near: Vec<f64>,
     /// The film at zero H₀ and zero pressure, corrected for the discretisation error of the
     /// Hertz part: X²/2 − D_H(X) + (1/π)Σⱼ K_{ij} P_H(Xⱼ). The Hertz pressure's deformation
     /// D_H is taken exactly and only the difference P − P_H goes through the discrete kernel.
@@ -125,13 +132,23 @@ impl Grid {
         faces.extend(x.windows(2).map(|w| 0.5 * (w[0] + w[1])));
         faces.push(x[n - 1]);
         let volume: Vec<f64> = faces.windows(2).map(|f| f[1] - f[0]).collect();
-        let kernel = line_log_influence(&x, &faces);
+        let kernel = LineLogInfluence::new(&x, &faces);
+        // Row i holds cells i − KERNEL_BAND ..= i + KERNEL_BAND, zero beyond the ends.
+        let mut near = vec![0.0; n * (2 * KERNEL_BAND + 1)];
+        for (i, row) in near.chunks_exact_mut(2 * KERNEL_BAND + 1).enumerate() {
+            let (lo, hi) = (i.saturating_sub(KERNEL_BAND), (i + KERNEL_BAND).min(n - 1));
+            let cells = line_log_cells(x[i], &faces[lo..=hi + 1]);
+            row[lo + KERNEL_BAND - i..]
+                .iter_mut()
+                .zip(cells)
+                .for_each(|(k, c)| *k = c);
+        }
         let hertz: Vec<f64> = x.iter().map(|&x| hertz_pressure(x)).collect();
-        let base = (0..n)
-            .map(|i| {
-                let discrete = dense::dot(&kernel[i * n..(i + 1) * n], &hertz);
-                0.5 * x[i] * x[i] - hertz_deformation(x[i]) + discrete / PI
-            })
+        let base = kernel
+            .apply(&hertz)
+            .iter()
+            .zip(&x)
+            .map(|(discrete, &x)| 0.5 * x * x - hertz_deformation(x) + discrete / PI)
             .collect();
         let upwind = (0..n)
             .map(|i| {
@@ -148,6 +165,7 @@ impl Grid {
             x,
             volume,
             kernel,
+            near,
             base,
             upwind,
         }
@@ -157,18 +175,22 @@ impl Grid {
         self.x.len()
     }
 
+    /// K_{ij}: from the kept band, or computed.
     fn influence(&self, i: usize, j: usize) -> f64 {
-        self.kernel[i * self.nodes() + j]
+        if i.abs_diff(j) <= KERNEL_BAND {
+            self.near[i * (2 * KERNEL_BAND + 1) + j + KERNEL_BAND - i]
+        } else {
+            self.kernel.entry(i, j)
+        }
     }
 
     /// H at every node.
     fn film(&self, pressure: &[f64], h0: f64) -> Vec<f64> {
-        let n = self.nodes();
-        (0..n)
-            .map(|i| {
-                let deformation = dense::dot(&self.kernel[i * n..(i + 1) * n], pressure);
-                h0 + self.base[i] - deformation / PI
-            })
+        self.kernel
+            .apply(pressure)
+            .iter()
+            .zip(&self.base)
+            .map(|(deformation, base)| h0 + base - deformation / PI)
             .collect()
     }
 
@@ -456,7 +478,7 @@ impl LineProblem {
 
 /// The Newton matrix of one iterate, in parts ([`LineProblem::jacobian`]): row i − 1 of
 /// interior node i is Σ_{m = i−2}^{i+1} local·P_m + Σ_m film_m·(H₀ − (1/π)Σ_k K_{mk}P_k), and
-/// the last row the load Σ_k V_k P_k. Its product costs one pass over the influence matrix,
+/// the last row the load Σ_k V_k P_k. Its product costs one influence product (O(n)),
 /// its factorisation is never needed: the direction comes from GMRES ([`gmres`]) on the
 /// product, preconditioned by the [`BandedPart`].
 struct Jacobian {
@@ -478,8 +500,10 @@ struct Jacobian {
 impl Jacobian {
     /// The dense-part entry of row `i` (a node) in the column of node `k`: −(1/π)Σ_m film_m K_{mk}.
     fn deformation(&self, grid: &Grid, i: usize, k: usize) -> f64 {
+        // A cavitated row's coefficients are all zero: no entry need be computed.
         -self.film[i]
             .iter()
+            .filter(|&&(_, c)| c != 0.0)
             .map(|&(m, c)| c * grid.influence(m, k))
             .sum::<f64>()
             / PI
@@ -494,8 +518,9 @@ impl Jacobian {
         // The film change at every node: H₀ − (1/π)Σ_k K_{mk}P_k.
         let film: Vec<f64> = grid
             .kernel
-            .chunks_exact(n)
-            .map(|row| h0 - dense::dot(row, &full) / PI)
+            .apply(&full)
+            .iter()
+            .map(|d| h0 - d / PI)
             .collect();
         for i in 1..n - 1 {
             let local: f64 = (0..4)

@@ -6,7 +6,6 @@ use crate::calc::journal::feed::Feed;
 use crate::calc::journal::film::{FeedLine, Misalignment};
 use crate::calc::journal::performance::{Approximation, Method, Point};
 use crate::effects::{Criterion, Decision};
-use crate::fidelity::Level;
 
 /// Turbulence: `auto` applies the Ng–Pan film above a film Reynolds number of 1000 (at the
 /// inlet temperature); the closed forms are laminar only.
@@ -115,20 +114,6 @@ pub(super) fn validity_warnings(notes: &mut Notes, case: &Case, point: &Point) {
             "long_bearing_outside_validity",
             format!("the long-bearing approximation overestimates load capacity below L/D ≈ 2; L/D = {ld:.3}: use a numerical fidelity"),
         ),
-        // The levels' meshes and the extrapolated explicit ones were checked to bound their
-        // error over ε 0.1–0.99 and L/D 0.25–2 (docs/accuracy.md); other coarse meshes were not.
-        Method::Numerical {
-            mesh,
-            richardson: false,
-            ..
-        } if Some(mesh) != Method::numerical(Level::Fast, None, None).mesh()
-            && Some(mesh) != Method::numerical(Level::Standard, None, None).mesh() =>
-        {
-            notes.warn(
-                "error_estimate_unverified",
-                format!("on a {} × {} mesh the error estimate (three meshes) may fall short of the error, by up to about 3× near ε = 0.9 at small L/D; the levels and meshes of at least 96 × 12 that halve exactly bound it", mesh.circumferential, mesh.axial_half),
-            )
-        }
         _ => {}
     }
     let eps = point.eccentricity_ratio.get();
