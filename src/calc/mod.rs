@@ -4,6 +4,7 @@
 pub mod composite;
 pub mod contact;
 pub mod gas;
+pub mod grid_cost;
 pub mod hydrostatic;
 pub mod journal;
 pub mod lubricant;

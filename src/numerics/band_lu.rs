@@ -6,6 +6,8 @@
 //! compressible Reynolds equation's Couette flux); symmetric positive definite systems use the
 //! band Cholesky of [`super::banded`].
 
+use super::driver::Budget;
+
 /// A band matrix of order `n`, factored in place by [`Band::lu`].
 #[derive(Debug, Clone)]
 pub struct Band {
@@ -21,6 +23,19 @@ pub struct Band {
 pub struct Singular {
     pub column: usize,
 }
+
+/// Why [`Band::lu_within`] gave no factor.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Unfactored {
+    Singular(Singular),
+    /// The budget ran out (deadline or cancellation) part-way.
+    Stopped,
+}
+
+/// Columns eliminated between two polls of [`Band::lu_within`]'s budget: at a band of 256
+/// (the finest gas films) about 8·10⁶ multiply–adds, a few milliseconds; the clock's read is
+/// lost in it.
+const COLUMNS_PER_POLL: usize = 64;
 
 impl Band {
     /// The zero matrix of order `n` with `kl` sub-diagonals and `ku` super-diagonals.
@@ -61,9 +76,34 @@ impl Band {
         self.data[self.index(i, j)]
     }
 
-    #[allow(clippy::needless_range_loop)] // band indices read clearer than iterator chains
     /// P A = L U in place, with row interchanges chosen by the largest pivot in each column.
-    pub fn lu(mut self) -> Result<BandLu, Singular> {
+    pub fn lu(self) -> Result<BandLu, Singular> {
+        self.factor(|| Ok(()), |s| s)
+    }
+
+    /// [`Band::lu`], stopped when `budget` runs out (polled every [`COLUMNS_PER_POLL`]
+    /// columns): a factorisation of a fine film takes seconds, longer than a request's
+    /// deadline may leave, and a budget checked only between factorisations is seen that late.
+    pub fn lu_within(self, budget: &Budget) -> Result<BandLu, Unfactored> {
+        self.factor(
+            || {
+                if budget.alive() {
+                    Ok(())
+                } else {
+                    Err(Unfactored::Stopped)
+                }
+            },
+            Unfactored::Singular,
+        )
+    }
+
+    #[allow(clippy::needless_range_loop)] // band indices read clearer than iterator chains
+    /// The elimination, asking `poll` every [`COLUMNS_PER_POLL`] columns whether to go on.
+    fn factor<E>(
+        mut self,
+        poll: impl Fn() -> Result<(), E>,
+        singular: impl Fn(Singular) -> E,
+    ) -> Result<BandLu, E> {
         let (n, kl, ku) = (self.n, self.kl, self.ku);
         let mut pivots = vec![0usize; n];
         let mut scale = 0.0f64;
@@ -72,6 +112,9 @@ impl Band {
         }
         let tiny = scale * f64::EPSILON * n as f64;
         for k in 0..n {
+            if k % COLUMNS_PER_POLL == 0 {
+                poll()?;
+            }
             let last_row = (k + kl).min(n - 1);
             let last_col = (k + ku + kl).min(n - 1);
             let mut p = k;
@@ -84,7 +127,7 @@ impl Band {
                 }
             }
             if best.is_nan() || best <= tiny {
-                return Err(Singular { column: k });
+                return Err(singular(Singular { column: k }));
             }
             pivots[k] = p;
             if p != k {
@@ -170,6 +213,42 @@ mod tests {
         lu.solve(&mut x);
         assert!((x[0] - 2.5).abs() < 1e-14 && (x[1] - 1.0).abs() < 1e-14);
         assert!(Band::zeros(3, 1, 1).lu().is_err());
+    }
+
+    /// A budget already spent stops the factorisation before its first column; a live one
+    /// factors as [`Band::lu`] does.
+    #[test]
+    fn a_spent_budget_stops_the_factorisation() {
+        use std::sync::atomic::AtomicBool;
+        use std::sync::Arc;
+        use std::time::{Duration, Instant};
+        let matrix = || {
+            let mut a = Band::zeros(3, 1, 1);
+            for i in 0..3 {
+                a.add(i, i, 2.0);
+            }
+            a
+        };
+        let spent = Budget::new(Instant::now(), Arc::new(AtomicBool::new(false)));
+        assert_eq!(matrix().lu_within(&spent).err(), Some(Unfactored::Stopped));
+        let cancelled = Budget::new(
+            Instant::now() + Duration::from_secs(60),
+            Arc::new(AtomicBool::new(true)),
+        );
+        assert_eq!(
+            matrix().lu_within(&cancelled).err(),
+            Some(Unfactored::Stopped)
+        );
+        let mut x = [2.0, 4.0, 6.0];
+        matrix()
+            .lu_within(&Budget::unlimited())
+            .unwrap()
+            .solve(&mut x);
+        assert_eq!(x, [1.0, 2.0, 3.0]);
+        assert_eq!(
+            Band::zeros(3, 1, 1).lu_within(&Budget::unlimited()).err(),
+            Some(Unfactored::Singular(Singular { column: 0 }))
+        );
     }
 
     proptest! {

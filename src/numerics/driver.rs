@@ -180,6 +180,13 @@ impl Driver {
         self
     }
 
+    /// True while the budget is neither spent nor cancelled: an iteration made of several
+    /// costly parts (a Newton step's line-search trials) asks between them, and stalls when it
+    /// is not ([`Driver::run`] then reports the deadline).
+    pub fn alive(&self) -> bool {
+        self.budget.alive()
+    }
+
     /// Run `iterate` until it converges, stalls or diverges, the cap is reached or the budget
     /// runs out. `iterate` receives the counter (iterations done so far, evaluations) and does
     /// one iteration. A non-finite residual is a divergence whatever the verdict says.
@@ -216,7 +223,13 @@ impl Driver {
                 }
                 Verdict::Stalled(r) => {
                     residual = r;
-                    break StopReason::Stalled;
+                    // An iteration that stalled on a spent budget was cut short by it (a
+                    // factorisation that polls the budget gives up part-way): the deadline's.
+                    break if self.budget.alive() {
+                        StopReason::Stalled
+                    } else {
+                        StopReason::Deadline
+                    };
                 }
                 Verdict::Diverged(r) => {
                     residual = r;
@@ -359,5 +372,29 @@ mod tests {
             Arc::new(AtomicBool::new(true)),
         );
         assert!(!cancelled.alive() && Budget::unlimited().alive());
+    }
+
+    /// An iteration that stalls once the budget is spent (a factorisation that gave up on it)
+    /// stops for the deadline; with budget left a stall is a stall.
+    #[test]
+    fn a_stall_on_a_spent_budget_is_the_deadline() {
+        let cancel = Arc::new(AtomicBool::new(false));
+        let budget = Budget::new(
+            Instant::now() + std::time::Duration::from_secs(60),
+            cancel.clone(),
+        );
+        let d = Driver::new("cut", IterationUnit::NewtonSteps, 100, &budget);
+        let stalled = d.run(|_| Verdict::<()>::Stalled(0.1)).unwrap_err();
+        assert_eq!(stalled.reason(), StopReason::Stalled);
+        let cut = d
+            .run(|_| {
+                cancel.store(true, std::sync::atomic::Ordering::Relaxed);
+                Verdict::<()>::Stalled(0.1)
+            })
+            .unwrap_err();
+        assert_eq!(
+            (cut.reason(), cut.report.iterations),
+            (StopReason::Deadline, 1)
+        );
     }
 }

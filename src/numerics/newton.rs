@@ -90,6 +90,11 @@ pub fn solve<S: NewtonSystem>(
         let mut t = 1.0;
         let mut accepted = None;
         for halving in 0..=line.max_halvings {
+            // A trial of a fine film's step takes a good part of a second: one more past the
+            // deadline is the deadline's.
+            if !driver.alive() {
+                return Verdict::Stalled(residual);
+            }
             let trial = system.advance(&x, &step, t);
             let at = system.evaluate(&trial);
             counter.evaluated(1);
@@ -180,5 +185,46 @@ mod tests {
         assert_eq!(stalled.reason(), StopReason::Stalled);
         let capped = solve(&Quartic, [3.0, 0.5], 1e-12, LINE, &driver(2)).unwrap_err();
         assert_eq!(capped.reason(), StopReason::IterationCap);
+    }
+
+    /// A budget spent while a step is being found (its factorisation, here the direction)
+    /// stops the step before any line-search trial: the deadline, after one iteration and no
+    /// evaluation.
+    #[test]
+    fn a_budget_spent_within_a_step_stops_before_its_trials() {
+        use std::sync::atomic::{AtomicBool, Ordering};
+        use std::sync::Arc;
+        struct Cancelling(Arc<AtomicBool>);
+        impl NewtonSystem for Cancelling {
+            type Point = [f64; 2];
+            type Eval = ([f64; 2], f64);
+            type Step = [f64; 2];
+            fn evaluate(&self, x: &[f64; 2]) -> ([f64; 2], f64) {
+                Quartic.evaluate(x)
+            }
+            fn residual(&self, at: &([f64; 2], f64)) -> f64 {
+                Quartic.residual(at)
+            }
+            fn direction(&self, x: &[f64; 2], at: &([f64; 2], f64)) -> Option<[f64; 2]> {
+                self.0.store(true, Ordering::Relaxed);
+                Quartic.direction(x, at)
+            }
+            fn advance(&self, x: &[f64; 2], d: &[f64; 2], t: f64) -> [f64; 2] {
+                Quartic.advance(x, d, t)
+            }
+            fn accepts(&self, h: &Self::Eval, t: &Self::Eval, s: f64, d: Option<f64>) -> bool {
+                Quartic.accepts(h, t, s, d)
+            }
+        }
+        let cancel = Arc::new(AtomicBool::new(false));
+        let budget = Budget::new(
+            std::time::Instant::now() + std::time::Duration::from_secs(60),
+            cancel.clone(),
+        );
+        let d = Driver::new("newton_test", IterationUnit::NewtonSteps, 50, &budget);
+        let stopped = solve(&Cancelling(cancel), [3.0, 0.5], 1e-12, LINE, &d).unwrap_err();
+        assert_eq!(stopped.reason(), StopReason::Deadline);
+        assert_eq!(stopped.report.iterations, 1);
+        assert_eq!(stopped.report.evaluations, None, "no trial evaluated");
     }
 }

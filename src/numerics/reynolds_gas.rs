@@ -37,10 +37,10 @@
 //! **Convergence.** The residual measure is the Jacobi-scaled residual max |Rᵢ/Jᵢᵢ| (a change of
 //! P), against the tolerance (1e-10 by default).
 
-use super::band_lu::{Band, BandLu, Singular};
+use super::band_lu::{Band, BandLu, Unfactored};
 use super::driver::{Budget, Driver, Stopped};
 use super::newton::{self, LineSearch, NewtonSystem};
-use crate::fidelity::{IterationUnit, SolverReport};
+use crate::fidelity::{IterationUnit, SolverReport, StopReason};
 
 /// The grid: nodes along x and across y.
 #[derive(Debug, Clone, PartialEq)]
@@ -392,6 +392,14 @@ impl Numbering {
     }
 }
 
+/// Unknowns and band of the Newton Jacobian of a film on `grid` with `far_edge`: what one
+/// factorisation costs (about 2 n b² multiply–adds, [`super::band_lu`]), for estimating a
+/// solve before it runs.
+pub fn factorisation_size(grid: &GasGrid, far_edge: FarEdge) -> (usize, usize) {
+    let numbering = Numbering::new(grid, far_edge);
+    (numbering.unknowns, numbering.band)
+}
+
 /// One evaluation: the residual at the unknowns, its scaled norm and the Jacobian.
 pub struct Evaluation {
     residual: Vec<f64>,
@@ -404,6 +412,8 @@ struct System<'a> {
     problem: &'a GasProblem,
     numbering: &'a Numbering,
     lambda: f64,
+    /// Polled inside each factorisation (the finest films' take seconds).
+    budget: &'a Budget,
 }
 
 impl System<'_> {
@@ -481,8 +491,10 @@ impl NewtonSystem for System<'_> {
             at.norm
         }
     }
+    /// None when the Jacobian is singular or the budget ran out part-way through its
+    /// factorisation (the driver then reports the deadline).
     fn direction(&self, _p: &Vec<f64>, at: &Evaluation) -> Option<Vec<f64>> {
-        let lu: BandLu = at.jacobian.clone().lu().ok()?;
+        let lu: BandLu = at.jacobian.clone().lu_within(self.budget).ok()?;
         let mut d: Vec<f64> = at.residual.iter().map(|v| -v).collect();
         lu.solve(&mut d);
         d.iter().all(|v| v.is_finite()).then_some(d)
@@ -563,6 +575,7 @@ pub fn solve(
             problem,
             numbering: &numbering,
             lambda,
+            budget,
         };
         let driver = Driver::new(
             "newton_fitted_flux_band_lu",
@@ -589,10 +602,13 @@ pub fn solve(
     };
     if let Some(s) = start {
         field.copy_from_slice(s);
-        if let Ok(report) = run(&mut tally, &mut field, target) {
-            return Ok(tally.solution(field, report));
+        match run(&mut tally, &mut field, target) {
+            Ok(report) => return Ok(tally.solution(field, report)),
+            // The deadline ends the solve (continuation would only assemble its start, a
+            // fine film's half second, to find the budget spent); any other stop falls back.
+            Err(e) if e.reason() == StopReason::Deadline => return Err(e),
+            Err(_) => field.fill(problem.boundary_pressure),
         }
-        field.fill(problem.boundary_pressure);
     }
     let mut lambda = target.min(CONTINUATION_START);
     loop {
@@ -725,15 +741,17 @@ const FILM_STEP: f64 = 1e-5;
 ///
 /// with J the steady Newton Jacobian at P₀ (the same assembly). The complex system is solved as
 /// a real one of twice the order, real and imaginary parts of each unknown interleaved (band
-/// 2b + 1), by one band LU for all shapes. ∂R/∂H dh is a central difference of the residual
-/// ([`FILM_STEP`]). Errs if the system is singular.
+/// 2b + 1), by one band LU for all shapes (eight times a Newton step's factorisation, polling
+/// `budget` as it goes). ∂R/∂H dh is a central difference of the residual ([`FILM_STEP`]).
+/// Errs if the system is singular or the budget runs out.
 pub fn harmonic_response(
     grid: &GasGrid,
     problem: &GasProblem,
     p: &[f64],
     squeeze: f64,
     shapes: &[&dyn Fn(f64, f64) -> f64],
-) -> Result<Vec<HarmonicResponse>, Singular> {
+    budget: &Budget,
+) -> Result<Vec<HarmonicResponse>, Unfactored> {
     debug_assert_eq!(
         problem.metric,
         Metric::Cartesian,
@@ -746,6 +764,7 @@ pub fn harmonic_response(
             problem,
             numbering: &numbering,
             lambda: problem.bearing_number,
+            budget,
         }
         .assemble(p)
     };
@@ -778,7 +797,7 @@ pub fn harmonic_response(
         big.add(2 * k, 2 * k + 1, -m);
         big.add(2 * k + 1, 2 * k, m);
     }
-    let lu = big.lu()?;
+    let lu = big.lu_within(budget)?;
     let mut out = Vec::with_capacity(shapes.len());
     for dh in shapes {
         let plus = system(&problem.shifted(grid, FILM_STEP, dh)).residual;

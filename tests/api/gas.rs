@@ -6,7 +6,9 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, Failure};
 
-use crate::helpers::{assert_all_finite, refused, spawn_app};
+use crate::helpers::{
+    assert_all_finite, refused, refused_by_cost, spawn_app, under_server_deadline,
+};
 
 const JOURNAL: &str = "/v1/gas-bearings/journal";
 const SLIDER: &str = "/v1/gas-bearings/slider";
@@ -133,6 +135,49 @@ async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
         .await;
     reply.problem(422);
     assert!(reply.text.contains("/load_n"), "{}", reply.text);
+}
+
+/// Explicit grids whose film solves the server's deadline cannot pay for are refused before
+/// any solve, a 422 naming the grid with the estimate (issue 16: the slider's [1024, 256] took
+/// 25.9 s in release, the journal's [512, 128] by load 443 s and [256, 64] with dynamics
+/// 25.9 s, each a 504 after the whole wait); grids finer than `high` within the estimate are
+/// solved as before, [256, 64] among them without dynamics.
+#[test]
+fn grids_beyond_the_deadline_are_refused_with_their_estimate() {
+    refused_by_cost(
+        under_server_deadline(SLIDER, &slider(json!({"fidelity": {"grid": [1024, 256]}}))),
+        "would take about 14.6 s at least",
+        "261888 unknowns with a band of 256, 6.87 s each",
+    );
+    refused_by_cost(
+        under_server_deadline(
+            JOURNAL,
+            &journal(
+                json!({"eccentricity_ratio": null, "load_n": 20.0, "fidelity": {"grid": [512, 128]}}),
+            ),
+        ),
+        "would take about 18.5 s at least",
+        "65536 unknowns with a band of 256",
+    );
+    refused_by_cost(
+        under_server_deadline(
+            JOURNAL,
+            &journal(json!({"dynamics": {}, "fidelity": {"grid": [256, 64]}})),
+        ),
+        "would take about 13.0 s at least",
+        "16384 unknowns with a band of 128",
+    );
+    for (path, body) in [
+        (SLIDER, slider(json!({"fidelity": {"grid": [256, 48]}}))),
+        (JOURNAL, journal(json!({"fidelity": {"grid": [256, 64]}}))),
+    ] {
+        let v = under_server_deadline(path, &body).unwrap_or_else(|e| panic!("{path}: {e:?}"));
+        assert_eq!(v["solver"]["grid"], body["fidelity"]["grid"], "{path}");
+        assert!(
+            v["result"]["load_dimensionless"].as_f64().unwrap() > 0.0,
+            "{path}"
+        );
+    }
 }
 
 #[tokio::test]

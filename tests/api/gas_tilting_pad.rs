@@ -8,12 +8,32 @@ use serde_json::{json, Value};
 use stribeck::calc::Failure;
 
 use crate::gas::run;
-use crate::helpers::{assert_all_finite, example_patched, refused, spawn_app};
+use crate::helpers::{
+    assert_all_finite, example_patched, refused, refused_by_cost, spawn_app, under_server_deadline,
+};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-journal";
 
 fn example(extra: Value) -> Value {
     example_patched(PATH, &extra)
+}
+
+/// An explicit grid whose pads' film solves the server's deadline cannot pay for is refused
+/// before any solve, a 422 naming the grid with the estimate (issue 16: the example on
+/// [512, 128] ran into a 504); a grid finer than `high` within it answers.
+#[test]
+fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
+    refused_by_cost(
+        under_server_deadline(PATH, &example(json!({"fidelity": {"grid": [512, 128]}}))),
+        "would take about 54.7 s at least",
+        "65408 unknowns with a band of 128",
+    );
+    let body = example(
+        json!({"load_n": null, "eccentricity_ratio": 0.5, "fidelity": {"grid": [128, 32]}}),
+    );
+    let v = under_server_deadline(PATH, &body).unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(v["solver"]["grid"], json!([128, 32]));
+    assert!(v["result"]["load_n"].as_f64().unwrap() > 0.0);
 }
 
 #[tokio::test]

@@ -6,7 +6,9 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{CalcError, Failure};
 
-use crate::helpers::{assert_all_finite, example_patched, refused, spawn_app};
+use crate::helpers::{
+    assert_all_finite, example_patched, refused, refused_by_cost, spawn_app, under_server_deadline,
+};
 
 const PATH: &str = "/v1/gas-bearings/tilting-pad-thrust";
 
@@ -54,6 +56,22 @@ async fn the_example_balances_and_the_clearance_gives_the_load_back() {
     assert_eq!(reply.status, 200, "{}", reply.text);
     let back = reply.body["result"]["load_n"].as_f64().unwrap();
     assert!((back / load - 1.0).abs() < 2e-2, "{back} vs {load}");
+}
+
+/// An explicit grid whose pad's film solves the server's deadline cannot pay for is refused
+/// before any solve, a 422 naming the grid with the estimate (issue 16: the example on
+/// [512, 128] ran into a 504); a grid finer than `high` within it answers.
+#[test]
+fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
+    refused_by_cost(
+        under_server_deadline(PATH, &body(json!({"fidelity": {"grid": [512, 128]}}))),
+        "would take about 118.6 s at least",
+        "130305 unknowns with a band of 255",
+    );
+    let fine = body(json!({"load_n": null, "clearance_m": 2e-5, "fidelity": {"grid": [160, 32]}}));
+    let v = under_server_deadline(PATH, &fine).unwrap_or_else(|e| panic!("{e:?}"));
+    assert_eq!(v["solver"]["grid"], json!([160, 32]));
+    assert!(v["result"]["load_n"].as_f64().unwrap() > 0.0);
 }
 
 #[tokio::test]

@@ -187,3 +187,43 @@ pub fn example_patched(path: &str, patch: &Value) -> Value {
     let example = serde_json::from_str(stribeck::calc::find(path).unwrap().example).unwrap();
     patched(example, patch)
 }
+
+/// `body` solved on `path` in process, under the server's default deadline from now (what the
+/// server gives a request it admits at once).
+pub fn under_server_deadline(path: &str, body: &Value) -> Result<Value, stribeck::calc::Failure> {
+    let entry = stribeck::calc::find(path).expect("registered");
+    let deadline = std::time::Instant::now() + Config::default().deadline;
+    (entry.execute)(
+        &serde_json::to_vec(body).unwrap(),
+        deadline,
+        Default::default(),
+    )
+    .map(|done| serde_json::from_slice(&done.body).expect("the envelope is JSON"))
+}
+
+/// A grid refused before any solve because its film solves outlast the deadline: a 422 naming
+/// `/fidelity/grid` whose reason gives `estimate` (e.g. "about 14.6 s at least") and the
+/// factorisations it counts (`work`, e.g. "261888 unknowns with a band of 256").
+pub fn refused_by_cost(
+    outcome: Result<Value, stribeck::calc::Failure>,
+    estimate: &str,
+    work: &str,
+) {
+    use stribeck::calc::{CalcError, Failure};
+    match outcome {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/fidelity/grid", "{message}");
+            assert!(
+                message.contains(estimate)
+                    && message.contains(work)
+                    && message.contains("the request's deadline leaves"),
+                "want {estimate:?} and {work:?}, got {message}"
+            );
+        }
+        Err(e) => panic!("expected a 422 naming the grid, got {e:?}"),
+        Ok(v) => panic!(
+            "expected a 422 naming the grid, got a result: {}",
+            v["solver"]
+        ),
+    }
+}

@@ -5,6 +5,8 @@ use proptest::prelude::*;
 use serde_json::{json, Value};
 use stribeck::calc::{find, CalcError, Failure};
 
+use crate::helpers::{refused_by_cost, under_server_deadline};
+
 const PATH: &str = "/v1/journal-bearings/plain";
 
 fn run(body: &Value) -> Result<Value, Failure> {
@@ -258,8 +260,6 @@ fn eccentricity_0_99_converges_on_the_clustered_mesh() {
 /// within the estimate is solved as before.
 #[test]
 fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
-    let entry = find(PATH).expect("registered");
-    let deadline = stribeck::config::Config::default().deadline;
     let readme = |grid: [u32; 2]| {
         json!({
             "geometry": {"diameter_m": 0.1, "length_m": 0.1, "radial_clearance_m": 0.0001},
@@ -267,27 +267,12 @@ fn a_grid_beyond_the_deadline_is_refused_with_its_estimate() {
             "inlet_temperature_c": 40, "fidelity": {"grid": grid}
         })
     };
-    let within = |body: &Value| {
-        (entry.execute)(
-            &serde_json::to_vec(body).unwrap(),
-            std::time::Instant::now() + deadline,
-            Default::default(),
-        )
-    };
-    match within(&readme([1024, 256])) {
-        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
-            assert_eq!(pointer, "/fidelity/grid");
-            assert!(
-                message.contains("would take about 10.7 s at least")
-                    && message.contains("262144 unknowns with a band of 256"),
-                "{message}"
-            );
-        }
-        Err(e) => panic!("expected a 422 naming the grid, got {e:?}"),
-        Ok(_) => panic!("expected a 422 naming the grid, got a result"),
-    }
-    let fine = within(&readme([384, 48])).unwrap_or_else(|e| panic!("{e:?}"));
-    let v: Value = serde_json::from_slice(&fine.body).unwrap();
+    refused_by_cost(
+        under_server_deadline(PATH, &readme([1024, 256])),
+        "would take about 10.7 s at least",
+        "262144 unknowns with a band of 256",
+    );
+    let v = under_server_deadline(PATH, &readme([384, 48])).unwrap_or_else(|e| panic!("{e:?}"));
     assert_eq!(v["solver"]["grid"], json!([384, 48]));
     assert!((num(&v["result"], "load_n") - 10000.0).abs() < 1e-6);
 }

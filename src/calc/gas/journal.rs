@@ -7,6 +7,7 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::cost::{self, Least};
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::journal_dynamics::{self, STANDARD_GRAVITY};
 use super::journal_film::{self, stretch, unstretch, JournalEvaluated, JournalFilm, MIN_FILM};
@@ -48,7 +49,8 @@ pub struct GasJournalInput {
     pub load_n: Option<Positive>,
     /// `fast`, `standard` (default), `high`, or `{"grid": [circumferential cells 16…512 (even),
     /// half-length axial cells 2…128]}`; each is also solved on its half mesh and
-    /// Richardson-extrapolated.
+    /// Richardson-extrapolated; a grid whose Newton solves would outlast the request's deadline
+    /// is refused at once (422 at `/fidelity/grid`, with the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
     /// Journal misalignment: the shaft's slope in the bearing and the plane it tilts in (the
@@ -614,6 +616,30 @@ impl Calculation for GasJournal {
         // attitude is: `auto` solves the continuum film first, decides on its h_min, and solves
         // again with slip if that decides so.
         let budget = ctx.budget();
+        let least = match case.given {
+            Given::Eccentricity(_) => Least::one_film(film.bearing_number),
+            Given::Load(_) => Least::JOURNAL_BY_LOAD,
+        };
+        // The whirl threshold's scan, the synchronous ratio and the asked ones, at least.
+        let least = match &case.dynamics {
+            Some(ratios) => {
+                least.with_whirl_ratios(journal_dynamics::WHIRL_RATIO_SCAN.len() + 1 + ratios.len())
+            }
+            None => least,
+        };
+        let sized = JournalFilm {
+            tilt: tilt.map(|_| (0.0, 0.0)),
+            ..film
+        };
+        let grid = journal_film::grid(&sized, case.method.mesh);
+        let far_edge = journal_film::problem(&sized, &grid).far_edge;
+        cost::check(
+            case.method,
+            journal_film::level_mesh,
+            (&grid, far_edge),
+            least,
+            &budget,
+        )?;
         // `warm`: an earlier film at this ε (the continuum one, before slip is applied) to start
         // from; a load search starts afresh.
         let solve = |film: JournalFilm,

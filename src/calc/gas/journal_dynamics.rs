@@ -24,6 +24,7 @@
 use super::journal_film::{JournalEvaluated, JournalFilm, JournalSolve};
 use crate::calc::journal::dynamics::{in_load_frame, whirl, Coefficients};
 use crate::calc::{Budget, CalcError};
+use crate::numerics::band_lu::Unfactored;
 use crate::numerics::reynolds_gas::{self, GasGrid};
 use crate::numerics::richardson::{extrapolate, fine_error};
 use crate::numerics::roots::{secant_bracketed, RootError, Stopping};
@@ -81,12 +82,14 @@ pub fn impedance(
         &solved.p,
         sigma,
         &[&cos_shape, &sin_shape],
+        budget,
     )
-    .map_err(|e| {
-        CalcError::Internal(format!(
+    .map_err(|e| match e {
+        Unfactored::Stopped => CalcError::DeadlineExceeded,
+        Unfactored::Singular(s) => CalcError::Internal(format!(
             "gas film's harmonic system singular at column {}",
-            e.column
-        ))
+            s.column
+        )),
     })?;
     budget.count_field_solve();
     // Z_ij = −∂F_i/∂d_j = +∂F_i/∂A_j.

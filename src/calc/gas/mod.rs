@@ -21,6 +21,7 @@
 //!   `pivoted_pad`.
 
 pub mod aerostatic_pad;
+pub mod cost;
 pub mod foil;
 pub mod foil_journal;
 pub mod gas_spec;

@@ -4,6 +4,7 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::cost::{self, Least};
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::method::{self, Method};
 use super::slider_film::{self, SliderFilm};
@@ -11,6 +12,7 @@ use crate::calc::quantity::{ratio_within, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
+use crate::numerics::reynolds_gas::FarEdge;
 
 pub struct GasSlider;
 
@@ -56,7 +58,9 @@ pub struct GasSliderInput {
     pub sliding_speed_m_s: Positive,
     pub gas: GasSpec,
     /// `fast`, `standard` (default), `high`, or `{"grid": [cells along B 8…1024, cells across
-    /// half of L 2…256]}`; each is also solved on its half mesh and Richardson-extrapolated.
+    /// half of L 2…256]}`; each is also solved on its half mesh and Richardson-extrapolated; a
+    /// grid whose Newton solves would outlast the request's deadline is refused at once (422 at
+    /// `/fidelity/grid`, with the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
     #[serde(default)]
@@ -271,6 +275,16 @@ impl Calculation for GasSlider {
         };
         ctx.decide("slip_flow", slip);
         let budget = ctx.budget();
+        cost::check(
+            case.method,
+            slider_film::level_mesh,
+            (
+                &slider_film::grid(&film, case.method.mesh),
+                FarEdge::Symmetry,
+            ),
+            Least::one_film(film.bearing_number),
+            &budget,
+        )?;
         let evaluated = slider_film::evaluate(&film, case.method, &budget)?;
         ctx.report(
             evaluated

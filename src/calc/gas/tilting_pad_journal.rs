@@ -6,10 +6,11 @@
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::cost::{self, Least};
 use super::gas_spec::GasSpec;
 use super::method::{self, Method};
 use super::tilting_pad_film::{
-    self, BearingEquilibrium, BearingFilm, PadEquilibrium, PadGeometry, MAX_ECCENTRICITY,
+    self, BearingEquilibrium, BearingFilm, PadEquilibrium, PadFilm, PadGeometry, MAX_ECCENTRICITY,
     PIVOT_ANGLES,
 };
 use crate::calc::journal::plain::GeometrySpec;
@@ -69,7 +70,8 @@ pub struct TiltingPadGasJournalInput {
     pub load_n: Option<Positive>,
     /// `fast`, `standard` (default), `high`, or `{"grid": [cells along a pad 8…512 (even),
     /// half-length cells 2…128]}`; each is also solved on its half mesh and
-    /// Richardson-extrapolated.
+    /// Richardson-extrapolated; a grid whose Newton solves would outlast the request's deadline
+    /// is refused at once (422 at `/fidelity/grid`, with the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
 }
@@ -324,6 +326,25 @@ impl Calculation for TiltingPadGasJournal {
         let (r, l) = (case.radius_m(), case.length_m);
         let bearing = case.bearing();
         let budget = ctx.budget();
+        // A pad of the centred journal: every pad's grid has its shape.
+        let pad = PadFilm {
+            geometry: bearing.geometry,
+            pivot_film: bearing.preload_factor,
+            tilt: 0.0,
+            bearing_number: bearing.bearing_number,
+            l_over_d: Some(bearing.l_over_d),
+        };
+        let grid = tilting_pad_film::grid(&pad, case.method.mesh);
+        cost::check(
+            case.method,
+            tilting_pad_film::level_mesh,
+            (&grid, tilting_pad_film::problem(&pad, &grid).far_edge),
+            match case.given {
+                Given::Eccentricity(_) => Least::TILTING_PAD_JOURNAL_AT_ECCENTRICITY,
+                Given::Load(_) => Least::TILTING_PAD_JOURNAL_BY_LOAD,
+            },
+            &budget,
+        )?;
         let (done, search) = match case.given {
             Given::Eccentricity(e) => (
                 tilting_pad_film::at_eccentricity(

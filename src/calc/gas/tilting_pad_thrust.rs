@@ -9,16 +9,18 @@ use std::f64::consts::PI;
 use serde::{Deserialize, Serialize};
 use utoipa::ToSchema;
 
+use super::cost::{self, Least};
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::method::{self, Method};
 use super::pivoted_pad::{self, PadEvaluated, PadGiven, PadScales, CLEARANCE_RANGE_M};
-use super::sector_pad::Sector;
+use super::sector_pad::{self, Sector};
 use super::slider::GasEffects;
 use super::slider_film;
 use crate::calc::quantity::{ratio_within, NonNegative, Positive};
 use crate::calc::{CalcError, Calculation, Context, FieldError, Validate};
 use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
+use crate::numerics::reynolds_gas::FarEdge;
 
 pub struct GasTiltingPadThrust;
 
@@ -73,7 +75,9 @@ pub struct GasTiltingPadThrustInput {
     pub clearance_m: Option<Positive>,
     /// `fast`, `standard` (default), `high`, or `{"grid": [cells along the pad's angle 8…512,
     /// cells across each half of its radial width 2…128]}`; a level, or a grid of even counts,
-    /// is also solved on its half mesh and Richardson-extrapolated.
+    /// is also solved on its half mesh and Richardson-extrapolated; a grid whose Newton solves
+    /// would outlast the request's deadline is refused at once (422 at `/fidelity/grid`, with
+    /// the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
     #[serde(default)]
@@ -334,6 +338,19 @@ impl Calculation for GasTiltingPadThrust {
         // Slip is decided on the thinnest film, known once the film is solved: `auto` solves the
         // continuum film first and again with slip, from the continuum pads, if its h_min asks
         // for it.
+        // The grid's shape, all that is costed, is any clearance's; both radial edges held.
+        let (clearance, least) = match case.given {
+            PadGiven::Clearance(c) => (c, Least::THRUST_PAD_AT_CLEARANCE),
+            PadGiven::Load(_) => (case.scales.clearance_at(1.0), Least::THRUST_PAD_BY_LOAD),
+        };
+        let grid = sector_pad::grid(&case.scales.film(clearance), case.method.mesh, false);
+        cost::check(
+            case.method,
+            slider_film::level_mesh,
+            (&grid, FarEdge::Held),
+            least,
+            &ctx.budget(),
+        )?;
         let first = Self::evaluate(&case, case.slip_flow == Mode::On, None, ctx)?;
         let slip = case.gas.slip_flow(case.slip_flow, first.thinnest_m().0);
         let done = if slip.applied && case.slip_flow != Mode::On {

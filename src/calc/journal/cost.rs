@@ -9,11 +9,12 @@
 //! Mass-conserving films are solved by sweeps and are not estimated here.
 
 use std::f64::consts::PI;
-use std::time::Duration;
 
 use super::film::{FilmModel, Mesh};
 use super::performance::{placed, third_mesh, Method, ThirdMesh};
+use crate::calc::grid_cost::{self, Factorisations};
 use crate::calc::{Budget, CalcError};
+use crate::fidelity::Level;
 
 /// Seconds per unit of band work (unknowns × band²) of one active-set step, assembly, solve
 /// and integration included. Measured in release on the 2-core machine the service is built
@@ -114,21 +115,21 @@ fn within_deadline(
     factorisations: f64,
     budget: &Budget,
 ) -> Result<(), CalcError> {
-    let each = SECONDS_PER_BAND_WORK * unknowns as f64 * (band * band) as f64;
-    let least = Duration::from_secs_f64(factorisations * each);
-    if budget.allows(least) {
-        return Ok(());
-    }
-    let left = budget.remaining().unwrap_or_default().as_secs_f64();
-    Err(CalcError::impossible(
-        if explicit { "/fidelity/grid" } else { "/fidelity" },
-        format!(
-            "the grid [{}, {}] would take about {:.1} s at least ({factorisations:.1} banded factorisations' worth of {unknowns} unknowns with a band of {band}, {each:.2} s each), more than the {left:.1} s the request's deadline leaves: use a coarser grid (`high` is [192, 24])",
-            mesh.circumferential,
-            mesh.axial_half,
-            least.as_secs_f64(),
-        ),
-    ))
+    let high = Method::numerical(Level::High, None, None)
+        .mesh()
+        .expect("a level has a mesh");
+    grid_cost::within_deadline(
+        &Factorisations {
+            grid: [mesh.circumferential, mesh.axial_half],
+            unknowns,
+            band,
+            count: factorisations,
+            seconds_per_band_work: SECONDS_PER_BAND_WORK,
+        },
+        explicit,
+        [high.circumferential, high.axial_half],
+        budget,
+    )
 }
 
 #[cfg(test)]
@@ -186,7 +187,7 @@ mod tests {
     fn a_grid_beyond_the_deadline_is_refused_naming_the_grid() {
         use std::sync::atomic::AtomicBool;
         use std::sync::Arc;
-        use std::time::Instant;
+        use std::time::{Duration, Instant};
         let budget = Budget::new(
             Instant::now() + Duration::from_secs(10),
             Arc::new(AtomicBool::new(false)),
