@@ -22,6 +22,7 @@
 //!   multiply–adds per point.
 
 use std::f64::consts::PI;
+use std::ops::Range;
 
 use super::half_space::{line_log_cell, line_log_cells};
 use super::quadrature::gauss_legendre;
@@ -54,6 +55,11 @@ struct Cluster {
     left: f64,
     right: f64,
     shape: Shape,
+    /// Whether a product needs its moments (it or an ancestor is the source of a far pair)
+    /// and its local expansion (it or an ancestor is the target of one): on a small grid most
+    /// clusters need neither.
+    moments: bool,
+    locals: bool,
 }
 
 #[derive(Debug, Clone)]
@@ -80,6 +86,20 @@ impl LineLogInfluence {
         };
         let root = operator.cluster(0, points.len());
         operator.pair(root, root);
+        for (target, source, _) in &operator.far {
+            operator.clusters[*target].locals = true;
+            operator.clusters[*source].moments = true;
+        }
+        // Parents come before their children.
+        for c in 0..operator.clusters.len() {
+            if let Shape::Parent([(a, _), (b, _)]) = operator.clusters[c].shape {
+                let (moments, locals) = (operator.clusters[c].moments, operator.clusters[c].locals);
+                for child in [a, b] {
+                    operator.clusters[child].moments |= moments;
+                    operator.clusters[child].locals |= locals;
+                }
+            }
+        }
         operator
     }
 
@@ -100,6 +120,14 @@ impl LineLogInfluence {
         line_log_cell(self.points[i], self.faces[j], self.faces[j + 1])
     }
 
+    /// The entries it keeps exact (the near pairs'): rows, columns, the block row-major.
+    pub fn exact_blocks(&self) -> impl Iterator<Item = (Range<usize>, Range<usize>, &[f64])> {
+        self.near.iter().map(|(target, source, block)| {
+            let (t, s) = (&self.clusters[*target], &self.clusters[*source]);
+            (t.lo..t.hi, s.lo..s.hi, block.as_slice())
+        })
+    }
+
     /// y = K v.
     #[must_use]
     pub fn apply(&self, v: &[f64]) -> Vec<f64> {
@@ -107,6 +135,9 @@ impl LineLogInfluence {
         let mut moments = vec![0.0; count * ORDER];
         // Children come after their parents (built depth first), so a reverse pass is upward.
         for (c, cluster) in self.clusters.iter().enumerate().rev() {
+            if !cluster.moments {
+                continue;
+            }
             let (head, tail) = moments.split_at_mut((c + 1) * ORDER);
             let q = &mut head[c * ORDER..];
             match &cluster.shape {
@@ -136,6 +167,9 @@ impl LineLogInfluence {
         }
         let mut out = vec![0.0; self.len()];
         for (c, cluster) in self.clusters.iter().enumerate() {
+            if !cluster.locals {
+                continue;
+            }
             let (head, tail) = locals.split_at_mut((c + 1) * ORDER);
             let g = &head[c * ORDER..];
             match &cluster.shape {
@@ -181,6 +215,8 @@ impl LineLogInfluence {
             left,
             right,
             shape: Shape::Parent(Default::default()),
+            moments: false,
+            locals: false,
         });
         let shape = if hi - lo <= LEAF {
             self.leaf(lo, hi, left, right)
@@ -368,6 +404,28 @@ mod tests {
                 );
             }
         }
+    }
+
+    #[test]
+    fn exact_blocks_hold_exact_entries_and_every_neighbour() {
+        let (points, faces) = clustered(1000);
+        let operator = LineLogInfluence::new(&points, &faces);
+        let n = points.len();
+        let mut neighbours = vec![false; n];
+        for (rows, columns, block) in operator.exact_blocks() {
+            for (i, entries) in rows.zip(block.chunks_exact(columns.len())) {
+                for (j, &k) in columns.clone().zip(entries) {
+                    assert_eq!(k, operator.entry(i, j), "({i}, {j})");
+                    if j == i + 1 {
+                        neighbours[i] = true;
+                    }
+                }
+            }
+        }
+        assert!(
+            neighbours[..n - 1].iter().all(|&held| held),
+            "a neighbour pair interpolated"
+        );
     }
 
     #[test]

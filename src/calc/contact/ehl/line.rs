@@ -33,7 +33,6 @@ use crate::numerics::band_lu::{Band, BandLu};
 use crate::numerics::dense;
 use crate::numerics::driver::{Budget, Driver, Stopped};
 use crate::numerics::gmres;
-use crate::numerics::half_space::line_log_cells;
 use crate::numerics::interpolate::linear;
 use crate::numerics::log_fmm::LineLogInfluence;
 use crate::numerics::newton::{self, LineSearch, NewtonSystem};
@@ -133,16 +132,35 @@ impl Grid {
         faces.push(x[n - 1]);
         let volume: Vec<f64> = faces.windows(2).map(|f| f[1] - f[0]).collect();
         let kernel = LineLogInfluence::new(&x, &faces);
-        // Row i holds cells i − KERNEL_BAND ..= i + KERNEL_BAND, zero beyond the ends.
-        let mut near = vec![0.0; n * (2 * KERNEL_BAND + 1)];
-        for (i, row) in near.chunks_exact_mut(2 * KERNEL_BAND + 1).enumerate() {
-            let (lo, hi) = (i.saturating_sub(KERNEL_BAND), (i + KERNEL_BAND).min(n - 1));
-            let cells = line_log_cells(x[i], &faces[lo..=hi + 1]);
-            row[lo + KERNEL_BAND - i..]
-                .iter_mut()
-                .zip(cells)
-                .for_each(|(k, c)| *k = c);
+        // Row i holds cells i − KERNEL_BAND ..= i + KERNEL_BAND, zero beyond the ends: taken
+        // from the operator's exact blocks where they hold them (on a small grid, all), the
+        // rest computed.
+        let width = 2 * KERNEL_BAND + 1;
+        let mut kept = vec![None; n * width];
+        for (rows, columns, block) in kernel.exact_blocks() {
+            for (i, entries) in rows.zip(block.chunks_exact(columns.len())) {
+                for (j, &k) in columns.clone().zip(entries) {
+                    if i.abs_diff(j) <= KERNEL_BAND {
+                        kept[i * width + j + KERNEL_BAND - i] = Some(k);
+                    }
+                }
+            }
         }
+        let near = kept
+            .into_iter()
+            .enumerate()
+            .map(|(at, k)| {
+                let (i, j) = (
+                    at / width,
+                    (at / width + at % width).checked_sub(KERNEL_BAND),
+                );
+                match (k, j) {
+                    (Some(k), _) => k,
+                    (None, Some(j)) if j < n => kernel.entry(i, j),
+                    _ => 0.0,
+                }
+            })
+            .collect();
         let hertz: Vec<f64> = x.iter().map(|&x| hertz_pressure(x)).collect();
         let base = kernel
             .apply(&hertz)
