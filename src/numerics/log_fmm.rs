@@ -103,17 +103,6 @@ impl LineLogInfluence {
         operator
     }
 
-    /// Cells (and points) in the operator.
-    #[must_use]
-    pub fn len(&self) -> usize {
-        self.points.len()
-    }
-
-    #[must_use]
-    pub fn is_empty(&self) -> bool {
-        self.points.is_empty()
-    }
-
     /// K_{ij}, exact.
     #[must_use]
     pub fn entry(&self, i: usize, j: usize) -> f64 {
@@ -165,7 +154,7 @@ impl LineLogInfluence {
                 *g += super::dense::dot(row, q);
             }
         }
-        let mut out = vec![0.0; self.len()];
+        let mut out = vec![0.0; self.points.len()];
         for (c, cluster) in self.clusters.iter().enumerate() {
             if !cluster.locals {
                 continue;
