@@ -35,7 +35,9 @@
 //! converged run counts one field solve.
 //!
 //! **Convergence.** The residual measure is the Jacobi-scaled residual max |Rᵢ/Jᵢᵢ| (a change of
-//! P), against the tolerance (1e-10 by default).
+//! P), against the tolerance (1e-10 by default). A film so weakly driven that the ambient field
+//! already meets it still takes its first Newton step (the linear film), so that what it carries
+//! is computed rather than zero.
 
 use super::band_lu::{Band, BandLu, Unfactored};
 use super::driver::{Budget, Driver, Stopped};
@@ -611,6 +613,7 @@ pub fn solve(
         }
     }
     let mut lambda = target.min(CONTINUATION_START);
+    let mut from_ambient = true;
     loop {
         let report = match run(&mut tally, &mut field, lambda) {
             Ok(r) => r,
@@ -622,11 +625,37 @@ pub fn solve(
                 return Err(e);
             }
         };
+        // A film driven so weakly that the ambient field met the tolerance (its whole rise is
+        // below it) would carry nothing: its first Newton step, the linear film, is taken
+        // anyway, and Newton runs again from it.
+        if std::mem::take(&mut from_ambient) && report.iterations == 0 {
+            let system = System {
+                grid,
+                problem,
+                numbering: &numbering,
+                lambda,
+                budget,
+            };
+            if linear_step(&system, &mut field) {
+                continue;
+            }
+        }
         if lambda >= target {
             return Ok(tally.solution(field, report));
         }
         lambda = (lambda * CONTINUATION_FACTOR).min(target);
     }
+}
+
+/// Newton's full step from `field`, where the film is linear in its rise (the next residual is
+/// of the rise squared); false when the Jacobian is singular or the budget is spent.
+fn linear_step(system: &System, field: &mut Vec<f64>) -> bool {
+    let at = system.evaluate(field);
+    let Some(step) = system.direction(field, &at) else {
+        return false;
+    };
+    *field = system.advance(field, &step, 1.0);
+    true
 }
 
 /// The work of every Newton run of one solve.

@@ -14,6 +14,10 @@ use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
 use crate::numerics::reynolds_gas::FarEdge;
 
+/// Smallest h1/h2 accepted: the film ratios of the thrust pads (1.01 … 10); a parallel film
+/// carries no load, and a nearly parallel one next to nothing.
+const MIN_FILM_RATIO: f64 = 1.01;
+
 pub struct GasSlider;
 
 /// The pad: B along the sliding direction, L across it.
@@ -47,7 +51,8 @@ pub struct GasEffects {
 #[serde(deny_unknown_fields)]
 pub struct GasSliderInput {
     pub pad: GasSliderPad,
-    /// Leading-edge film h1, m (1e-8 … 1e-3), at least `outlet_film_m` (a converging slider).
+    /// Leading-edge film h1, m (1e-8 … 1e-3), 1.01 to 10 times `outlet_film_m` (a converging
+    /// slider).
     #[schema(value_type = f64, minimum = 1e-8, maximum = 1e-3, example = 1e-5)]
     pub inlet_film_m: Positive,
     /// Trailing-edge film h2, m (1e-8 … 1e-3): the minimum film and the scale of Λ.
@@ -136,6 +141,11 @@ impl Validate for GasSliderInput {
             errors.push(FieldError::new(
                 "/inlet_film_m",
                 format!("a converging slider needs inlet_film_m ≥ outlet_film_m (h1 = {h1} m < h2 = {h2} m): a diverging film carries no load"),
+            ));
+        } else if h1 / h2 < MIN_FILM_RATIO {
+            errors.push(FieldError::new(
+                "/inlet_film_m",
+                format!("h1/h2 must be at least {MIN_FILM_RATIO}, got {:.6}: a parallel film carries no load, and a nearly parallel one next to nothing", h1 / h2),
             ));
         } else if h1 / h2 > 10.0 {
             errors.push(FieldError::new(

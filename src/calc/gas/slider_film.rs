@@ -216,7 +216,8 @@ pub fn evaluate(
         max_pressure: f.max_pressure,
         max_pressure_position: f.max_pressure_position,
     };
-    let error_estimate = Some((fine_error(c.load, f.load) / performance.load).abs());
+    let error_estimate =
+        Some((fine_error(c.load, f.load) / performance.load).abs()).filter(|e| e.is_finite());
     Ok(SliderEvaluated {
         performance,
         error_estimate,

@@ -131,8 +131,9 @@ fn slip_flow_matches_the_ode_with_the_slip_factor_and_lowers_the_load() {
 fn small_bearing_numbers_tend_to_table_11_3s_incompressible_limit() {
     // Khonsari & Booser Table 11.3, Λ → 0 (spec GB-3).
     let budget = Budget::unlimited();
-    for h1 in [1.5, 2.2, 4.0] {
-        let lambda = 1e-3;
+    // The last pair is the weakest film the room accepts (H1 = 1.01 at Λ = 10⁻⁶): its whole
+    // pressure rise, 3e-9 of ambient, is below the Newton tolerance, yet it is solved.
+    for (h1, lambda) in [(1.5, 1e-3), (2.2, 1e-3), (4.0, 1e-3), (1.01, 1e-6)] {
         let e = evaluate(&wide(h1, lambda, 0.0), method(Level::High), &budget).unwrap();
         let l = h1.ln();
         let w_over_lambda = (l - 2.0 * (h1 - 1.0) / (h1 + 1.0)) / (h1 - 1.0).powi(2);
@@ -147,6 +148,26 @@ fn small_bearing_numbers_tend_to_table_11_3s_incompressible_limit() {
         assert!(rel(e.performance.friction_runner, runner) < 1e-3);
         assert!((e.performance.friction_pad - pad).abs() < 1e-3);
     }
+}
+
+#[test]
+fn the_narrowest_weakest_pad_accepted_carries_its_linear_load() {
+    // W̄ ∝ Λ as Λ → 0 (Khonsari & Booser §11.3): at L/B = 0.05, H1 = 1.01 and Λ = 10⁻⁶
+    // (the room's limits) the rise is about 10⁻¹¹ of ambient, and the load is still a
+    // thousandth of the load at Λ = 10⁻³, with a finite estimate.
+    let budget = Budget::unlimited();
+    let pad = |lambda: f64| SliderFilm {
+        width_ratio: Some(0.05),
+        ..wide(1.01, lambda, 0.0)
+    };
+    let weak = evaluate(&pad(1e-6), method(Level::Standard), &budget).unwrap();
+    let linear = evaluate(&pad(1e-3), method(Level::Standard), &budget).unwrap();
+    let ratio = weak.performance.load / linear.performance.load;
+    assert!(rel(ratio, 1e-3) < 1e-3, "W̄ ratio {ratio:e}");
+    assert!(weak.error_estimate.unwrap().is_finite());
+    assert!(
+        (weak.performance.center_of_pressure - linear.performance.center_of_pressure).abs() < 1e-3
+    );
 }
 
 #[test]

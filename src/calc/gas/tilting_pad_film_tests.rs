@@ -110,7 +110,8 @@ fn a_symmetric_film_carries_no_load_at_small_bearing_numbers_and_a_uniform_one_s
     let uniform =
         equilibrium(GEOMETRY, 1.0, 1.5, Some(1.0), standard(), None, &budget, "").unwrap();
     assert_eq!(uniform.evaluated.film.tilt, 0.0);
-    assert_eq!(uniform.evaluated.performance.load, 0.0);
+    // (To rounding: the ambient field meets the tolerance, so the linear film's step is taken.)
+    assert!(uniform.evaluated.performance.load.abs() < 1e-12);
     // A preloaded pad, central pivot, zero tilt: H is even about the pivot, so the
     // incompressible (Λ → 0) pressure is odd there and carries no load but a moment.
     let film = PadFilm {
