@@ -11,7 +11,7 @@ use super::cost::{self, Least};
 use super::gas_spec::{GasSpec, FIRST_ORDER_SLIP_LIMIT};
 use super::journal_dynamics::{self, STANDARD_GRAVITY};
 use super::journal_film::{self, stretch, unstretch, JournalEvaluated, JournalFilm, MIN_FILM};
-use super::method::{self, Method};
+use super::method::{self, Given, Method};
 use crate::calc::journal::dynamics::Coefficients;
 use crate::calc::journal::film::Misalignment;
 use crate::calc::journal::plain::{DynamicCoefficients, GeometrySpec, MisalignmentSpec};
@@ -104,13 +104,6 @@ pub struct GasDynamicsRequest {
     pub whirl_frequency_ratios: Vec<f64>,
 }
 
-/// What the request fixes.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Given {
-    Eccentricity(f64),
-    Load(f64),
-}
-
 /// The parsed request.
 #[derive(Debug, Clone)]
 pub struct Case {
@@ -165,33 +158,14 @@ impl Validate for GasJournalInput {
                 format!("must be at most 1e6 rpm, got {speed}"),
             ));
         }
-        let given = match (self.eccentricity_ratio, self.load_n) {
-            (Some(e), None) if !e.is_finite() || !(0.0..1.0).contains(&e) => {
-                errors.push(FieldError::new(
-                    "/eccentricity_ratio",
-                    format!(
-                        "must be within [0, 1): ε ≥ 1 puts the journal on the bearing, got {e}"
-                    ),
-                ));
-                Given::Eccentricity(0.5)
-            }
-            (Some(e), None) if !(MIN_ECCENTRICITY..=MAX_ECCENTRICITY).contains(&e) => {
-                errors.push(FieldError::new(
-                    "/eccentricity_ratio",
-                    format!("must be within [{MIN_ECCENTRICITY}, {MAX_ECCENTRICITY}] (the minimum film resolved by the grids; the attitude of a vanishing load below), got {e}"),
-                ));
-                Given::Eccentricity(0.5)
-            }
-            (Some(e), None) => Given::Eccentricity(e),
-            (None, Some(w)) => Given::Load(w.get()),
-            _ => {
-                errors.push(FieldError::new(
-                    "/load_n",
-                    "give exactly one of eccentricity_ratio and load_n",
-                ));
-                Given::Eccentricity(0.5)
-            }
-        };
+        let given = method::given(
+            self.eccentricity_ratio,
+            self.load_n,
+            (MIN_ECCENTRICITY, MAX_ECCENTRICITY),
+            "ε ≥ 1 puts the journal on the bearing",
+            "the minimum film resolved by the grids; the attitude of a vanishing load below",
+            &mut errors,
+        );
         let method = method::parse(
             self.fidelity,
             journal_film::level_mesh,

@@ -1,6 +1,7 @@
 //! How a gas film is solved: a fidelity level's mesh, or an explicit one, and the Richardson
 //! pair (the mesh and every other node of it) that gives the error estimate.
 
+use crate::calc::quantity::Positive;
 use crate::calc::FieldError;
 use crate::fidelity::{FidelityRequest, Level};
 
@@ -33,6 +34,49 @@ pub fn check_bearing_number(
         ));
     }
     Ok(())
+}
+
+/// What a gas journal request fixes: the eccentricity ratio, or the load, N.
+#[derive(Debug, Clone, Copy, PartialEq)]
+pub enum Given {
+    Eccentricity(f64),
+    Load(f64),
+}
+
+/// A journal request's one of `eccentricity_ratio` and `load_n`: ε within [0, 1) (`touching`
+/// says what ε ≥ 1 means) and within `solved` (`why` says what bounds it), or the load.
+pub fn given(
+    eccentricity: Option<f64>,
+    load: Option<Positive>,
+    solved: (f64, f64),
+    touching: &str,
+    why: &str,
+    errors: &mut Vec<FieldError>,
+) -> Given {
+    let (lo, hi) = solved;
+    let refuse = |errors: &mut Vec<FieldError>, pointer: &str, message: String| {
+        errors.push(FieldError::new(pointer, message));
+        Given::Eccentricity(0.5)
+    };
+    match (eccentricity, load) {
+        (Some(e), None) if !e.is_finite() || !(0.0..1.0).contains(&e) => refuse(
+            errors,
+            "/eccentricity_ratio",
+            format!("must be within [0, 1): {touching}, got {e}"),
+        ),
+        (Some(e), None) if !(lo..=hi).contains(&e) => refuse(
+            errors,
+            "/eccentricity_ratio",
+            format!("must be within [{lo}, {hi}] ({why}), got {e}"),
+        ),
+        (Some(e), None) => Given::Eccentricity(e),
+        (None, Some(w)) => Given::Load(w.get()),
+        _ => refuse(
+            errors,
+            "/load_n",
+            "give exactly one of eccentricity_ratio and load_n".into(),
+        ),
+    }
 }
 
 /// Cells along the sliding direction (x) and across the half-width (y; 0 for an infinitely

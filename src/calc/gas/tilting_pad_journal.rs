@@ -8,7 +8,7 @@ use utoipa::ToSchema;
 
 use super::cost::{self, Least};
 use super::gas_spec::GasSpec;
-use super::method::{self, Method};
+use super::method::{self, Given, Method};
 use super::tilting_pad_film::{
     self, BearingEquilibrium, BearingFilm, PadEquilibrium, PadFilm, PadGeometry, MAX_ECCENTRICITY,
     PIVOT_ANGLES,
@@ -74,13 +74,6 @@ pub struct TiltingPadGasJournalInput {
     /// is refused at once (422 at `/fidelity/grid`, with the estimate).
     #[serde(default)]
     pub fidelity: FidelityRequest,
-}
-
-/// What the request fixes.
-#[derive(Debug, Clone, Copy, PartialEq)]
-pub enum Given {
-    Eccentricity(f64),
-    Load(f64),
 }
 
 /// The parsed request.
@@ -174,31 +167,14 @@ impl Validate for TiltingPadGasJournalInput {
                 format!("must be at most 1e6 rpm, got {speed}"),
             ));
         }
-        let given = match (self.eccentricity_ratio, self.load_n) {
-            (Some(e), None) if !e.is_finite() || !(0.0..1.0).contains(&e) => {
-                errors.push(FieldError::new(
-                    "/eccentricity_ratio",
-                    format!("must be within [0, 1): at ε′ ≥ 1 the loaded pad touches the journal at its pivot, got {e}"),
-                ));
-                Given::Eccentricity(0.5)
-            }
-            (Some(e), None) if e > MAX_ECCENTRICITY => {
-                errors.push(FieldError::new(
-                    "/eccentricity_ratio",
-                    format!("must be at most {MAX_ECCENTRICITY}: the loaded pad's pivot film (C′/C)(1 − ε′) is then below a twentieth of the pivot clearance, the pad all but touching; got {e}"),
-                ));
-                Given::Eccentricity(0.5)
-            }
-            (Some(e), None) => Given::Eccentricity(e),
-            (None, Some(w)) => Given::Load(w.get()),
-            _ => {
-                errors.push(FieldError::new(
-                    "/load_n",
-                    "give exactly one of eccentricity_ratio and load_n",
-                ));
-                Given::Eccentricity(0.5)
-            }
-        };
+        let given = method::given(
+            self.eccentricity_ratio,
+            self.load_n,
+            (0.0, MAX_ECCENTRICITY),
+            "at ε′ ≥ 1 the loaded pad touches the journal at its pivot",
+            "beyond, the loaded pad's pivot film (C′/C)(1 − ε′) is below a twentieth of the pivot clearance, the pad all but touching",
+            &mut errors,
+        );
         let method = method::parse(
             self.fidelity,
             tilting_pad_film::level_mesh,
