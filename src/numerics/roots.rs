@@ -83,7 +83,18 @@ pub fn brent_fallible<E: From<RootError>>(
     b: f64,
     stop: Stopping,
 ) -> Result<Root, E> {
-    with_failures(f, |g| brent(g, a, b, stop))?.map_err(E::from)
+    brent_outcome(f, a, b, stop)?.map_err(E::from)
+}
+
+/// [`brent`] over an f whose evaluations can fail: `Err` with the first failure, else `Ok`
+/// with the search's outcome, for the caller to read (as [`secant_fallible`]'s).
+pub fn brent_outcome<E>(
+    f: impl FnMut(f64) -> Result<f64, E>,
+    a: f64,
+    b: f64,
+    stop: Stopping,
+) -> Result<Result<Root, RootError>, E> {
+    with_failures(f, |g| brent(g, a, b, stop))
 }
 
 /// [`secant_bracketed`] over an f whose evaluations can fail: `Err` with the first failure,

@@ -17,7 +17,7 @@ use crate::calc::lubricant::model::{Lubricant, TemperatureLaw};
 use crate::calc::lubricant::validity;
 use crate::calc::{CalcError, Notes};
 use crate::effects::{Criterion, Decision, Mode};
-use crate::numerics::roots::{brent, brent_fallible, RootError, Stopping, MAX_DOUBLINGS};
+use crate::numerics::roots::{brent_fallible, brent_outcome, RootError, Stopping, MAX_DOUBLINGS};
 
 /// The two quantities the request fixes.
 #[derive(Debug, Clone, Copy, PartialEq)]
@@ -626,27 +626,16 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
 fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
     let hi = (t_in + 0.5 * rise).min(crate::calc::quantity::Celsius::MAX);
-    let mut failure = None;
     let mut evaluations = 0;
-    let mut residual = |t: f64| {
+    let residual = |t: f64| {
         evaluations += 1;
-        match at(case, t, regime) {
-            Ok(op) => t - t_in - 0.5 * op.power.temperature_rise,
-            Err(e) => {
-                failure.get_or_insert(e);
-                f64::NAN
-            }
-        }
+        at(case, t, regime).map(|op| t - t_in - 0.5 * op.power.temperature_rise)
     };
     let stop = Stopping {
         x_tolerance: 1e-9,
         max_iterations: 100,
     };
-    let root = brent(&mut residual, t_in, hi, stop);
-    if let Some(e) = failure {
-        return Err(e);
-    }
-    match root {
+    match brent_outcome(residual, t_in, hi, stop)? {
         Ok(root) => at(case, root.x, regime).map(|op| Operating {
             thermal_evaluations: evaluations + 1,
             ..op

@@ -345,26 +345,15 @@ fn clear_interval(clear: impl Fn(f64) -> bool, end: f64) -> Option<(f64, f64)> {
 /// Brent's search (at most 100 steps) for a root of `f` in `bracket`, where an evaluation may
 /// fail: the first failure, else the search's answer.
 fn brent_or_failure(
-    mut f: impl FnMut(f64) -> Result<f64, CalcError>,
+    f: impl FnMut(f64) -> Result<f64, CalcError>,
     (lo, hi): (f64, f64),
     x_tolerance: f64,
 ) -> Result<Result<roots::Root, RootError>, CalcError> {
-    let mut failure = None;
-    let root = brent(
-        |x| {
-            f(x).unwrap_or_else(|e| {
-                failure.get_or_insert(e);
-                f64::NAN
-            })
-        },
-        lo,
-        hi,
-        roots::Stopping {
-            x_tolerance,
-            max_iterations: 100,
-        },
-    );
-    failure.map_or(Ok(root), Err)
+    let stop = roots::Stopping {
+        x_tolerance,
+        max_iterations: 100,
+    };
+    roots::brent_outcome(f, lo, hi, stop)
 }
 
 /// Secant steps on the attitude mismatch from `guess`, the first with the slope −1, each at

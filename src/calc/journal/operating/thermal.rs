@@ -7,7 +7,7 @@ use super::{BushTemperatures, Case, Notes, Operating, MAX_TEMPERATURE_RISE_K};
 use crate::calc::journal::eccentricity::EccentricityRatio;
 use crate::calc::journal::performance::{self, Balance, Point, MAX_ECCENTRICITY};
 use crate::calc::{Budget, CalcError};
-use crate::numerics::roots::{brent, RootError, Stopping};
+use crate::numerics::roots::{brent, brent_outcome, RootError, Stopping};
 
 /// Jang & Khonsari's THD fits for the maximum bush and the shaft temperature (Khonsari & Booser
 /// Eq. 8.65, Table 8.11): T̄ = β (T − T_in), κ1 = (α_t μ_i β U/(k R))(R/C)², κ2 = U (μ_i β/k)^½,
@@ -214,26 +214,22 @@ pub(super) fn effective_temperature(
     budget: &Budget,
 ) -> Result<Operating, CalcError> {
     let k = case.effective_fraction();
-    let mut failure = None;
     let mut last: Option<Operating> = None;
-    let f = |t: f64| -> f64 {
+    let f = |t: f64| -> Result<f64, CalcError> {
         match case.operate(t, budget) {
             Ok(op) => {
                 let rise = case.temperature_rise(&op).unwrap_or(0.0);
                 let g = t - t_in - k * rise;
                 last = Some(op);
-                g
+                Ok(g)
             }
             // Too hot for the model (the thinned oil cannot carry the load, or the viscosity law
             // has no value there): the effective temperature lies below.
-            Err(CalcError::Impossible { .. }) if t > t_in => 1e3,
-            Err(e) => {
-                failure.get_or_insert(e);
-                f64::NAN
-            }
+            Err(CalcError::Impossible { .. }) if t > t_in => Ok(1e3),
+            Err(e) => Err(e),
         }
     };
-    let root = brent(
+    let root = brent_outcome(
         f,
         t_in,
         t_in + rise_iso.min(MAX_TEMPERATURE_RISE_K),
@@ -241,10 +237,7 @@ pub(super) fn effective_temperature(
             x_tolerance: 1e-3,
             max_iterations: 60,
         },
-    );
-    if let Some(e) = failure {
-        return Err(e);
-    }
+    )?;
     match root {
         Ok(r) => case
             .operate(r.x, budget)
