@@ -571,14 +571,15 @@ pub fn solve(
         take_shortest: true,
     };
     let mut tally = Tally::default();
+    let system_at = |lambda: f64| System {
+        grid,
+        problem,
+        numbering: &numbering,
+        lambda,
+        budget,
+    };
     let run = |tally: &mut Tally, field: &mut Vec<f64>, lambda: f64| {
-        let system = System {
-            grid,
-            problem,
-            numbering: &numbering,
-            lambda,
-            budget,
-        };
+        let system = system_at(lambda);
         let driver = Driver::new(
             "newton_fitted_flux_band_lu",
             IterationUnit::NewtonSteps,
@@ -628,17 +629,11 @@ pub fn solve(
         // A film driven so weakly that the ambient field met the tolerance (its whole rise is
         // below it) would carry nothing: its first Newton step, the linear film, is taken
         // anyway, and Newton runs again from it.
-        if std::mem::take(&mut from_ambient) && report.iterations == 0 {
-            let system = System {
-                grid,
-                problem,
-                numbering: &numbering,
-                lambda,
-                budget,
-            };
-            if linear_step(&system, &mut field) {
-                continue;
-            }
+        if std::mem::take(&mut from_ambient)
+            && report.iterations == 0
+            && linear_step(&system_at(lambda), &mut field)
+        {
+            continue;
         }
         if lambda >= target {
             return Ok(tally.solution(field, report));
