@@ -83,8 +83,8 @@ pub struct PressurePoint {
     /// Crank angle from top dead centre, degrees (ascending within the cycle).
     #[schema(minimum = 0.0, exclusive_maximum = 720.0)]
     pub crank_angle_deg: f64,
-    /// Cylinder pressure above the crankcase's, Pa (−1e6 … 1e9).
-    #[schema(minimum = -1e6, maximum = 1e9)]
+    /// Cylinder pressure above the crankcase's, Pa (−1e5 … 1e9: no lower than a vacuum).
+    #[schema(minimum = -1e5, maximum = 1e9)]
     pub pressure_pa: f64,
 }
 
@@ -242,7 +242,7 @@ pub struct DynamicJournalInput {
     #[schema(value_type = Option<f64>, minimum = -273.0, maximum = 1000.0, example = 60.0)]
     pub temperature_c: Option<Celsius>,
     /// Journal speed, rev/min (> 0, at most 1e6).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e6, example = 3000.0)]
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e6, example = 3000.0)]
     pub speed_rpm: Positive,
     /// The mass the bearing carries, kg (0 … 1e6; default 0: the massless mobility solution).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e6, example = 10.0)]
@@ -469,7 +469,7 @@ pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<Field
                     errors,
                     &format!("/load/cylinder_pressure/{i}/pressure_pa"),
                     p.pressure_pa,
-                    -1e6,
+                    -1e5,
                     1e9,
                 );
             }

@@ -194,7 +194,7 @@ impl From<JournalEffects> for Effects {
 pub struct PlainInput {
     pub geometry: GeometrySpec,
     /// Journal speed, rev/min (> 0, at most 1e6); the bearing is stationary.
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e6, example = 3000.0)]
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e6, example = 3000.0)]
     pub speed_rpm: Positive,
     pub lubricant: LubricantSpec,
     /// Steady radial load W, N (1e-6 … 1e12).

@@ -72,11 +72,11 @@ pub struct WhirlInput {
     pub load_n: Positive,
     /// Journal speed, rev/min (> 0, at most 1e6): the threshold mass is found at it. With
     /// `journal_mass_kg` as well, the verdict and the margins.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e6, example = 3000.0)]
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e6, example = 3000.0)]
     pub speed_rpm: Option<Positive>,
-    /// Mass of the rigid rotor carried by this bearing, kg (> 0, at most 1e9): the threshold
-    /// speed is found for it.
-    #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 1e9, example = 1000.0)]
+    /// Mass of the rigid rotor carried by this bearing, kg (1e-6 … 1e9): the threshold speed
+    /// is found for it.
+    #[schema(value_type = Option<f64>, minimum = 1e-6, maximum = 1e9, example = 1000.0)]
     pub journal_mass_kg: Option<Positive>,
     /// `short_pi_film`, `short_fixed_arc`, `short_full` or `finite` (default).
     #[serde(default)]

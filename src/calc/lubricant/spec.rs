@@ -75,8 +75,8 @@ pub struct VogelPoint {
     /// °C (−273 … 1000).
     #[schema(value_type = f64, minimum = -273.0, maximum = 1000.0, example = 40.0)]
     pub temperature_c: Celsius,
-    /// Dynamic viscosity, Pa·s, > 0.
-    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e6, example = 0.03)]
+    /// Dynamic viscosity, Pa·s (1e-6 … 1e4).
+    #[schema(value_type = f64, minimum = 1e-6, maximum = 1e4, example = 0.03)]
     pub viscosity_pa_s: Positive,
 }
 

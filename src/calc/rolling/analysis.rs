@@ -55,11 +55,11 @@ pub struct AnalysisInput {
     /// The bearing (as for `/v1/rolling-bearings/load-distribution`).
     #[schema(value_type = BallBearingSpec)]
     pub bearing: Value,
-    /// Radial load F_r, N (≥ 0).
-    #[schema(value_type = f64, minimum = 0.0, maximum = 1e10, example = 8900.0)]
+    /// Radial load F_r, N (0 … 1e9).
+    #[schema(value_type = f64, minimum = 0.0, maximum = 1e9, example = 8900.0)]
     pub radial_load_n: NonNegative,
-    /// Axial load F_a, N (≥ 0; default 0).
-    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e10, example = 0.0)]
+    /// Axial load F_a, N (0 … 1e9; default 0).
+    #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e9, example = 0.0)]
     pub axial_load_n: Option<NonNegative>,
     /// Inner-ring speed, rev/min (signed, |n| ≤ 1e6).
     #[schema(minimum = -1e6, maximum = 1e6, example = 2000.0)]

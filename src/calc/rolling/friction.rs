@@ -58,7 +58,7 @@ pub struct FrictionInput {
     #[schema(minimum = 0.0, maximum = 100.0, example = 6.6)]
     pub lubrication_factor: f64,
     /// Kinematic viscosity ν at the operating temperature, mm²/s (base oil for grease; 0.1 … 1e5).
-    #[schema(value_type = f64, exclusive_minimum = 0.0, maximum = 1e5, example = 6.0)]
+    #[schema(value_type = f64, minimum = 0.1, maximum = 1e5, example = 6.0)]
     pub operating_viscosity_mm2_s: Positive,
     /// Two rubbing seals; absent for open or shielded bearings.
     pub seals: Option<SealFactors>,

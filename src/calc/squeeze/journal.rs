@@ -71,7 +71,7 @@ pub struct SqueezeJournalInput {
     #[schema(value_type = f64, minimum = 1e-6, maximum = 1e12, example = 5589.8)]
     pub load_n: Positive,
     /// Eccentricity ratio at the start ε₁ = e/C, dimensionless (0 … below the final one).
-    #[schema(minimum = 0.0, maximum = 0.999, example = 0.5)]
+    #[schema(minimum = 0.0, exclusive_maximum = 0.999, example = 0.5)]
     pub initial_eccentricity_ratio: f64,
     /// Eccentricity ratio at the end ε₂, dimensionless (above the initial one, at most 0.999).
     #[schema(minimum = 0.0, maximum = 0.999, example = 0.9)]
