@@ -33,6 +33,10 @@ pub struct DynamicJournal;
 const MAX_LOAD_N: f64 = 1e9;
 /// Largest speed and frequency ratios of a load.
 const MAX_RATIO: f64 = 100.0;
+/// Smallest nonzero speed and frequency ratio of a load: one load period, 1/ratio
+/// revolutions, fits the longest run (a steady orbit integrates whole periods; a slower load
+/// is quasi-static).
+const MIN_RATIO: f64 = 1.0 / MAX_REVOLUTIONS;
 /// Largest journal mass, kg.
 const MAX_MASS_KG: f64 = 1e6;
 /// The longest run, in journal revolutions.
@@ -107,7 +111,9 @@ pub enum DynamicLoadSpec {
         /// N (0 … 1e9).
         #[schema(minimum = 0.0, maximum = 1e9)]
         magnitude_n: f64,
-        /// Load speed over journal speed (−100 … 100; negative turns against the journal).
+        /// Load speed over journal speed (−100 … 100; negative turns against the journal): 0 (a
+        /// fixed direction) or at least 5e-5 in magnitude (one turn of the load within the
+        /// longest run, 20 000 revolutions).
         #[schema(minimum = -100.0, maximum = 100.0)]
         speed_ratio: f64,
         /// Direction at time 0, degrees from +x.
@@ -122,8 +128,9 @@ pub enum DynamicLoadSpec {
         /// F_o, N.
         #[schema(minimum = -1e9, maximum = 1e9)]
         amplitude_n: f64,
-        /// α, the load frequency over the journal's (0 … 100].
-        #[schema(exclusive_minimum = 0.0, maximum = 100.0)]
+        /// α, the load frequency over the journal's (5e-5 … 100: one load period within the
+        /// longest run, 20 000 revolutions; a slower load is quasi-static).
+        #[schema(minimum = 5e-5, maximum = 100.0)]
         frequency_ratio: f64,
         /// Degrees from +x (−90 = down).
         #[schema(minimum = -3600.0, maximum = 3600.0)]
@@ -380,6 +387,12 @@ pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<Field
                 -MAX_RATIO,
                 MAX_RATIO,
             );
+            if speed_ratio != 0.0 && speed_ratio.abs() < MIN_RATIO {
+                errors.push(FieldError::new(
+                    "/load/speed_ratio",
+                    format!("must be 0 or at least {MIN_RATIO:e} in magnitude (one turn of the load within the longest run, {MAX_REVOLUTIONS} revolutions), got {speed_ratio:e}"),
+                ));
+            }
             LoadLaw::Rotating {
                 magnitude: magnitude_n,
                 speed_ratio,
@@ -394,13 +407,11 @@ pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<Field
         } => {
             force(errors, "static_n", static_n);
             force(errors, "amplitude_n", amplitude_n);
-            if !(frequency_ratio.is_finite()
-                && frequency_ratio > 0.0
-                && frequency_ratio <= MAX_RATIO)
+            if !(frequency_ratio.is_finite() && (MIN_RATIO..=MAX_RATIO).contains(&frequency_ratio))
             {
                 errors.push(FieldError::new(
                     "/load/frequency_ratio",
-                    format!("must be within (0, {MAX_RATIO}], got {frequency_ratio}"),
+                    format!("must be within [{MIN_RATIO:e}, {MAX_RATIO}] (one load period within the longest run, {MAX_REVOLUTIONS} revolutions; a slower load is quasi-static), got {frequency_ratio}"),
                 ));
             }
             LoadLaw::Sinusoidal {
@@ -1229,7 +1240,7 @@ mod tests {
 
     #[test]
     fn invalid_requests_name_their_fields() {
-        let rows: [(Value, Value, &str); 10] = [
+        let rows: [(Value, Value, &str); 12] = [
             (json!("speed_rpm"), json!(5e-324), "/speed_rpm"),
             (
                 json!("load"),
@@ -1240,6 +1251,17 @@ mod tests {
                 json!("load"),
                 json!({"kind": "sinusoidal", "static_n": 1, "amplitude_n": 1, "frequency_ratio": 0, "direction_deg": 0}),
                 "/load/frequency_ratio",
+            ),
+            // A load period of 1e300 revolutions ran on to the deadline (a bound scan's 504).
+            (
+                json!("load"),
+                json!({"kind": "sinusoidal", "static_n": 1, "amplitude_n": 1, "frequency_ratio": 1e-300, "direction_deg": 0}),
+                "/load/frequency_ratio",
+            ),
+            (
+                json!("load"),
+                json!({"kind": "rotating", "magnitude_n": 1, "speed_ratio": -1e-300, "direction_at_start_deg": 0}),
+                "/load/speed_ratio",
             ),
             (
                 json!("load"),
