@@ -39,6 +39,10 @@ const MIN_INERTIA_KG_M2: f64 = 1e-9;
 const MAX_INERTIA_KG_M2: f64 = 1e6;
 /// The longest run, in journal revolutions, and the most load periods to settle.
 const MAX_REVOLUTIONS: f64 = 20_000.0;
+/// The longest load period, in journal revolutions: under a slow load the sleeve takes
+/// hundreds of time steps a revolution (about 5 ms a revolution at `high`), so a hundred
+/// revolutions a period keep a steady orbit within seconds.
+const LONGEST_LOAD_PERIOD: f64 = 100.0;
 const MAX_PERIODS: u32 = 400;
 /// Points of each sampled locus.
 const ORBIT_POINTS: usize = 181;
@@ -107,6 +111,8 @@ pub struct CompositeOrbitInput {
     /// opposing the sleeve's rotation (regularised over |ξ| < 1e-6, so a held sleeve stands).
     #[schema(value_type = Option<f64>, minimum = 0.0, maximum = 1e6, example = 0.0)]
     pub rolling_friction_torque_n_m: Option<NonNegative>,
+    /// The load, as `/v1/journal-bearings/dynamic`'s, but a rotating or sinusoidal load's ratio
+    /// at least 0.01 in magnitude (one load period within 100 revolutions).
     pub load: DynamicLoadSpec,
     /// `short_fixed_arc` (default: Harnoy's book mode) or `short_pi_film`.
     #[serde(default)]
@@ -202,7 +208,7 @@ impl Validate for CompositeOrbitInput {
                 format!("must be within [{MIN_INERTIA_KG_M2:e}, {MAX_INERTIA_KG_M2:e}] kg·m², got {inertia}"),
             ));
         }
-        let load = load_law(self.load, n * PI / 30.0, &mut errors);
+        let load = load_law(self.load, n * PI / 30.0, LONGEST_LOAD_PERIOD, &mut errors);
         let (tolerance, level) = tolerance(self.fidelity, &mut errors);
         let thermal = parse_thermal(
             self.sleeve_wall_thickness_m,

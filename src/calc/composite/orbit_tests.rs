@@ -106,7 +106,7 @@ fn a_half_speed_load_no_plain_bearing_carries_rides_on_the_turning_sleeve() {
 
 #[test]
 fn invalid_requests_name_their_fields() {
-    let rows: [(&str, Value, &str); 8] = [
+    let rows: [(&str, Value, &str); 9] = [
         ("journal_speed_rpm", json!(5e-324), "/journal_speed_rpm"),
         ("journal_mass_kg", json!(5e-324), "/journal_mass_kg"),
         (
@@ -118,6 +118,12 @@ fn invalid_requests_name_their_fields() {
         (
             "load",
             json!({"kind": "sinusoidal", "static_n": 1, "amplitude_n": 1, "frequency_ratio": 0, "direction_deg": 0}),
+            "/load/frequency_ratio",
+        ),
+        // A load period of 200 revolutions ran past the deadline (a bound scan's 504).
+        (
+            "load",
+            json!({"kind": "sinusoidal", "static_n": 1, "amplitude_n": 1, "frequency_ratio": 5e-3, "direction_deg": 0}),
             "/load/frequency_ratio",
         ),
         ("film_model", json!("short_full"), "/film_model"),

@@ -33,10 +33,6 @@ pub struct DynamicJournal;
 const MAX_LOAD_N: f64 = 1e9;
 /// Largest speed and frequency ratios of a load.
 const MAX_RATIO: f64 = 100.0;
-/// Smallest nonzero speed and frequency ratio of a load: one load period, 1/ratio
-/// revolutions, fits the longest run (a steady orbit integrates whole periods; a slower load
-/// is quasi-static).
-const MIN_RATIO: f64 = 1.0 / MAX_REVOLUTIONS;
 /// Largest journal mass, kg.
 const MAX_MASS_KG: f64 = 1e6;
 /// The longest run, in journal revolutions.
@@ -348,8 +344,16 @@ pub(crate) fn ascending_angles(
 }
 
 /// The load law of a request's `load`, its invalid fields pushed onto `errors` (also the
-/// composite orbit's).
-pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<FieldError>) -> LoadLaw {
+/// composite orbit's). One load period, 1/ratio revolutions for a rotating or sinusoidal load,
+/// may last at most `longest_period` revolutions (a steady orbit integrates whole periods; a
+/// slower load is quasi-static).
+pub(crate) fn load_law(
+    spec: DynamicLoadSpec,
+    omega: f64,
+    longest_period: f64,
+    errors: &mut Vec<FieldError>,
+) -> LoadLaw {
+    let min_ratio = 1.0 / longest_period;
     let force = |errors: &mut Vec<FieldError>, field: &str, v: f64| {
         finite_within(
             errors,
@@ -387,10 +391,10 @@ pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<Field
                 -MAX_RATIO,
                 MAX_RATIO,
             );
-            if speed_ratio != 0.0 && speed_ratio.abs() < MIN_RATIO {
+            if speed_ratio != 0.0 && speed_ratio.abs() < min_ratio {
                 errors.push(FieldError::new(
                     "/load/speed_ratio",
-                    format!("must be 0 or at least {MIN_RATIO:e} in magnitude (one turn of the load within the longest run, {MAX_REVOLUTIONS} revolutions), got {speed_ratio:e}"),
+                    format!("must be 0 or at least {min_ratio:e} in magnitude (one turn of the load within {longest_period} revolutions, the longest load period this room integrates), got {speed_ratio:e}"),
                 ));
             }
             LoadLaw::Rotating {
@@ -407,11 +411,11 @@ pub(crate) fn load_law(spec: DynamicLoadSpec, omega: f64, errors: &mut Vec<Field
         } => {
             force(errors, "static_n", static_n);
             force(errors, "amplitude_n", amplitude_n);
-            if !(frequency_ratio.is_finite() && (MIN_RATIO..=MAX_RATIO).contains(&frequency_ratio))
+            if !(frequency_ratio.is_finite() && (min_ratio..=MAX_RATIO).contains(&frequency_ratio))
             {
                 errors.push(FieldError::new(
                     "/load/frequency_ratio",
-                    format!("must be within [{MIN_RATIO:e}, {MAX_RATIO}] (one load period within the longest run, {MAX_REVOLUTIONS} revolutions; a slower load is quasi-static), got {frequency_ratio}"),
+                    format!("must be within [{min_ratio:e}, {MAX_RATIO}] (one load period within {longest_period} revolutions, the longest this room integrates; a slower load is quasi-static), got {frequency_ratio}"),
                 ));
             }
             LoadLaw::Sinusoidal {
@@ -520,7 +524,7 @@ impl Validate for DynamicJournalInput {
             ));
         }
         let engine = matches!(self.load, DynamicLoadSpec::Engine { .. });
-        let load = load_law(self.load, omega, &mut errors);
+        let load = load_law(self.load, omega, MAX_REVOLUTIONS, &mut errors);
         let initial = match self.initial_state {
             None | Some(InitialState::Named(InitialStateName::Equilibrium)) => {
                 InitialStart::Equilibrium
