@@ -37,12 +37,10 @@ const MIN_MASS_KG: f64 = 1e-6;
 /// Sleeve unit's inertia range, kg·m².
 const MIN_INERTIA_KG_M2: f64 = 1e-9;
 const MAX_INERTIA_KG_M2: f64 = 1e6;
-/// The longest run, in journal revolutions, and the most load periods to settle.
-const MAX_REVOLUTIONS: f64 = 20_000.0;
-/// The longest load period, in journal revolutions: under a slow load the sleeve takes
-/// hundreds of time steps a revolution (about 5 ms a revolution at `high`), so a hundred
-/// revolutions a period keep a steady orbit within seconds.
-const LONGEST_LOAD_PERIOD: f64 = 100.0;
+/// The longest run, in journal revolutions, and so the longest load period, and the most load
+/// periods to settle: the sleeve takes hundreds of time steps a revolution (about 5 ms a
+/// revolution at `high`), so a hundred revolutions keep a run within seconds.
+const MAX_REVOLUTIONS: f64 = 100.0;
 const MAX_PERIODS: u32 = 400;
 /// Points of each sampled locus.
 const ORBIT_POINTS: usize = 181;
@@ -208,7 +206,7 @@ impl Validate for CompositeOrbitInput {
                 format!("must be within [{MIN_INERTIA_KG_M2:e}, {MAX_INERTIA_KG_M2:e}] kg·m², got {inertia}"),
             ));
         }
-        let load = load_law(self.load, n * PI / 30.0, LONGEST_LOAD_PERIOD, &mut errors);
+        let load = load_law(self.load, n * PI / 30.0, MAX_REVOLUTIONS, &mut errors);
         let (tolerance, level) = tolerance(self.fidelity, &mut errors);
         let thermal = parse_thermal(
             self.sleeve_wall_thickness_m,
