@@ -178,6 +178,23 @@ fn a_crushing_load_rides_on_root_two_times_the_held_sleeves_film_and_beyond_that
     }
 }
 
+#[test]
+fn a_load_cycle_far_beyond_the_film_is_contact_not_a_run_to_the_deadline() {
+    // ±1 GN twice a revolution drives the journal to within 1e-5 C of the wall, where the
+    // film is so stiff that the orbit took millions of steps and ran to the deadline (a bound
+    // scan's 504); the run's step cap now ends it there, a 422 naming the load.
+    let mut body = example();
+    body["load"] = json!({"kind": "sinusoidal", "static_n": 1e4, "amplitude_n": 1e9,
+        "frequency_ratio": 2, "direction_deg": -90});
+    match post::<CompositeOrbit>(&body) {
+        Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+            assert_eq!(pointer, "/load");
+            assert!(message.contains("reaches the wall"), "{message}");
+        }
+        other => panic!("{other:?}"),
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(12))]
     #[test]

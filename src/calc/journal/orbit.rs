@@ -201,10 +201,14 @@ pub enum OrbitError {
 
 impl OrbitError {
     /// A halted integration: contact when it stalled within 1 % of the film's reach in ε (the
-    /// wall stopped it), else the integrator's report.
+    /// wall stopped it), or used up the run's steps with the film below a thousandth of the
+    /// clearance (a load so far beyond the film's that only its stiffness near the wall held
+    /// it off); else the integrator's report.
     pub(crate) fn halted<const N: usize>(h: Halted<N>, reach: f64) -> Self {
         let e = h.y[0].hypot(h.y[1]);
-        if h.stopped.reason() == StopReason::Stalled && e > 0.99 * reach {
+        let stalled_at_wall = h.stopped.reason() == StopReason::Stalled && e > 0.99 * reach;
+        let capped_at_wall = h.stopped.reason() == StopReason::IterationCap && e > 0.999;
+        if stalled_at_wall || capped_at_wall {
             OrbitError::Contact {
                 time: h.t,
                 eccentricity: e,
@@ -216,14 +220,28 @@ impl OrbitError {
 }
 
 /// The integrator's tolerance for a fidelity's relative tolerance: absolute as relative on r̄
-/// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen.
+/// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen,
+/// and at most [`RUN_STEPS`] in a run.
 pub(crate) fn settings(relative: f64) -> Settings {
     Settings {
         method: Method::RadauIia5,
         relative,
         absolute: relative,
         max_step: 2.0 * PI / 50.0,
-        max_steps: 2_000_000,
+        max_steps: RUN_STEPS,
+    }
+}
+
+/// Time steps a whole run may take, over all its integrations: a few seconds. A film driven
+/// to within nanometres of contact by a load far beyond what it carries is so stiff that its
+/// orbit would take millions; it answers as not converged instead of running to the deadline.
+pub(crate) const RUN_STEPS: u32 = 500_000;
+
+/// `settings` for the next integration of a run that has taken `taken` steps.
+pub(crate) fn remaining(settings: Settings, taken: u32) -> Settings {
+    Settings {
+        max_steps: settings.max_steps.saturating_sub(taken).max(1),
+        ..settings
     }
 }
 
@@ -502,6 +520,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             }
             Flow::Continue
         };
+        let settings = remaining(settings, tally.steps);
         let done = ode::integrate(rate, t, y, t_end, &settings, observe, budget);
         let done = match done {
             Ok(d) => d,
