@@ -468,7 +468,15 @@ proptest! {
         let mode = if fixed { "fixed" } else { "varying" };
         let v = match post(&request(b, f_r, f_a, mode)) {
             Ok(v) => v,
-            // The fixed-angle existence condition, and only that, may refuse.
+            // A load beyond the rigid-ring model (the raceways' curvature centres would pass
+            // each other: 28 kN on six 10 mm balls with 38 µm clearance) may refuse ...
+            Err(Failure::Calc(CalcError::Impossible { pointer, message }))
+                if message.contains("far beyond the bearing's static capacity") =>
+            {
+                prop_assert_eq!(pointer, "/radial_load_n");
+                return Ok(());
+            }
+            // ... and the fixed-angle existence condition, and nothing else.
             Err(Failure::Calc(CalcError::Impossible { pointer, .. })) if fixed => {
                 prop_assert_eq!(pointer, "/axial_load_n");
                 return Ok(());
