@@ -11,7 +11,7 @@ use std::time::{Duration, Instant};
 
 /// A finite-film orbit for 200 s of journal time at high fidelity: it runs far longer than the
 /// drain (about 13 s in a debug build, ending in a 422), so the drain's end stops it.
-const SLOW: &str = r#"{"geometry": {"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}, "lubricant": {"viscosity_pa_s": 0.02}, "speed_rpm": 3000, "journal_mass_kg": 20, "load": {"kind": "sinusoidal", "static_n": 10000, "amplitude_n": 5000, "frequency_ratio": 1, "direction_deg": -90}, "film_model": "finite", "fidelity": "high", "until": {"time_s": 200}}"#;
+const SLOW: &str = r#"{"geometry": {"diameter_m": 0.1, "length_m": 0.04, "radial_clearance_m": 0.0001}, "lubricant": {"viscosity_pa_s": 0.02}, "speed_rpm": 3000, "journal_mass_kg": 20, "load": {"kind": "sinusoidal", "static_n": 10000, "amplitude_n": 5000, "frequency_ratio": 1, "direction_deg": -90}, "film_model": "finite", "fidelity": "high", "until": {"time_s": 39}}"#;
 
 const DRAIN: Duration = Duration::from_millis(1500);
 

@@ -377,7 +377,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             }
             Flow::Continue
         };
-        let settings = orbit::remaining(settings, steps);
+        let settings = orbit::next_period(settings, steps);
         let done = match ode::integrate(rate, t, y, t + period, &settings, observe, budget) {
             Ok(done) => done,
             Err(Failure::Halted(h)) => return Err(OrbitError::halted(*h, CONTACT)),

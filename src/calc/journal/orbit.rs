@@ -220,27 +220,28 @@ impl OrbitError {
 }
 
 /// The integrator's tolerance for a fidelity's relative tolerance: absolute as relative on r̄
-/// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen,
-/// and at most [`RUN_STEPS`] in a run.
+/// (order one), the steps at most a fiftieth of a revolution so that every load cycle is seen.
 pub(crate) fn settings(relative: f64) -> Settings {
     Settings {
         method: Method::RadauIia5,
         relative,
         absolute: relative,
         max_step: 2.0 * PI / 50.0,
-        max_steps: RUN_STEPS,
+        max_steps: 2_000_000,
     }
 }
 
-/// Time steps a whole run may take, over all its integrations: a few seconds. A film driven
-/// to within nanometres of contact by a load far beyond what it carries is so stiff that its
-/// orbit would take millions; it answers as not converged instead of running to the deadline.
-pub(crate) const RUN_STEPS: u32 = 500_000;
+/// Time steps a run to a steady orbit may take over all its load periods: a few seconds. A
+/// film driven to within nanometres of contact by a load cycle far beyond what it carries is
+/// so stiff that its orbit would take millions; it ends capped (contact, see
+/// [`OrbitError::halted`]) instead of running to the deadline.
+pub(crate) const STEADY_RUN_STEPS: u32 = 500_000;
 
-/// `settings` for the next integration of a run that has taken `taken` steps.
-pub(crate) fn remaining(settings: Settings, taken: u32) -> Settings {
+/// `settings` for the next load period of a run to a steady orbit that has taken `taken`
+/// steps.
+pub(crate) fn next_period(settings: Settings, taken: u32) -> Settings {
     Settings {
-        max_steps: settings.max_steps.saturating_sub(taken).max(1),
+        max_steps: STEADY_RUN_STEPS.saturating_sub(taken).max(1),
         ..settings
     }
 }
@@ -450,6 +451,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     budget: &Budget,
 ) -> Result<Orbit, OrbitError> {
     let settings = settings(relative);
+    let steady_run = matches!(until, Until::SteadyOrbit { .. });
     let period = problem.load.period();
     let mut tally = Tally::default();
     let mut peak = (eccentricity(&y0), 0.0);
@@ -520,7 +522,11 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             }
             Flow::Continue
         };
-        let settings = remaining(settings, tally.steps);
+        let settings = if steady_run {
+            next_period(settings, tally.steps)
+        } else {
+            settings
+        };
         let done = ode::integrate(rate, t, y, t_end, &settings, observe, budget);
         let done = match done {
             Ok(d) => d,
