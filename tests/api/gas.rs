@@ -99,6 +99,13 @@ async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
             "no closed form",
         ),
         (
+            // The edge fuzzer's find: a subnormal load made W/W_target infinite (a 500).
+            JOURNAL,
+            journal(json!({"eccentricity_ratio": null, "load_n": 5e-324})),
+            "/load_n",
+            "not subnormal",
+        ),
+        (
             SLIDER,
             slider(json!({"inlet_film_m": 4e-6})),
             "/inlet_film_m",

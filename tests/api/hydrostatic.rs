@@ -140,6 +140,23 @@ async fn bad_pads_are_422s_naming_the_field_with_the_reason() {
             "between 0 and 1",
         ),
         (
+            // The edge fuzzer's finds: a subnormal ratio, efficiency or radius made the pumping
+            // power infinite (a 500 in the film-temperature root).
+            with("/compensation/pressure_ratio", json!(5e-324)),
+            "/compensation/pressure_ratio",
+            "between 0 and 1",
+        ),
+        (
+            with("/pump_efficiency", json!(5e-324)),
+            "/pump_efficiency",
+            "not subnormal",
+        ),
+        (
+            with("/pad/recess_radius_m", json!(5e-324)),
+            "/pad/recess_radius_m",
+            "not subnormal",
+        ),
+        (
             with("/compensation/discharge_coefficient", Value::Null),
             "/compensation/discharge_coefficient",
             "required",

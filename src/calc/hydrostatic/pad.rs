@@ -397,12 +397,13 @@ fn parse_compensation(
     };
     let ratio = match spec.pressure_ratio {
         None => None,
-        Some(HydrostaticPressureRatio::Value(m)) if m.is_finite() && m > 0.0 && m < 1.0 => Some(m),
+        // Normal: a subnormal m (5e-324) made p_s = p_r/m infinite (a 500).
+        Some(HydrostaticPressureRatio::Value(m)) if m.is_normal() && m > 0.0 && m < 1.0 => Some(m),
         Some(HydrostaticPressureRatio::Value(m)) => {
             errors.push(FieldError::new(
                 "/compensation/pressure_ratio",
                 format!(
-                    "must lie strictly between 0 and 1 (p_r below p_s), or be \"optimum\"; got {m}"
+                    "must lie strictly between 0 and 1 (p_r below p_s; at least 2.2e-308), or be \"optimum\"; got {m}"
                 ),
             ));
             None
