@@ -157,6 +157,15 @@ async fn bad_pads_are_422s_naming_the_field_with_the_reason() {
             "not subnormal",
         ),
         (
+            // The edge fuzzer's find: R/R₀ = 10/2.2e-308 overflowed ln(R/R₀) (a 500).
+            json!({"pad": {"kind": "circular_step", "recess_radius_m": f64::MIN_POSITIVE, "outer_radius_m": 10},
+                   "compensation": {"kind": "capillary", "radius_m": 0.000762, "pressure_ratio": "optimum"},
+                   "lubricant": {"iso_vg": 68, "density_15c_kg_m3": 870}, "temperature_c": 40,
+                   "film_m": 7.62e-05, "load_n": 177929, "speed_rpm": 100}),
+            "/pad/recess_radius_m",
+            "at least 1e-6 outer_radius_m",
+        ),
+        (
             with("/compensation/discharge_coefficient", Value::Null),
             "/compensation/discharge_coefficient",
             "required",
