@@ -12,7 +12,9 @@ pub fn ratio_within(value: f64, lo: f64, hi: f64) -> bool {
     value >= lo * (1.0 - SLACK) && value <= hi * (1.0 + SLACK)
 }
 
-/// A finite number > 0.
+/// A finite number > 0, and a normal one (≥ 2.2e-308): a subnormal x such as 5e-324 makes 1/x
+/// infinite, so any room dividing by it would answer a 500 (the edge fuzzer's finds in the
+/// life, gas-journal and hydrostatic rooms).
 #[derive(Debug, Clone, Copy, PartialEq, PartialOrd, Deserialize)]
 #[serde(try_from = "f64")]
 pub struct Positive(f64);
@@ -26,8 +28,13 @@ impl Positive {
 impl TryFrom<f64> for Positive {
     type Error = String;
     fn try_from(v: f64) -> Result<Self, String> {
-        if v.is_finite() && v > 0.0 {
+        if v.is_normal() && v > 0.0 {
             Ok(Positive(v))
+        } else if v > 0.0 && v < f64::MIN_POSITIVE {
+            Err(format!(
+                "must be a finite number > 0 and at least {:e} (not subnormal), got {v:e}",
+                f64::MIN_POSITIVE
+            ))
         } else {
             Err(format!("must be a finite number > 0, got {v}"))
         }
@@ -193,6 +200,27 @@ impl TryFrom<f64> for PoissonRatio {
                 "must be within (−1, 0.5] (isotropic elastic solid), got {v}"
             ))
         }
+    }
+}
+
+#[cfg(test)]
+mod positive_tests {
+    use super::Positive;
+
+    #[test]
+    fn a_subnormal_is_refused_and_the_smallest_normal_accepted() {
+        for v in [5e-324, 1e-310, f64::MIN_POSITIVE * (1.0 - f64::EPSILON)] {
+            let e = Positive::try_from(v).unwrap_err();
+            assert!(e.contains("not subnormal"), "{v:e}: {e}");
+        }
+        for v in [0.0, -1.0, f64::NAN, f64::INFINITY] {
+            assert!(Positive::try_from(v).is_err(), "{v}");
+        }
+        assert_eq!(
+            Positive::try_from(f64::MIN_POSITIVE).unwrap().get(),
+            f64::MIN_POSITIVE
+        );
+        assert_eq!(Positive::try_from(f64::MAX).unwrap().get(), f64::MAX);
     }
 }
 

@@ -99,6 +99,20 @@ async fn bad_gas_bearing_input_is_a_422_with_its_reason() {
             "no closed form",
         ),
         (
+            // The edge fuzzer's find: a subnormal load made W/W_target infinite (a 500).
+            JOURNAL,
+            journal(json!({"eccentricity_ratio": null, "load_n": 5e-324})),
+            "/load_n",
+            "not subnormal",
+        ),
+        (
+            // And at the smallest normal load: W̄/W̄_target overflowed (now a difference of logs).
+            JOURNAL,
+            journal(json!({"eccentricity_ratio": null, "load_n": f64::MIN_POSITIVE})),
+            "/load_n",
+            "is below what ε = 0.0001 carries",
+        ),
+        (
             SLIDER,
             slider(json!({"inlet_film_m": 4e-6})),
             "/inlet_film_m",

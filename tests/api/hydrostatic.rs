@@ -140,6 +140,53 @@ async fn bad_pads_are_422s_naming_the_field_with_the_reason() {
             "between 0 and 1",
         ),
         (
+            // The edge fuzzer's finds: a subnormal ratio, efficiency or radius made the pumping
+            // power infinite (a 500 in the film-temperature root).
+            with("/compensation/pressure_ratio", json!(5e-324)),
+            "/compensation/pressure_ratio",
+            "between 0 and 1",
+        ),
+        (
+            with("/pump_efficiency", json!(5e-324)),
+            "/pump_efficiency",
+            "not subnormal",
+        ),
+        (
+            with("/pad/recess_radius_m", json!(5e-324)),
+            "/pad/recess_radius_m",
+            "not subnormal",
+        ),
+        (
+            // The edge fuzzer's find: R/R₀ = 10/2.2e-308 overflowed ln(R/R₀) (a 500).
+            json!({"pad": {"kind": "circular_step", "recess_radius_m": f64::MIN_POSITIVE, "outer_radius_m": 10},
+                   "compensation": {"kind": "capillary", "radius_m": 0.000762, "pressure_ratio": "optimum"},
+                   "lubricant": {"iso_vg": 68, "density_15c_kg_m3": 870}, "temperature_c": 40,
+                   "film_m": 7.62e-05, "load_n": 177929, "speed_rpm": 100}),
+            "/pad/recess_radius_m",
+            "at least 1e-6 outer_radius_m",
+        ),
+        (
+            // The edge fuzzer's find: an exponential law with β = 1/K leaves no finite film at
+            // the root's hot end (1000 °C), a 500 in the film-temperature root.
+            json!({"pad": {"kind": "circular_step", "recess_radius_m": 0.0635, "outer_radius_m": 0.127},
+                   "compensation": {"kind": "capillary", "radius_m": 0.000762, "pressure_ratio": "optimum"},
+                   "lubricant": {"density_15c_kg_m3": 830.4, "exponential": {"reference_viscosity_pa_s": 0.03,
+                       "reference_temperature_c": 40.0, "temperature_coefficient_1_k": 1}},
+                   "temperature_c": 15, "film_m": 7.62e-05, "load_n": 177929, "speed_rpm": 100}),
+            "/temperature_c",
+            "thermal runaway",
+        ),
+        (
+            // And a bore too small to pass a representable flow: the isothermal rise was ∞ and
+            // the film-temperature root failed at the inlet temperature (a 500).
+            json!({"pad": {"kind": "circular_step", "recess_radius_m": 0.025, "outer_radius_m": 0.05},
+                   "compensation": {"kind": "capillary", "radius_m": 1e-300, "length_m": 0.2},
+                   "lubricant": {"iso_vg": 68}, "temperature_c": 15, "film_m": 0.00015,
+                   "supply_pressure_pa": 1e6, "speed_rpm": 3000}),
+            "",
+            "outside the floating-point range",
+        ),
+        (
             with("/compensation/discharge_coefficient", Value::Null),
             "/compensation/discharge_coefficient",
             "required",

@@ -141,22 +141,28 @@ proptest! {
 #[test]
 fn a_denormal_geometry_is_a_422_not_a_panic() {
     // Schemathesis: a diameter of 5e-324 made L/D infinite, and the level's axial cells, which
-    // grow with L/D, overflowed before the refusal.
-    let body = json!({
-        "geometry": {"diameter_m": 5e-324, "length_m": 0.1, "radial_clearance_m": 0.0001},
-        "lubricant": {"viscosity_pa_s": 0.014479}, "load_n": 5589.8,
-        "initial_eccentricity_ratio": 0.5, "final_eccentricity_ratio": 0.9,
-        "film": "cavitated", "fidelity": "fast",
-    });
-    let entry = find(JOURNAL).unwrap();
-    let far = std::time::Instant::now() + std::time::Duration::from_secs(30);
-    match (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()) {
-        Err(Failure::Invalid(errors)) => {
-            assert!(
-                errors.iter().any(|e| e.pointer == "/geometry/length_m"),
-                "{errors:?}"
-            )
+    // grow with L/D, overflowed before the refusal. A subnormal diameter is now refused at the
+    // door (Positive); the smallest normal one still reaches the L/D refusal.
+    for (diameter_m, pointer) in [
+        (5e-324, "/geometry/diameter_m"),
+        (f64::MIN_POSITIVE, "/geometry/length_m"),
+    ] {
+        let body = json!({
+            "geometry": {"diameter_m": diameter_m, "length_m": 0.1, "radial_clearance_m": 0.0001},
+            "lubricant": {"viscosity_pa_s": 0.014479}, "load_n": 5589.8,
+            "initial_eccentricity_ratio": 0.5, "final_eccentricity_ratio": 0.9,
+            "film": "cavitated", "fidelity": "fast",
+        });
+        let entry = find(JOURNAL).unwrap();
+        let far = std::time::Instant::now() + std::time::Duration::from_secs(30);
+        match (entry.execute)(&serde_json::to_vec(&body).unwrap(), far, Default::default()) {
+            Err(Failure::Invalid(errors)) => {
+                assert!(
+                    errors.iter().any(|e| e.pointer == pointer),
+                    "{diameter_m:e}: {errors:?}"
+                )
+            }
+            other => panic!("{diameter_m:e}: {other:?}"),
         }
-        other => panic!("{other:?}"),
     }
 }

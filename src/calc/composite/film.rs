@@ -94,6 +94,11 @@ impl SleeveFilm {
 
     /// W, N, at ε with the surfaces turning at ω_j + ω_b = `speed_sum`, rad/s.
     pub fn load(&self, eps: f64, speed_sum: f64) -> f64 {
+        self.force_scale(speed_sum) * Self::load_coefficient(eps)
+    }
+
+    /// μ R (ω_j + ω_b) L³/C², N: the load's scale at the speed sum `speed_sum`, rad/s.
+    fn force_scale(&self, speed_sum: f64) -> f64 {
         Scales::of(
             self.viscosity,
             self.radius,
@@ -102,7 +107,6 @@ impl SleeveFilm {
             speed_sum,
         )
         .force
-            * Self::load_coefficient(eps)
     }
 
     /// The attitude angle ψ between the load line and the line of centres, rad.
@@ -124,7 +128,9 @@ impl SleeveFilm {
         let mut mismatch = |v: f64| {
             evaluations += 1;
             let eps = eccentricity_of(v);
-            (self.load(eps, speed_sum(eps)) / load).ln()
+            // A sum of logs: at the smallest loads and speeds the film's load at ε = 1e-12
+            // underflows to 0 though the root lies well inside (ln 0 was a 500 in the search).
+            self.force_scale(speed_sum(eps)).ln() - load.ln() + Self::load_coefficient(eps).ln()
         };
         let (lo, hi) = (logit(MIN_ECCENTRICITY), logit(max_eccentricity));
         let f_hi = mismatch(hi);

@@ -176,3 +176,16 @@ fn invalid_requests_name_their_fields() {
         );
     }
 }
+
+/// The edge fuzzer's find: at the smallest load and journal speed (2.2e-308 N and rpm) the load
+/// search's residual at ε = 1e-12 was ln 0 (a 500). Now the film carries the load at a small
+/// eccentricity, every number finite.
+#[test]
+fn the_smallest_load_and_speed_answer() {
+    let tiny = f64::MIN_POSITIVE;
+    let r = ok::<StartUpRoom>(&example(json!({"journal_speed_rpm": tiny, "load_n": tiny})));
+    let eps = result_field(&r, "steady_eccentricity_ratio");
+    assert!(eps > 1e-12 && eps < 0.1, "ε = {eps}");
+    let ratio = result_field(&r, "steady_speed_ratio");
+    assert!((0.0..=1.0).contains(&ratio), "{ratio}");
+}

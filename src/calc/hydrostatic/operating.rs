@@ -624,6 +624,14 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
 /// T such that T = T_in + ΔT(μ(T))/2. ΔT falls as the film warms (the flow rises and the
 /// shear falls with μ), so the root lies in [T_in, T_in + ΔT_iso/2].
 fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, CalcError> {
+    // A restrictor too small to pass a representable flow (a 1e-300 m bore) heats the film by
+    // ∞ or 0/0: refused as the room refuses any result outside the range (a 500 in the root).
+    if !rise.is_finite() {
+        return Err(CalcError::impossible(
+            "",
+            format!("this combination of inputs takes the result outside the floating-point range (the isothermal temperature rise is {rise})"),
+        ));
+    }
     let t_in = case.inlet_temperature_c;
     let hi = (t_in + 0.5 * rise).min(crate::calc::quantity::Celsius::MAX);
     let mut evaluations = 0;
@@ -644,6 +652,14 @@ fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, Cal
             "/temperature_c",
             format!(
                 "thermal runaway: the film heats by {rise:.4e} K, beyond what the oil's viscosity law covers"
+            ),
+        )),
+        // The film at a T above the inlet's is not finite where the law's viscosity has fallen
+        // to nothing (an exponential law with β = 1/K at 1000 °C, a pad heated by 1e300 K).
+        Err(RootError::NonFinite { x }) => Err(CalcError::impossible(
+            "/temperature_c",
+            format!(
+                "thermal runaway: the film heats by {rise:.4e} K, beyond what the oil's viscosity law covers (at {x} °C the film has no finite answer)"
             ),
         )),
         Err(e) => Err(CalcError::from_root("hydrostatic_film_temperature", e)),

@@ -28,6 +28,8 @@ const MAX_SIZE_M: f64 = 10.0;
 const FILM_M: (f64, f64) = (1e-8, 1e-2);
 /// The film must stay below this share of the narrowest land (thin film).
 const MAX_FILM_OVER_LAND: f64 = 0.1;
+/// Smallest recess radius of a circular step pad, as a share of its outer radius.
+const MIN_RADIUS_RATIO: f64 = 1e-6;
 const LOAD_N: (f64, f64) = (1e-6, 1e10);
 const PRESSURE_PA: (f64, f64) = (1.0, 1e10);
 const FLOW_M3_S: (f64, f64) = (1e-15, 10.0);
@@ -57,7 +59,7 @@ pub enum HydrostaticPadKind {
 #[serde(deny_unknown_fields)]
 pub struct HydrostaticPadSpec {
     pub kind: HydrostaticPadKind,
-    /// `circular_step`: recess radius R1, m (> 0, below `outer_radius_m`).
+    /// `circular_step`: recess radius R1, m (from 1e-6 times `outer_radius_m` to below it).
     #[schema(value_type = Option<f64>, exclusive_minimum = 0.0, maximum = 10.0, example = 0.0635)]
     pub recess_radius_m: Option<Positive>,
     /// `circular_step`, `annular`: outer radius of the pad, m (> 0, at most 10).
@@ -309,6 +311,17 @@ fn parse_pad(spec: &HydrostaticPadSpec, errors: &mut Vec<FieldError>) -> Option<
     let apart = |inner: f64, outer: f64| inner < outer * (1.0 - 1e-6);
     match (spec.kind, values.as_slice()) {
         (K::CircularStep, &[recess_radius, outer_radius]) => {
+            // ln(R/R₀) overflows once R/R₀ passes 1.8e308 (a 500); a recess below a millionth of
+            // the pad is no recess.
+            if recess_radius < outer_radius * MIN_RADIUS_RATIO {
+                errors.push(FieldError::new(
+                    "/pad/recess_radius_m",
+                    format!(
+                        "must be at least {MIN_RADIUS_RATIO:e} outer_radius_m ({outer_radius} m), got {recess_radius:e}"
+                    ),
+                ));
+                return None;
+            }
             if !apart(recess_radius, outer_radius) {
                 errors.push(FieldError::new(
                     "/pad/recess_radius_m",
@@ -397,12 +410,13 @@ fn parse_compensation(
     };
     let ratio = match spec.pressure_ratio {
         None => None,
-        Some(HydrostaticPressureRatio::Value(m)) if m.is_finite() && m > 0.0 && m < 1.0 => Some(m),
+        // Normal: a subnormal m (5e-324) made p_s = p_r/m infinite (a 500).
+        Some(HydrostaticPressureRatio::Value(m)) if m.is_normal() && m > 0.0 && m < 1.0 => Some(m),
         Some(HydrostaticPressureRatio::Value(m)) => {
             errors.push(FieldError::new(
                 "/compensation/pressure_ratio",
                 format!(
-                    "must lie strictly between 0 and 1 (p_r below p_s), or be \"optimum\"; got {m}"
+                    "must lie strictly between 0 and 1 (p_r below p_s; at least 2.2e-308), or be \"optimum\"; got {m}"
                 ),
             ));
             None

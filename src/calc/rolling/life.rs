@@ -51,7 +51,8 @@ pub struct Life;
 
 /// Largest load or load rating accepted, N.
 const MAX_LOAD_N: f64 = 1e12;
-/// Largest C/P accepted: beyond it L10 exceeds 10¹⁸ million revolutions and means nothing.
+/// Largest C/P (and C_u/P) accepted: beyond it L10 exceeds 10¹⁸ million revolutions and means
+/// nothing.
 const MAX_LOAD_RATIO: f64 = 1e6;
 /// Speed range accepted, rpm.
 const SPEED_RANGE_RPM: (f64, f64) = (1e-6, 1e7);
@@ -602,6 +603,18 @@ impl Validate for LifeInput {
             d => d.map(|d| d * 1e3),
         };
         let lubrication = self.lubrication(&mut errors);
+        // e_C C_u/P enters a_ISO; bounded like C/P so a tiny P cannot make it infinite.
+        if let (Some(l), Some(lub)) = (&loading, &lubrication) {
+            if lub.fatigue_load_limit_n / l.load_n > MAX_LOAD_RATIO {
+                errors.push(FieldError::new(
+                    "/fatigue_load_limit_n",
+                    format!(
+                        "C_u = {} N is above {MAX_LOAD_RATIO:e} times the load {} N: no a_ISO means anything there",
+                        lub.fatigue_load_limit_n, l.load_n
+                    ),
+                ));
+            }
+        }
         match loading {
             Some(l) if errors.is_empty() => Ok(LifeCase {
                 kind: self.bearing_kind.into(),

@@ -472,6 +472,19 @@ fn bad_input_is_refused_with_its_pointer() {
             "/speed_rpm",
             "duty cycle with speed",
         ),
+        (
+            // The edge fuzzer's find: C = P tiny and C_u large made e_C C_u/P infinite (a 500
+            // at serialisation).
+            with(&[
+                ("dynamic_load_rating_n", json!(1e-300)),
+                ("equivalent_load_n", json!(1e-300)),
+                lub[0].clone(),
+                lub[1].clone(),
+                ("fatigue_load_limit_n", json!(1e12)),
+            ]),
+            "/fatigue_load_limit_n",
+            "C_u/P above 1e6",
+        ),
     ];
     for (body, pointer, why) in rows {
         let got = pointers(&body);
