@@ -631,7 +631,7 @@ pub fn solve(
         // anyway, and Newton runs again from it.
         if std::mem::take(&mut from_ambient)
             && report.iterations == 0
-            && linear_step(&system_at(lambda), &mut field)
+            && linear_step(&system_at(lambda), &mut field, &mut tally)
         {
             continue;
         }
@@ -643,13 +643,16 @@ pub fn solve(
 }
 
 /// Newton's full step from `field`, where the film is linear in its rise (the next residual is
-/// of the rise squared); false when the Jacobian is singular or the budget is spent.
-fn linear_step(system: &System, field: &mut Vec<f64>) -> bool {
+/// of the rise squared), counted in `tally` as one step and one evaluation; false when the
+/// Jacobian is singular or the budget is spent.
+fn linear_step(system: &System, field: &mut Vec<f64>, tally: &mut Tally) -> bool {
     let at = system.evaluate(field);
+    tally.evaluations += 1;
     let Some(step) = system.direction(field, &at) else {
         return false;
     };
     *field = system.advance(field, &step, 1.0);
+    tally.iterations += 1;
     true
 }
 
