@@ -14,9 +14,9 @@ use crate::effects::Mode;
 use crate::fidelity::{FidelityRequest, Level};
 use crate::numerics::reynolds_gas::FarEdge;
 
-/// Smallest h1/h2 accepted: the film ratios of the thrust pads (1.01 … 10); a parallel film
-/// carries no load, and a nearly parallel one next to nothing.
-const MIN_FILM_RATIO: f64 = 1.01;
+/// The h1/h2 accepted, as the thrust pads' (1.01 … 10): a parallel film carries no load, and a
+/// nearly parallel one next to nothing.
+const FILM_RATIOS: (f64, f64) = (1.01, 10.0);
 
 pub struct GasSlider;
 
@@ -142,15 +142,19 @@ impl Validate for GasSliderInput {
                 "/inlet_film_m",
                 format!("a converging slider needs inlet_film_m ≥ outlet_film_m (h1 = {h1} m < h2 = {h2} m): a diverging film carries no load"),
             ));
-        } else if h1 / h2 < MIN_FILM_RATIO {
+        } else if h1 / h2 < FILM_RATIOS.0 {
             errors.push(FieldError::new(
                 "/inlet_film_m",
-                format!("h1/h2 must be at least {MIN_FILM_RATIO}, got {:.6}: a parallel film carries no load, and a nearly parallel one next to nothing", h1 / h2),
+                format!("h1/h2 must be at least {}, got {:.6}: a parallel film carries no load, and a nearly parallel one next to nothing", FILM_RATIOS.0, h1 / h2),
             ));
-        } else if h1 / h2 > 10.0 {
+        } else if h1 / h2 > FILM_RATIOS.1 {
             errors.push(FieldError::new(
                 "/inlet_film_m",
-                format!("h1/h2 must be at most 10, got {:.4}", h1 / h2),
+                format!(
+                    "h1/h2 must be at most {}, got {:.4}",
+                    FILM_RATIOS.1,
+                    h1 / h2
+                ),
             ));
         }
         let speed = self.sliding_speed_m_s.get();
