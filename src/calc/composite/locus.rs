@@ -36,7 +36,7 @@ use super::film::{LoadError, SleeveFilm, COMPARISON_MAX_ECCENTRICITY};
 use super::sleeve::Restraint;
 use crate::calc::journal::load_law::LoadLaw;
 use crate::calc::journal::moving_film::{squeeze_vector, ShortArc, ShortFilm, CONTACT};
-use crate::calc::journal::orbit::{self, OrbitError};
+use crate::calc::journal::orbit::{self, OrbitError, Tally};
 use crate::fidelity::{SolverReport, TimeIntegration};
 use crate::numerics::driver::Budget;
 use crate::numerics::ode::{self, Failure, Flow, Rate, RateError, Step};
@@ -365,7 +365,7 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
     let settings = orbit::settings(relative);
     let period = problem.load.period();
     let (mut t, mut y) = (0.0, y0);
-    let (mut steps, mut rejected, mut evaluations) = (0, 0, 0);
+    let mut tally = Tally::default();
     let mut periods = 0;
     loop {
         let mut tracker = Tracker::new(t, &y);
@@ -377,15 +377,13 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             }
             Flow::Continue
         };
-        let settings = orbit::next_period(settings, steps);
+        let settings = orbit::next_period(settings, tally.steps);
         let done = match ode::integrate(rate, t, y, t + period, &settings, observe, budget) {
             Ok(done) => done,
-            Err(Failure::Halted(h)) => return Err(OrbitError::halted(*h, CONTACT)),
+            Err(Failure::Halted(h)) => return Err(OrbitError::halted(*h, CONTACT, &tally)),
             Err(Failure::Rate(())) => unreachable!("the locus's rates do not fail"),
         };
-        steps += done.report.iterations;
-        rejected += done.work.rejected;
-        evaluations += done.work.rate_evaluations;
+        tally.add(&done);
         periods += 1;
         let change = (done.y[0] - y[0])
             .hypot(done.y[1] - y[1])
@@ -397,11 +395,11 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
             window.samples = sample(&kept, &window, samples);
             // The last integration's report, with the whole run's work.
             let report = SolverReport {
-                iterations: steps,
-                evaluations: Some(evaluations),
+                iterations: tally.steps,
+                evaluations: Some(tally.evaluations),
                 residual: Some(change),
                 time_integration: Some(Box::new(TimeIntegration {
-                    rejected_steps: rejected,
+                    rejected_steps: tally.rejected,
                     relative_tolerance: relative,
                 })),
                 ..done.report

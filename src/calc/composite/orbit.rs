@@ -390,6 +390,8 @@ fn degrees_within(a: f64, period: f64) -> f64 {
 struct Run<'a> {
     settling: Settling,
     tolerance: f64,
+    /// The fidelity the tolerance stands for (the report of a run that stopped short names it).
+    level: Level,
     samples: usize,
     budget: &'a Budget,
     /// ω_j, rad/s.
@@ -397,6 +399,15 @@ struct Run<'a> {
 }
 
 impl Run<'_> {
+    /// An integration that stopped short: the one mapping of a driver stop (past the deadline
+    /// a 504, otherwise a 422 with its report at the request's fidelity).
+    fn stopped(&self, report: SolverReport) -> CalcError {
+        Stopped {
+            report: report.at(self.level),
+        }
+        .into()
+    }
+
     /// The held sleeve's orbit by the journal room's code, from its static equilibrium (or the
     /// centre, where it has none).
     fn regular(&self, problem: &Problem) -> Result<Regular, CalcError> {
@@ -428,7 +439,7 @@ impl Run<'_> {
         ) {
             Ok(orbit) => Ok(orbit),
             Err(OrbitError::Contact { time, eccentricity }) => Err((time, eccentricity)),
-            Err(OrbitError::Stopped(report)) => return Err(stopped(report)),
+            Err(OrbitError::Stopped(report)) => return Err(self.stopped(report)),
         };
         Ok(Regular { start, outcome })
     }
@@ -506,12 +517,6 @@ impl Run<'_> {
     }
 }
 
-/// An integration that stopped short: the one mapping of a driver stop (past the deadline a
-/// 504, otherwise a 422 with its report).
-fn stopped(report: SolverReport) -> CalcError {
-    Stopped { report }.into()
-}
-
 /// Add the regular run's work to the composite's report.
 fn combined(mut composite: SolverReport, regular: &SolverReport) -> SolverReport {
     composite.iterations += regular.iterations;
@@ -586,6 +591,7 @@ impl Calculation for CompositeOrbit {
                 max_periods: MAX_PERIODS.min((horizon / period).floor().max(1.0) as u32),
             },
             tolerance: case.tolerance,
+            level: case.level,
             samples: if case.include_orbit { ORBIT_POINTS } else { 0 },
             budget: &ctx.budget(),
             omega: w,
@@ -614,7 +620,7 @@ impl Calculation for CompositeOrbit {
                         time / w
                     ),
                 ),
-                OrbitError::Stopped(report) => stopped(report),
+                OrbitError::Stopped(report) => run.stopped(report),
             })?;
         let regular = run.regular(&problem)?;
         let mut report = composite.report.clone();

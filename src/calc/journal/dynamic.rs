@@ -896,7 +896,10 @@ impl Calculation for DynamicJournal {
                     ),
                 },
             ),
-            OrbitError::Stopped(report) => Stopped { report }.into(),
+            OrbitError::Stopped(report) => Stopped {
+                report: report.at(case.level),
+            }
+            .into(),
         })?;
         let mut report = orbit.report.clone().at(case.level);
         if let FilmChoice::Finite { mesh, density } = case.film {

@@ -33,7 +33,9 @@ use super::load_law::LoadLaw;
 use super::moving_film::{squeeze_vector, ShortFilm};
 use crate::calc::Budget;
 use crate::fidelity::{IterationUnit, SolverReport, StopReason, TimeIntegration};
-use crate::numerics::ode::{self, Failure, Flow, Halted, Method, Rate, RateError, Settings, Step};
+use crate::numerics::ode::{
+    self, Failure, Flow, Halted, Integrated, Method, Rate, RateError, Settings, Step,
+};
 use crate::numerics::optimise::brent_minimise;
 
 /// The film an orbit runs on: the short film's closed forms, or the finite film's impedance
@@ -203,8 +205,9 @@ impl OrbitError {
     /// A halted integration: contact when it stalled within 1 % of the film's reach in ε (the
     /// wall stopped it), or used up the run's steps with the film below a thousandth of the
     /// clearance (a load so far beyond the film's that only its stiffness near the wall held
-    /// it off); else the integrator's report.
-    pub(crate) fn halted<const N: usize>(h: Halted<N>, reach: f64) -> Self {
+    /// it off); else the integrator's report, with the work of the run's `earlier`
+    /// integrations.
+    pub(crate) fn halted<const N: usize>(h: Halted<N>, reach: f64, earlier: &Tally) -> Self {
         let e = h.y[0].hypot(h.y[1]);
         let stalled_at_wall = h.stopped.reason() == StopReason::Stalled && e > 0.99 * reach;
         let capped_at_wall = h.stopped.reason() == StopReason::IterationCap && e > 0.999;
@@ -214,7 +217,7 @@ impl OrbitError {
                 eccentricity: e,
             }
         } else {
-            OrbitError::Stopped(h.stopped.report)
+            OrbitError::Stopped(earlier.with_earlier(h.stopped.report))
         }
     }
 }
@@ -335,12 +338,32 @@ pub fn run(
     }
 }
 
-/// Totals over the run's integrations.
+/// Totals over a run's integrations.
 #[derive(Default)]
-struct Tally {
-    steps: u32,
-    rejected: u32,
-    evaluations: u32,
+pub(crate) struct Tally {
+    pub steps: u32,
+    pub rejected: u32,
+    pub evaluations: u32,
+}
+
+impl Tally {
+    /// Count one finished integration's work.
+    pub(crate) fn add<const N: usize>(&mut self, done: &Integrated<N>) {
+        self.steps += done.report.iterations;
+        self.rejected += done.work.rejected;
+        self.evaluations += done.work.rate_evaluations;
+    }
+
+    /// A halted integration's report with the run's earlier integrations' work added: the
+    /// steps, evaluations and rejections of the whole run.
+    fn with_earlier(&self, mut report: SolverReport) -> SolverReport {
+        report.iterations += self.steps;
+        report.evaluations = Some(report.evaluations.unwrap_or(0) + self.evaluations);
+        if let Some(integration) = report.time_integration.as_mut() {
+            integration.rejected_steps += self.rejected;
+        }
+        report
+    }
 }
 
 /// One integration's end: τ, the state, its window, its steps (kept for sampling) and whether
@@ -531,14 +554,11 @@ fn march<const N: usize, R: Rate<N, Error = ()>>(
         let done = match done {
             Ok(d) => d,
             Err(Failure::Halted(h)) => {
-                tally.steps += h.stopped.report.iterations;
-                return Err(OrbitError::halted(*h, problem.film.reach()));
+                return Err(OrbitError::halted(*h, problem.film.reach(), tally));
             }
             Err(Failure::Rate(())) => unreachable!("the orbit's rates do not fail"),
         };
-        tally.steps += done.report.iterations;
-        tally.rejected += done.work.rejected;
-        tally.evaluations += done.work.rate_evaluations;
+        tally.add(&done);
         let window = tracker.finish();
         if window.max_eccentricity > peak.0 {
             *peak = (window.max_eccentricity, window.time_of_max);
