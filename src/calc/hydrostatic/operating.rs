@@ -559,12 +559,13 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
 
 /// The pad at its operating point: turbulence decided on the laminar isothermal point (and the
 /// turbulent laws applied where it holds), then the thermal effect decided (and solved as a root
-/// in the film temperature where it applies), warnings noted.
+/// in the film temperature where it applies; a laminar film is then decided again at its film
+/// temperature, where the thinner oil runs at a higher Reynolds number), warnings noted.
 pub fn operate(case: &Case) -> Result<Operating, CalcError> {
     let t_in = case.inlet_temperature_c;
     let laminar = at(case, t_in, Regime::Laminar)?;
-    let turbulence = decide_turbulence(case, &laminar);
-    let regime = if turbulence.applied {
+    let mut turbulence = decide_turbulence(case, &laminar, "at the inlet temperature");
+    let mut regime = if turbulence.applied {
         Regime::Turbulent
     } else {
         Regime::Laminar
@@ -608,6 +609,17 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
         decision.model = Some("mean_film_temperature");
         if decision.applied {
             let mut op = thermal_root(case, rise, regime)?;
+            if regime == Regime::Laminar {
+                turbulence = decide_turbulence(case, &op, "at the film temperature");
+                if turbulence.applied {
+                    regime = Regime::Turbulent;
+                    let rise = at(case, t_in, regime)?.power.temperature_rise;
+                    // The laminar root's evaluations and the turbulent isothermal point count.
+                    let spent = op.thermal_evaluations + 1;
+                    op = thermal_root(case, rise, regime)?;
+                    op.thermal_evaluations += spent;
+                }
+            }
             op.notes.decide("thermal", decision);
             op
         } else {
@@ -668,8 +680,9 @@ fn thermal_root(case: &Case, rise: f64, regime: Regime) -> Result<Operating, Cal
 
 /// Turbulence: the largest of the capillary's Reynolds number over 2000, the lands' pressure
 /// flow's (hydraulic diameter 2h, where the flow per unit width peaks) over 2000 and their
-/// shear's (ρUh/μ at the fastest edge) over 580, on the laminar point, against 1.
-fn decide_turbulence(case: &Case, laminar: &Operating) -> Decision {
+/// shear's (ρUh/μ at the fastest edge) over 580, on the laminar point (`at` says at which
+/// temperature), against 1.
+fn decide_turbulence(case: &Case, laminar: &Operating, at: &str) -> Decision {
     let capillary = match (laminar.restrictor.kind, laminar.restrictor.reynolds_number) {
         (Kind::Capillary, Some(re)) => re / CAPILLARY_REYNOLDS_LIMIT,
         _ => 0.0,
@@ -684,7 +697,7 @@ fn decide_turbulence(case: &Case, laminar: &Operating) -> Decision {
             value: capillary.max(pressure).max(shear),
             threshold: 1.0,
         },
-        "turbulence (capillary Re against 2000, land pressure flow Re_2h against 2000, land shear Re_h against 580)",
+        &format!("turbulence (capillary Re against 2000, land pressure flow Re_2h against 2000, land shear Re_h against 580, on the laminar point {at})"),
     );
     decision.model = Some("larger_loss_of_laminar_and_turbulent");
     decision

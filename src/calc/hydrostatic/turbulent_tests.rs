@@ -283,3 +283,61 @@ fn auto_is_continuous_where_it_switches() {
     );
     assert!((a / b - 1.0).abs() < 1e-8, "{a} vs {b}");
 }
+
+/// A film that the heat thins can be turbulent where the inlet's oil was not: ISO VG 10 on a
+/// circular step at 2000 rpm is laminar at 40 °C (the shear Re at 0.92 of 580) but not at its
+/// film temperature (1.17), so `auto` applies the turbulent laws there, as `on` does, and says
+/// at which temperature it decided; the laminar root that told it so counts in the report.
+#[test]
+fn auto_decides_turbulence_again_at_the_film_temperature() {
+    let body = |turbulence: &str, thermal: &str| {
+        ok::<HydrostaticPad>(&json!({
+            "pad": {"kind": "circular_step", "recess_radius_m": 0.0635, "outer_radius_m": 0.127},
+            "compensation": {"kind": "constant_flow"},
+            "lubricant": {"iso_vg": 10},
+            "temperature_c": 40, "film_m": 2e-4, "flow_m3_s": 2e-5, "speed_rpm": 2000,
+            "effects": {"turbulence": turbulence, "thermal": thermal},
+        }))
+    };
+    let criterion = |v: &Value| {
+        v["effects"]["turbulence"]["criterion"]["value"]
+            .as_f64()
+            .unwrap()
+    };
+    let cold = body("auto", "off");
+    assert!(!cold["effects"]["turbulence"]["applied"].as_bool().unwrap());
+    assert!(
+        (0.9..1.0).contains(&criterion(&cold)),
+        "{}",
+        criterion(&cold)
+    );
+    let (auto, on) = (body("auto", "on"), body("on", "on"));
+    let decision = &auto["effects"]["turbulence"];
+    assert!(decision["applied"].as_bool().unwrap(), "{decision}");
+    assert!(criterion(&auto) > 1.1, "{decision}");
+    assert!(decision["reason"]
+        .as_str()
+        .unwrap()
+        .contains("at the film temperature"));
+    for field in [
+        "load_n",
+        "film_temperature_c",
+        "friction_power_w",
+        "stiffness_n_m",
+    ] {
+        let (a, b) = (result_field(&auto, field), result_field(&on, field));
+        assert!((a / b - 1.0).abs() < 1e-12, "{field}: {a} vs {b}");
+    }
+    let (t, rise) = (
+        result_field(&auto, "film_temperature_c"),
+        result_field(&auto, "temperature_rise_k"),
+    );
+    assert!((t - 40.0 - rise / 2.0).abs() < 1e-6, "{t} {rise}");
+    let iterations = |v: &Value| v["solver"]["iterations"].as_u64().unwrap();
+    assert!(
+        iterations(&auto) > iterations(&on) + 1,
+        "{} {}",
+        auto["solver"],
+        on["solver"]
+    );
+}
