@@ -82,6 +82,21 @@ impl CalcError {
         }
     }
 
+    /// Ok when every one of `numbers` (a room's list of its result's numbers) is finite;
+    /// otherwise a 422 saying that the request's magnitudes take the result out of the
+    /// floating-point range. For results with optional numbers, which
+    /// [`CalcError::finite_or_out_of_range`] would read as not finite.
+    pub fn unless_finite(numbers: &[f64]) -> Result<(), CalcError> {
+        if numbers.iter().all(|v| v.is_finite()) {
+            Ok(())
+        } else {
+            Err(CalcError::impossible(
+                "",
+                "this combination of inputs takes the result outside the floating-point range",
+            ))
+        }
+    }
+
     /// `output` unchanged when every number in it is finite; otherwise a 422 saying that the
     /// request's magnitudes take the result out of the floating-point range (`what` names the
     /// inputs to look at). For closed forms whose valid inputs span more decades than an f64

@@ -795,13 +795,7 @@ impl Calculation for GasJournal {
                 m.magnitude_n_m + m.moment_coefficient + m.error_estimate.unwrap_or(0.0)
             }),
         ];
-        if numbers.iter().all(|v| v.is_finite()) {
-            Ok(out)
-        } else {
-            Err(CalcError::impossible(
-                "",
-                "this combination of inputs takes the result outside the floating-point range",
-            ))
-        }
+        CalcError::unless_finite(&numbers)?;
+        Ok(out)
     }
 }

@@ -369,13 +369,7 @@ impl Calculation for GasSlider {
             friction(p.friction_pad),
             out.max_pressure_pa,
         ];
-        if numbers.iter().all(|v| v.is_finite()) {
-            Ok(out)
-        } else {
-            Err(CalcError::impossible(
-                "",
-                "this combination of inputs takes the result outside the floating-point range",
-            ))
-        }
+        CalcError::unless_finite(&numbers)?;
+        Ok(out)
     }
 }

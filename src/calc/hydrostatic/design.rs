@@ -465,17 +465,6 @@ pub struct HydrostaticDesignOutput {
     pub oil_lift: Option<HydrostaticOilLiftResult>,
 }
 
-fn finite(numbers: &[f64]) -> Result<(), CalcError> {
-    if numbers.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(CalcError::impossible(
-            "",
-            "this combination of inputs takes the result outside the floating-point range",
-        ))
-    }
-}
-
 impl Calculation for HydrostaticDesign {
     const PATH: &'static str = "/v1/hydrostatic-bearings/design";
     const SUMMARY: &'static str = "Hydrostatic design: the circular step's minimum-power recess ratio and film (with power curves), or a journal bearing's oil lift at start-up";
@@ -583,7 +572,7 @@ impl Calculation for HydrostaticDesign {
                         ]);
                     }
                 }
-                finite(&numbers)?;
+                CalcError::unless_finite(&numbers)?;
                 ctx.report(SolverReport::closed_form_search(
                     "minimum_power_scan_brent",
                     evaluations,
@@ -633,7 +622,7 @@ impl Calculation for HydrostaticDesign {
                         .into_iter()
                         .flatten(),
                 );
-                finite(&numbers)?;
+                CalcError::unless_finite(&numbers)?;
                 ctx.report(SolverReport::closed_form("oil_lift_closed_form"));
                 Ok(HydrostaticDesignOutput {
                     minimum_power: None,

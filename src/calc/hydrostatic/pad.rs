@@ -1060,12 +1060,7 @@ impl Calculation for HydrostaticPad {
             }
             (n, true) => SolverReport::closed_form_search("hydrostatic_turbulent_thermal_brent", n),
         });
-        if out.numbers().iter().any(|v| !v.is_finite()) {
-            return Err(CalcError::impossible(
-                "",
-                "this combination of inputs takes the result outside the floating-point range",
-            ));
-        }
+        CalcError::unless_finite(&out.numbers())?;
         Ok(out)
     }
 }

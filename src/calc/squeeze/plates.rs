@@ -493,7 +493,7 @@ impl Calculation for SqueezePlates {
             }
         }
         ctx.report(report);
-        let numbers = [
+        let numbers: Vec<f64> = [
             Some(out.load_n),
             out.max_pressure_pa,
             out.time_s,
@@ -501,13 +501,11 @@ impl Calculation for SqueezePlates {
             out.approach_speed_final_m_s,
             out.max_pressure_initial_pa,
             out.max_pressure_final_pa,
-        ];
-        if numbers.iter().flatten().any(|v| !v.is_finite()) {
-            return Err(CalcError::impossible(
-                "",
-                "this combination of inputs takes the result outside the floating-point range",
-            ));
-        }
+        ]
+        .into_iter()
+        .flatten()
+        .collect();
+        CalcError::unless_finite(&numbers)?;
         Ok(out)
     }
 }

@@ -387,12 +387,5 @@ pub fn check_finite(result: &PadResult) -> Result<(), CalcError> {
         c.k_q,
         c.k_s,
     ];
-    if numbers.iter().all(|v| v.is_finite()) {
-        Ok(())
-    } else {
-        Err(CalcError::impossible(
-            "",
-            "this combination of inputs takes the result outside the floating-point range",
-        ))
-    }
+    CalcError::unless_finite(&numbers)
 }
