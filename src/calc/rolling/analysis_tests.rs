@@ -300,3 +300,70 @@ fn contact_angles_fold_onto_a_quarter_turn() {
         assert!((got - folded).abs() < 1e-9, "{given}: {got}");
     }
 }
+
+proptest::proptest! {
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(40))]
+    /// The chain over the operating range (radial loads 1 N to 100 kN, 1 to 20 000 rev/min,
+    /// 0–150 °C, oils of 10–1000 mm²/s at 40 °C, any contamination): an answer with positive,
+    /// finite lives and films, or a 422 naming a field of this request — and where both the
+    /// load and a quarter more are answered, the heavier load has the higher ball load, the
+    /// shorter basic and modified lives and the thinner inner film (Hamrock–Dowson's W^−0.073).
+    #[test]
+    fn every_operating_point_is_answered_and_a_heavier_load_shortens_the_life(
+        load_exp in 0.0f64..5.0,
+        speed_exp in 0.0f64..4.3,
+        temperature in 0.0f64..150.0,
+        viscosity_exp in 1.0f64..3.0,
+        viscosity_ratio in 4.0f64..12.0,
+        contamination in 0.0f64..1.0,
+    ) {
+        let at = |load: f64| {
+            let mut body = example();
+            body["radial_load_n"] = json!(load);
+            body["inner_ring_speed_rpm"] = json!(10f64.powf(speed_exp));
+            body["temperature_c"] = json!(temperature);
+            let nu40 = 10f64.powf(viscosity_exp);
+            body["lubricant"]["kinematic_viscosity_40c_mm2_s"] = json!(nu40);
+            body["lubricant"]["kinematic_viscosity_100c_mm2_s"] = json!(nu40 / viscosity_ratio);
+            body["contamination_factor"] = json!(contamination);
+            crate::calc::testing::post::<Analysis>(&body)
+        };
+        let load = 10f64.powf(load_exp);
+        let number = |v: &Value, pointer: &str| {
+            v["result"].pointer(pointer).and_then(Value::as_f64).unwrap_or_else(|| panic!("{pointer}: {v}"))
+        };
+        let mut answered = Vec::new();
+        for l in [load, 1.25 * load] {
+            match at(l) {
+                Ok(v) => {
+                    for pointer in [
+                        "/life/l10_million_revolutions",
+                        "/life/modified_life_million_revolutions",
+                        "/inner_film/min_film_thickness_m",
+                        "/outer_film/min_film_thickness_m",
+                        "/kappa",
+                    ] {
+                        let x = number(&v, pointer);
+                        proptest::prop_assert!(x.is_finite() && x > 0.0, "{pointer} = {x}: {v}");
+                    }
+                    answered.push(v);
+                }
+                Err(Failure::Invalid(errors)) => {
+                    proptest::prop_assert!(errors.iter().all(|e| !e.pointer.is_empty()), "{errors:?}");
+                }
+                Err(Failure::Calc(CalcError::Impossible { pointer, message })) => {
+                    proptest::prop_assert!(!pointer.is_empty(), "{message}");
+                }
+                Err(other) => proptest::prop_assert!(false, "{l} N: {other:?}"),
+            }
+        }
+        if let [light, heavy] = &answered[..] {
+            let rises = |pointer: &str| number(heavy, pointer) > number(light, pointer);
+            let falls = |pointer: &str| number(heavy, pointer) < number(light, pointer);
+            proptest::prop_assert!(rises("/load_distribution/max_element_load_n"));
+            proptest::prop_assert!(falls("/life/l10_million_revolutions"));
+            proptest::prop_assert!(falls("/life/modified_life_million_revolutions"), "{light} {heavy}");
+            proptest::prop_assert!(falls("/inner_film/min_film_thickness_m"));
+        }
+    }
+}
