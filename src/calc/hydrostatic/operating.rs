@@ -124,7 +124,7 @@ pub fn solve(film: Film, law: Law, known: Known) -> Result<Point, CalcError> {
                 // The positive root of c₂²h⁶p_r² + k²p_r − k²p_s = 0 (Eq. 10.32–10.33), in the
                 // form without cancellation when the orifice is large.
                 Law::Root(k) => 2.0 * k * k * ps / (k * k + k * (k * k + 4.0 * a * a * ps).sqrt()),
-                Law::Pipe(_) => return solve_lands(&Lands::Laminar(film), law, known),
+                Law::Pipe(_) => return solve_lands(&Lands::Laminar(film), law, known, &mut 0),
             };
             (h, pr, a * pr, Some(ps))
         }
@@ -219,21 +219,37 @@ fn root_failure(e: RootError) -> CalcError {
 }
 
 /// Brent to round-off relative to the root (a recess pressure of a thousandth of the supply's
-/// still gets all its digits), a root error named for this room.
-fn root_of(f: impl FnMut(f64) -> Result<f64, RootError>, a: f64, b: f64) -> Result<f64, CalcError> {
+/// still gets all its digits), a root error named for this room; each evaluation of the balance
+/// `f` is counted in `evaluations`.
+fn root_of(
+    mut f: impl FnMut(f64) -> Result<f64, RootError>,
+    a: f64,
+    b: f64,
+    evaluations: &mut u32,
+) -> Result<f64, CalcError> {
     let stop = Stopping {
         x_tolerance: f64::MIN_POSITIVE,
         max_iterations: 200,
     };
-    brent_fallible(f, a, b, stop)
+    let counted = |x: f64| {
+        *evaluations += 1;
+        f(x)
+    };
+    brent_fallible(counted, a, b, stop)
         .map(|root| root.x)
         .map_err(root_failure)
 }
 
 /// The point where `known` holds on any lands: [`solve`]'s closed forms on laminar lands with a
 /// laminar restrictor, else bracketed Brent roots of monotone balances (W rises with p_r at a
-/// film; the lands' flow rises and the restrictor's falls with p_r at a supply pressure).
-pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcError> {
+/// film; the lands' flow rises and the restrictor's falls with p_r at a supply pressure), their
+/// balances' evaluations added to `evaluations`.
+pub fn solve_lands(
+    lands: &Lands,
+    law: Law,
+    known: Known,
+    evaluations: &mut u32,
+) -> Result<Point, CalcError> {
     if let (Lands::Laminar(film), false) = (lands, matches!(law, Law::Pipe(_))) {
         return solve(*film, law, known);
     }
@@ -259,7 +275,7 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
                 }
                 hi *= 2.0;
             }
-            let pr = root_of(excess, 0.0, hi)?;
+            let pr = root_of(excess, 0.0, hi, evaluations)?;
             let (q, area) = lands.at(pr * h3).map_err(root_failure)?;
             (h, pr, q, None, area)
         }
@@ -275,6 +291,7 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
                     },
                     0.0,
                     1.0,
+                    evaluations,
                 )?,
             };
             let (q, area) = lands.at(s_at(t)).map_err(root_failure)?;
@@ -294,6 +311,7 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
                 |pr| at_recess(pr).map(|(_, _, area)| area * pr - w),
                 0.0,
                 ps,
+                evaluations,
             )?;
             let (q, s, area) = at_recess(pr).map_err(root_failure)?;
             ((s / pr).cbrt(), pr, q, Some(ps), area)
@@ -310,16 +328,23 @@ pub fn solve_lands(lands: &Lands, law: Law, known: Known) -> Result<Point, CalcE
 /// −dW/dh at fixed supply pressure through the restrictor as built, on any lands: the closed
 /// form on laminar lands with a laminar restrictor; at constant flow 3W/h (Q fixes s = h³p_r and
 /// so A_eff); else central differences of the film-and-supply solve (step 1e-4 h: truncation
-/// ~1e-8, the roots' round-off ~1e-10).
-fn stiffness_on(lands: &Lands, law: Law, kind: Kind, point: &Point) -> Result<f64, CalcError> {
+/// ~1e-8, the roots' round-off ~1e-10), the roots' evaluations added to `evaluations`.
+fn stiffness_on(
+    lands: &Lands,
+    law: Law,
+    kind: Kind,
+    point: &Point,
+    evaluations: &mut u32,
+) -> Result<f64, CalcError> {
     match (lands, law) {
         (_, Law::Direct) | (Lands::Laminar(_), Law::Linear(_) | Law::Root(_)) => {
             Ok(stiffness(kind, point))
         }
         _ => {
             let dh = 1e-4 * point.film;
-            let load = |h: f64| {
-                solve_lands(lands, law, Known::FilmSupply(h, point.supply)).map(|p| p.load)
+            let mut load = |h: f64| {
+                solve_lands(lands, law, Known::FilmSupply(h, point.supply), evaluations)
+                    .map(|p| p.load)
             };
             Ok((load(point.film - dh)? - load(point.film + dh)?) / (2.0 * dh))
         }
@@ -390,6 +415,9 @@ pub struct Operating {
     pub inlet_density_kg_m3: f64,
     /// Evaluations of the pad in the thermal root (0: closed form, no search).
     pub thermal_evaluations: u32,
+    /// Evaluations of the flow balance in the Brent roots of the point and its stiffness (0: in
+    /// closed form).
+    pub balance_evaluations: u32,
     /// Whether the turbulent laws were applied (the point then comes from Brent roots).
     pub turbulent: bool,
     pub notes: Notes,
@@ -438,7 +466,8 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
         case.geometry.laminar_lands(mu)
     };
     let law = case.compensation.law(mu_in, rho, turbulent);
-    let point = solve_lands(&lands, law, case.known)?;
+    let mut balance_evaluations = 0;
+    let point = solve_lands(&lands, law, case.known, &mut balance_evaluations)?;
     let kind = case.compensation.kind();
     // The restrictor's own law gives its drop without the cancellation of p_s − p_r near m = 1;
     // a pipe in transition holds its flow while its drop varies, so its drop is p_s − p_r.
@@ -539,7 +568,7 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
     };
     let peak = case.geometry.peak_flow_per_width(point.flow);
     Ok(Operating {
-        stiffness: stiffness_on(&lands, built, kind, &point)?,
+        stiffness: stiffness_on(&lands, built, kind, &point, &mut balance_evaluations)?,
         effective_area: point.load / point.recess,
         flow_coefficient: point.flow * mu / (point.film.powi(3) * point.recess),
         point,
@@ -552,6 +581,7 @@ fn at(case: &Case, t_film: f64, regime: Regime) -> Result<Operating, CalcError> 
         inlet_viscosity_pa_s: mu_in,
         inlet_density_kg_m3: rho,
         thermal_evaluations: 0,
+        balance_evaluations,
         turbulent,
         notes: Notes::default(),
     })

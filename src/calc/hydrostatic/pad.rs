@@ -1050,11 +1050,16 @@ impl Calculation for HydrostaticPad {
             }
         );
         // A closed form, or with the thermal effect a Brent root in the film temperature whose
-        // every evaluation is the whole closed form; turbulent, the point is itself a Brent root
-        // of closed-form laws.
+        // every evaluation is the whole closed form; turbulent, the point and its stiffness are
+        // Brent roots of the flow balance, whose evaluations count (each may hold a land's own
+        // root for its flow; none where the lands give the point directly, a central recess at
+        // a given flow).
         ctx.report(match (op.thermal_evaluations, op.turbulent) {
             (0, false) => SolverReport::closed_form("hydrostatic_closed_form"),
-            (0, true) => SolverReport::closed_form("hydrostatic_turbulent_brent"),
+            (0, true) => SolverReport::closed_form_search(
+                "hydrostatic_turbulent_brent",
+                op.balance_evaluations,
+            ),
             (n, false) => {
                 SolverReport::closed_form_search("hydrostatic_closed_form_thermal_brent", n)
             }

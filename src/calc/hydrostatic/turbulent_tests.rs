@@ -116,11 +116,16 @@ fn every_determinate_set_gives_the_same_turbulent_point() {
     for g in geometries {
         let lands = g.turbulent_lands(slit);
         for law in [Law::Direct, pipe, Law::Root(1e-6), Law::Ratio(0.5)] {
-            let p = solve_lands(&lands, law, Known::FilmSupply(2e-4, 1e6)).unwrap();
+            let mut evaluations = 0;
+            let p =
+                solve_lands(&lands, law, Known::FilmSupply(2e-4, 1e6), &mut evaluations).unwrap();
+            // A supply through a restrictor is balanced by a root; p_r = p_s or m p_s is not.
+            let direct = matches!(law, Law::Direct | Law::Ratio(_));
+            assert_eq!(evaluations == 0, direct, "{g:?} {law:?}: {evaluations}");
             let re = 2.0 * slit.rho * g.peak_flow_per_width(p.flow).unwrap() / slit.mu;
             assert!(re > 2000.0, "{g:?} {law:?}: Re {re}");
             let context = format!("{g:?}");
-            let solve = |known| solve_lands(&lands, law, known);
+            let solve = |known| solve_lands(&lands, law, known, &mut 0);
             super::tests::assert_every_set_gives(&p, law, 1e-9, solve, &context);
         }
     }
@@ -238,6 +243,12 @@ fn auto_is_continuous_where_it_switches() {
     assert!(turbulent["effects"]["turbulence"]["applied"]
         .as_bool()
         .unwrap());
+    // The turbulent point is a root of the flow balance, and the report counts its evaluations.
+    let solver = &turbulent["solver"];
+    assert_eq!(solver["method"], "hydrostatic_turbulent_brent");
+    assert_eq!(solver["iterations_unit"], "evaluations");
+    assert!(solver["iterations"].as_u64().unwrap() > 2, "{solver}");
+    assert_eq!(laminar["solver"]["method"], "hydrostatic_closed_form");
     assert!(!laminar["effects"]["turbulence"]["applied"]
         .as_bool()
         .unwrap());
