@@ -559,7 +559,9 @@ impl Validate for DynamicJournalInput {
             None | Some(UntilSpec::Named(UntilName::SteadyOrbit)) => UntilRun::Steady,
             Some(UntilSpec::Time(UntilTime { time_s })) => {
                 let tau = time_s * omega;
-                if !(time_s.is_finite() && time_s > 0.0 && tau <= horizon) {
+                // The bound itself is allowed: 40 s at 3000 rpm is 2000 revolutions, though
+                // 40 × 100π rounds above 2000 × 2π.
+                if !(time_s.is_finite() && time_s > 0.0 && tau <= horizon * (1.0 + 1e-12)) {
                     errors.push(FieldError::new(
                         "/until/time_s",
                         format!(
@@ -1308,6 +1310,22 @@ mod tests {
                 vec![pointer.to_owned()]
             );
         }
+    }
+
+    #[test]
+    fn a_run_of_exactly_the_longest_time_is_accepted_and_a_little_longer_is_not() {
+        // 2000 revolutions at 3000 rpm are 40 s; 40 × 100π rounds above 2000 × 2π, and the
+        // message quoted 40 s as the limit while refusing 40 s.
+        let accepts = |time_s: f64| {
+            let mut body = example();
+            body["until"] = json!({"time_s": time_s});
+            serde_json::from_value::<DynamicJournalInput>(body)
+                .unwrap()
+                .validate()
+                .is_ok()
+        };
+        assert!(accepts(40.0));
+        assert!(!accepts(40.0 * (1.0 + 1e-9)));
     }
 
     #[test]
