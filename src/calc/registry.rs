@@ -211,6 +211,23 @@ impl FieldError {
             ));
         }
     }
+
+    /// Pushes "must be within (0, hi], got v" at `pointer` unless `v` ≤ hi: for a field whose
+    /// type already refuses 0 and below (a `Positive`), so that the range the message states is
+    /// the one the field keeps.
+    pub fn check_at_most(
+        errors: &mut Vec<FieldError>,
+        pointer: impl Into<String>,
+        v: f64,
+        hi: f64,
+    ) {
+        if !(v.is_finite() && v <= hi) {
+            errors.push(FieldError::new(
+                pointer,
+                format!("must be within (0, {hi:e}], got {v}"),
+            ));
+        }
+    }
 }
 
 /// Why a request produced no result.
@@ -588,6 +605,18 @@ mod tests {
             }
             other => panic!("expected a 422, got {other:?}"),
         }
+    }
+
+    #[test]
+    fn a_positive_fields_upper_bound_states_an_open_lower_end_and_keeps_its_bound() {
+        // The type refuses 0, so the range the message gives is (0, hi], not [0, hi].
+        let mut errors = Vec::new();
+        FieldError::check_at_most(&mut errors, "/ring/width_m", 0.05, 0.05);
+        assert!(errors.is_empty());
+        FieldError::check_at_most(&mut errors, "/ring/width_m", 0.06, 0.05);
+        FieldError::check_at_most(&mut errors, "/ring/width_m", f64::INFINITY, 0.05);
+        assert_eq!(errors.len(), 2);
+        assert_eq!(errors[0].message, "must be within (0, 5e-2], got 0.06");
     }
 
     #[test]

@@ -132,9 +132,15 @@ impl Validate for CompositeStartUpInput {
         ];
         for (name, value, lo, hi, unit) in checks {
             if value < lo || value > hi {
+                // Every field here is positive by type: a lower bound of 0 is exclusive.
+                let range = if lo == 0.0 {
+                    format!("(0, {hi:e}]")
+                } else {
+                    format!("[{lo:e}, {hi:e}]")
+                };
                 errors.push(FieldError::new(
                     format!("/{name}"),
-                    format!("must lie within [{lo:e}, {hi:e}]{unit}"),
+                    format!("must lie within {range}{unit}"),
                 ));
             }
         }

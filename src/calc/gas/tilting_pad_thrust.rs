@@ -109,7 +109,7 @@ impl Validate for GasTiltingPadThrustInput {
     fn validate(self) -> Result<Case, Vec<FieldError>> {
         let mut errors = Vec::new();
         let (ri, ro) = (self.inner_radius_m.get(), self.outer_radius_m.get());
-        FieldError::check_within(&mut errors, "/outer_radius_m", ro, (0.0, 10.0));
+        FieldError::check_at_most(&mut errors, "/outer_radius_m", ro, 10.0);
         if !ratio_within(ri / ro, 0.1, 0.95) {
             errors.push(FieldError::new(
                 "/inner_radius_m",
@@ -155,10 +155,10 @@ impl Validate for GasTiltingPadThrustInput {
         let crown = self.crown_m.map_or(0.0, NonNegative::get);
         FieldError::check_within(&mut errors, "/crown_m", crown, (0.0, 1e-3));
         let speed = self.speed_rpm.get();
-        FieldError::check_within(&mut errors, "/speed_rpm", speed, (0.0, 1e6));
+        FieldError::check_at_most(&mut errors, "/speed_rpm", speed, 1e6);
         let given = match (self.load_n, self.clearance_m) {
             (Some(w), None) => {
-                FieldError::check_within(&mut errors, "/load_n", w.get(), (0.0, 1e9));
+                FieldError::check_at_most(&mut errors, "/load_n", w.get(), 1e9);
                 Some(Given::Load(w.get()))
             }
             (None, Some(c)) => {

@@ -165,20 +165,17 @@ impl LubricantSpec {
             500.0,
             2500.0,
         );
-        range_check(
-            &mut errors,
-            p("pressure_viscosity_coefficient_1_pa"),
-            get(self.pressure_viscosity_coefficient_1_pa),
-            0.0,
-            1e-7,
-        );
-        range_check(
-            &mut errors,
-            p("roelands_pressure_viscosity_index"),
-            get(self.roelands_pressure_viscosity_index),
-            0.0,
-            1.5,
-        );
+        if let Some(alpha) = get(self.pressure_viscosity_coefficient_1_pa) {
+            FieldError::check_at_most(
+                &mut errors,
+                p("pressure_viscosity_coefficient_1_pa"),
+                alpha,
+                1e-7,
+            );
+        }
+        if let Some(z) = get(self.roelands_pressure_viscosity_index) {
+            FieldError::check_at_most(&mut errors, p("roelands_pressure_viscosity_index"), z, 1.5);
+        }
         range_check(
             &mut errors,
             p("specific_heat_j_kg_k"),

@@ -164,8 +164,8 @@ impl Validate for PistonRingInput {
             engine.rod_length_m.get(),
             engine.speed_rpm.get(),
         );
-        FieldError::check_within(&mut errors, "/ring/width_m", b, (0.0, 0.05));
-        FieldError::check_within(&mut errors, "/ring/crown_height_m", crown, (0.0, 1e-3));
+        FieldError::check_at_most(&mut errors, "/ring/width_m", b, 0.05);
+        FieldError::check_at_most(&mut errors, "/ring/crown_height_m", crown, 1e-3);
         if crown >= b {
             errors.push(FieldError::new(
                 "/ring/crown_height_m",
@@ -189,7 +189,7 @@ impl Validate for PistonRingInput {
         if b >= bore {
             errors.push(FieldError::new("/ring/width_m", "must be below the bore"));
         }
-        FieldError::check_within(&mut errors, "/engine/crank_radius_m", crank, (0.0, 1.0));
+        FieldError::check_at_most(&mut errors, "/engine/crank_radius_m", crank, 1.0);
         if !(rod > 1.2 * crank && rod <= 5.0) {
             errors.push(FieldError::new(
                 "/engine/rod_length_m",
@@ -251,12 +251,7 @@ impl Validate for PistonRingInput {
             ));
         }
         if let Some(sigma) = self.composite_roughness_m {
-            FieldError::check_within(
-                &mut errors,
-                "/composite_roughness_m",
-                sigma.get(),
-                (0.0, 1e-4),
-            );
+            FieldError::check_at_most(&mut errors, "/composite_roughness_m", sigma.get(), 1e-4);
         }
         let guess = self
             .initial_film_m

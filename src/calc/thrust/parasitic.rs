@@ -127,7 +127,7 @@ impl Validate for ParasiticLossesInput {
     fn validate(self) -> Result<ParasiticCase, Vec<FieldError>> {
         let mut errors = Vec::new();
         let rpm = self.speed_rpm.get();
-        FieldError::check_within(&mut errors, "/speed_rpm", rpm, (0.0, MAX_SPEED_RPM));
+        FieldError::check_at_most(&mut errors, "/speed_rpm", rpm, MAX_SPEED_RPM);
         if self.surfaces.is_empty() && self.through_flow.is_none() {
             errors.push(FieldError::new(
                 "/surfaces",
@@ -191,11 +191,11 @@ impl Validate for ParasiticLossesInput {
             }
         }
         let through_flow = self.through_flow.map(|t| {
-            FieldError::check_within(
+            FieldError::check_at_most(
                 &mut errors,
                 "/through_flow/flow_m3_s",
                 t.flow_m3_s.get(),
-                (0.0, MAX_FLOW_M3_S),
+                MAX_FLOW_M3_S,
             );
             FieldError::check_within(
                 &mut errors,
@@ -204,11 +204,11 @@ impl Validate for ParasiticLossesInput {
                 SIZE_RANGE,
             );
             let k = t.velocity_heads.map_or(1.0, Positive::get);
-            FieldError::check_within(
+            FieldError::check_at_most(
                 &mut errors,
                 "/through_flow/velocity_heads",
                 k,
-                (0.0, MAX_VELOCITY_HEADS),
+                MAX_VELOCITY_HEADS,
             );
             (t.flow_m3_s.get(), 0.5 * t.diameter_m.get(), k)
         });
