@@ -620,23 +620,7 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
         );
         op
     } else {
-        let mean = t_in + 0.5 * rise;
-        let mu_in = case.lubricant.viscosity_pa_s(t_in);
-        let drop = if mean <= crate::calc::quantity::Celsius::MAX {
-            1.0 - case.lubricant.viscosity_pa_s(mean) / mu_in
-        } else {
-            1.0
-        };
-        let mut decision = Decision::decide(
-            case.effects.thermal,
-            Criterion {
-                name: "viscosity_drop_fraction",
-                value: drop,
-                threshold: THERMAL_VISCOSITY_DROP,
-            },
-            "thermal (film viscosity at the mean film temperature T_in + ΔT/2)",
-        );
-        decision.model = Some("mean_film_temperature");
+        let mut decision = decide_thermal(case, rise);
         if decision.applied {
             let mut op = thermal_root(case, rise, regime)?;
             if regime == Regime::Laminar {
@@ -644,6 +628,9 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
                 if turbulence.applied {
                     regime = Regime::Turbulent;
                     let rise = at(case, t_in, regime)?.power.temperature_rise;
+                    // The turbulent film heats more: its criterion is the one reported (it
+                    // applies all the more).
+                    decision = decide_thermal(case, rise);
                     // The laminar root's evaluations and the turbulent isothermal point count.
                     let spent = op.thermal_evaluations + 1;
                     op = thermal_root(case, rise, regime)?;
@@ -661,6 +648,30 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
     op.notes.decide("turbulence", turbulence);
     warn(case, &mut op, regime);
     Ok(op)
+}
+
+/// Thermal: the viscosity's fall from the inlet to the mean film temperature T_in + ΔT/2 of the
+/// isothermal point's rise ΔT, against [`THERMAL_VISCOSITY_DROP`].
+fn decide_thermal(case: &Case, rise: f64) -> Decision {
+    let t_in = case.inlet_temperature_c;
+    let mean = t_in + 0.5 * rise;
+    let mu_in = case.lubricant.viscosity_pa_s(t_in);
+    let drop = if mean <= crate::calc::quantity::Celsius::MAX {
+        1.0 - case.lubricant.viscosity_pa_s(mean) / mu_in
+    } else {
+        1.0
+    };
+    let mut decision = Decision::decide(
+        case.effects.thermal,
+        Criterion {
+            name: "viscosity_drop_fraction",
+            value: drop,
+            threshold: THERMAL_VISCOSITY_DROP,
+        },
+        "thermal (film viscosity at the mean film temperature T_in + ΔT/2)",
+    );
+    decision.model = Some("mean_film_temperature");
+    decision
 }
 
 /// T such that T = T_in + ΔT(μ(T))/2. ΔT falls as the film warms (the flow rises and the

@@ -330,6 +330,8 @@ fn auto_decides_turbulence_again_at_the_film_temperature() {
         .as_str()
         .unwrap()
         .contains("at the film temperature"));
+    // The thermal decision reports the turbulent film's criterion, as `on` does.
+    assert_eq!(auto["effects"]["thermal"], on["effects"]["thermal"]);
     for field in [
         "load_n",
         "film_temperature_c",

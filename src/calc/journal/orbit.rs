@@ -206,7 +206,9 @@ impl OrbitError {
     /// wall stopped it), or used up the run's steps with the film below a thousandth of the
     /// clearance (a load so far beyond the film's that only its stiffness near the wall held
     /// it off); else the integrator's report, with the work of the run's `earlier`
-    /// integrations.
+    /// integrations. The 0.999 rule judges only a run that its step cap stopped: one that ends
+    /// its periods with a peak beyond 0.999 is a result, warned of its thin film (so a whirl
+    /// that does not repeat may end either way at different fidelities).
     pub(crate) fn halted<const N: usize>(h: Halted<N>, reach: f64, earlier: &Tally) -> Self {
         let e = h.y[0].hypot(h.y[1]);
         let stalled_at_wall = h.stopped.reason() == StopReason::Stalled && e > 0.99 * reach;
