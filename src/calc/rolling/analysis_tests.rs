@@ -307,7 +307,8 @@ proptest::proptest! {
     /// 0–150 °C, oils of 10–1000 mm²/s at 40 °C, any contamination): an answer with positive,
     /// finite lives and films, or a 422 naming a field of this request — and where both the
     /// load and a quarter more are answered, the heavier load has the higher ball load, the
-    /// shorter basic and modified lives and the thinner inner film (Hamrock–Dowson's W^−0.073).
+    /// shorter basic and modified lives and, in one regime of the film map, an inner film no
+    /// thicker (Hamrock–Dowson's W^−0.073; no dependence in the piezoviscous-rigid regime).
     #[test]
     fn every_operating_point_is_answered_and_a_heavier_load_shortens_the_life(
         load_exp in 0.0f64..5.0,
@@ -363,7 +364,14 @@ proptest::proptest! {
             proptest::prop_assert!(rises("/load_distribution/max_element_load_n"));
             proptest::prop_assert!(falls("/life/l10_million_revolutions"));
             proptest::prop_assert!(falls("/life/modified_life_million_revolutions"), "{light} {heavy}");
-            proptest::prop_assert!(falls("/inner_film/min_film_thickness_m"));
+            // Within one regime of Hamrock's map, and not rising rather than falling: its fits
+            // do not meet at the boundaries (CI's draw: 2.5 N on a piezoviscous-rigid film of
+            // 124.8 nm, 3.1 N on a piezoviscous-elastic one of 126.7 nm), and the
+            // piezoviscous-rigid film does not depend on the load (913 nm at 13 N and 17 N).
+            let film = |v: &Value| number(v, "/inner_film/min_film_thickness_m");
+            if light["result"]["inner_film"]["regime"] == heavy["result"]["inner_film"]["regime"] {
+                proptest::prop_assert!(film(heavy) <= film(light) * (1.0 + 1e-12), "{light} {heavy}");
+            }
         }
     }
 }
