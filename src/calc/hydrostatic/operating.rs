@@ -620,19 +620,18 @@ pub fn operate(case: &Case) -> Result<Operating, CalcError> {
         );
         op
     } else {
-        let mut decision = decide_thermal(case, rise);
+        let decision = decide_thermal(case, rise);
         if decision.applied {
             let mut op = thermal_root(case, rise, regime)?;
             if regime == Regime::Laminar {
                 turbulence = decide_turbulence(case, &op, "at the film temperature");
                 if turbulence.applied {
+                    // At the inlet the film was laminar, where the turbulent laws (the larger
+                    // loss of the two) are the laminar ones: the isothermal rise, the root's
+                    // bracket and the thermal decision stand. The laminar root's evaluations
+                    // count.
                     regime = Regime::Turbulent;
-                    let rise = at(case, t_in, regime)?.power.temperature_rise;
-                    // The turbulent film heats more: its criterion is the one reported (it
-                    // applies all the more).
-                    decision = decide_thermal(case, rise);
-                    // The laminar root's evaluations and the turbulent isothermal point count.
-                    let spent = op.thermal_evaluations + 1;
+                    let spent = op.thermal_evaluations;
                     op = thermal_root(case, rise, regime)?;
                     op.thermal_evaluations += spent;
                 }
