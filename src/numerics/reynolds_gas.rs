@@ -573,20 +573,19 @@ pub fn solve(
         take_shortest: true,
     };
     let mut tally = Tally::default();
-    let system_at = |lambda: f64| System {
-        grid,
-        problem,
-        numbering: &numbering,
-        lambda,
-        budget,
-    };
     // One Newton run at Λ from `field`. A start that already meets the tolerance still takes
     // one full Newton step (the linear film), and Newton runs again from it: the scaled
     // residual under-measures a smooth error by the square of the mesh's spacing, so a weak
     // film's ambient field, or a start interpolated from the half mesh, can meet 1e-10 while
     // carrying nothing or the half mesh's answer.
     let run = |tally: &mut Tally, field: &mut Vec<f64>, lambda: f64| {
-        let system = system_at(lambda);
+        let system = System {
+            grid,
+            problem,
+            numbering: &numbering,
+            lambda,
+            budget,
+        };
         let mut stepped = false;
         tally.stages += 1;
         loop {
@@ -607,7 +606,7 @@ pub fn solve(
                 Ok(done)
                     if done.report.iterations == 0
                         && !std::mem::replace(&mut stepped, true)
-                        && linear_step(&system, field, tally) =>
+                        && linear_step(&system, field, &done.value.1, tally) =>
                 {
                     continue
                 }
@@ -649,13 +648,13 @@ pub fn solve(
     }
 }
 
-/// Newton's full step from `field`, where the film is linear in its rise (the next residual is
-/// of the rise squared), counted in `tally` as one step and one evaluation; false when the
-/// Jacobian is singular or the budget is spent.
-fn linear_step(system: &System, field: &mut Vec<f64>, tally: &mut Tally) -> bool {
-    let at = system.evaluate(field);
+/// Newton's full step from `field`, evaluated as `at` by the run that converged there, where the
+/// film is linear in its rise (the next residual is of the rise squared), counted in `tally` as
+/// one step and one evaluation (that run's, which a run converged at its start does not count);
+/// false when the Jacobian is singular or the budget is spent.
+fn linear_step(system: &System, field: &mut Vec<f64>, at: &Evaluation, tally: &mut Tally) -> bool {
     tally.evaluations += 1;
-    let Some(step) = system.direction(field, &at) else {
+    let Some(step) = system.direction(field, at) else {
         return false;
     };
     *field = system.advance(field, &step, 1.0);
